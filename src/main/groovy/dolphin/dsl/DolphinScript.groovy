@@ -1,0 +1,305 @@
+package dolphin.dsl
+
+import dolphin.core.AbstractNode
+import dolphin.core.ActionTask
+import dolphin.core.AllOfTask
+import dolphin.core.Area
+import dolphin.core.ChoiceTask
+import dolphin.core.CompletionState
+import dolphin.core.ConditionTask
+import dolphin.core.ConstrainedTask
+import dolphin.core.Environment
+import dolphin.core.ErrorHandler
+import dolphin.core.IdleTask
+import dolphin.core.NodeSet
+import dolphin.core.Position
+import dolphin.core.ResourceExplicitTask
+import dolphin.core.Task
+import dolphin.core.TaskGuard
+import dolphin.core.TimeConstrainedTask
+import dolphin.core.WatcherTask
+import org.codehaus.groovy.runtime.InvokerHelper
+
+/**
+ * The base class of every Dolphin script: the instructions of the language (reference A.1, A.2).
+ * Platform words come from {@link DslExtension#words} through {@link #methodMissing}.
+ */
+abstract class DolphinScript extends Script implements DslScript {
+
+    /** Protected, not private: the script class is a subclass, and Groovy cannot reach a superclass's private members dynamically. */
+    protected ScriptContext context
+
+    @Override
+    void attach(ScriptContext context) {
+        this.context = context
+    }
+
+    /** The platform word objects of this run (also used to suggest names in errors). */
+    List<Object> getPlatformWords() {
+        context == null ? [] : context.words()
+    }
+
+    protected Environment env() {
+        context.environment()
+    }
+
+    // ---- vehicles
+
+    /** {@code pick { count 2; type 'UAV'; ... }}: binds free vehicles, waiting up to the timeout. */
+    NodeSet pick(@DelegatesTo(value = Picker, strategy = Closure.DELEGATE_FIRST) Closure clauses) {
+        Picker picker = new Picker()
+        Closure c = (Closure) clauses.clone()
+        c.delegate = picker
+        c.resolveStrategy = Closure.DELEGATE_FIRST
+        c.call()
+        NodeSet chosen = env().select(picker.filter(), picker.count, picker.timeout)
+        if (chosen.is(NodeSet.EMPTY)) {
+            throw new Halt("pick: could not find ${picker.count} free vehicle(s) matching ${picker.filter()}"
+                    + " within ${picker.timeout} s; connected: ${env().platform.connectedNodes}, already picked: ${env().bound}")
+        }
+        chosen
+    }
+
+    void release(NodeSet vehicles) {
+        env().release(vehicles)
+    }
+
+    void setConnectionTimeout(Number seconds) {
+        env().defaultConnectionTimeout = seconds.doubleValue()
+    }
+
+    /** {@code setConnectionTimeout v1: 30, v2: 60}: keys name vehicle-set variables. */
+    void setConnectionTimeout(Map<String, Number> timeouts) {
+        timeouts.each { String key, Number secs ->
+            vehicleSet('setConnectionTimeout', key).each { it.connectionTimeout = secs.doubleValue() }
+        }
+    }
+
+    Position position(NodeSet vehicle) {
+        def node = vehicle.single('position')
+        Position p = node.position
+        if (p == null) {
+            throw new DslException("position: vehicle ${node.id} has not reported a position yet")
+        }
+        p
+    }
+
+    double battery(NodeSet vehicle) {
+        def node = vehicle.single('battery')
+        node instanceof AbstractNode ? ((AbstractNode) node).batteryRemaining() : 1.0d
+    }
+
+    // ---- running tasks
+
+    /** Runs a task on the picked vehicles and returns its final state; an ERROR is reported, not thrown. */
+    CompletionState execute(Task task) {
+        if (task == null) {
+            throw new DslException('execute: the task is null (a variable that holds no task?)')
+        }
+        CompletionState cs = env().run(task)
+        if (cs.error) {
+            context.taskFailed()
+        }
+        cs
+    }
+
+    /** {@code execute v1: t1, v2: t2, _: t3}: the entries run concurrently, each on its vehicle set. */
+    CompletionState execute(Map<String, Object> entries) {
+        if (entries.isEmpty()) {
+            throw new DslException('execute: no tasks given')
+        }
+        Task all = null
+        entries.each { String key, Object value ->
+            if (!(value instanceof Task)) {
+                throw new DslException("execute: the entry '${key}:' is not a task but ${value == null ? 'null' : value.getClass().simpleName}")
+            }
+            Task t = key == '_' ? (Task) value : new ResourceExplicitTask((Task) value, vehicleSet('execute', key))
+            all = all == null ? t : all | t
+        }
+        execute(all)
+    }
+
+    protected NodeSet vehicleSet(String word, String key) {
+        if (!binding.hasVariable(key)) {
+            throw new DslException("${word}: no script variable named '${key}'. Keys name vehicle sets held in script"
+                    + " variables assigned without 'def', e.g. ${key} = pick { ... }")
+        }
+        def value = binding.getVariable(key)
+        if (!(value instanceof NodeSet)) {
+            throw new DslException("${word}: the key '${key}' does not identify a vehicle set: it holds "
+                    + (value == null ? 'null' : value.getClass().simpleName))
+        }
+        (NodeSet) value
+    }
+
+    // ---- task constructors
+
+    Then waitFor(Closure condition) {
+        new Then({ Task t -> new ChoiceTask([new TaskGuard(new ClosureCondition(condition), t)]) })
+    }
+
+    Run until(Closure condition) {
+        new Run({ Task t -> new ConstrainedTask(t, new ClosureCondition(condition)) })
+    }
+
+    /** {@code during { secs } run task}: the closure is evaluated once, now. */
+    Run during(Closure seconds) {
+        during((Number) seconds.call())
+    }
+
+    Run during(Number seconds) {
+        new Run({ Task t -> new TimeConstrainedTask(t, seconds.doubleValue()) })
+    }
+
+    Task idle(Number seconds) {
+        new IdleTask(seconds.doubleValue())
+    }
+
+    Task action(Closure code) {
+        new ActionTask({ code.call() } as Runnable)
+    }
+
+    Task condition(Closure condition) {
+        new ConditionTask(new ClosureCondition(condition))
+    }
+
+    OnError watch(Task task) {
+        new OnError(task)
+    }
+
+    Task allOf(@DelegatesTo(value = GuardedTaskSetBuilder, strategy = Closure.DELEGATE_FIRST) Closure branches) {
+        new AllOfTask(GuardedTaskSetBuilder.build('allOf', branches))
+    }
+
+    Task oneOf(@DelegatesTo(value = GuardedTaskSetBuilder, strategy = Closure.DELEGATE_FIRST) Closure branches) {
+        new ChoiceTask(GuardedTaskSetBuilder.build('oneOf', branches))
+    }
+
+    Task choose(@DelegatesTo(value = GuardedTaskSetBuilder, strategy = Closure.DELEGATE_FIRST) Closure branches) {
+        new ChoiceTask(GuardedTaskSetBuilder.build('choose', branches))
+    }
+
+    Task task(String id) {
+        env().platform.getPlatformTask(id)
+    }
+
+    // ---- program-level words
+
+    void message(Object text) {
+        context.listener().message(String.valueOf(text))
+    }
+
+    void post(Map<String, Object> signals) {
+        context.signals().post(signals)
+        message("posted ${signals}")
+    }
+
+    boolean consume(Map<String, Object> signals) {
+        boolean ok = context.signals().consume(signals)
+        if (ok) {
+            message("consumed ${signals}")
+        }
+        ok
+    }
+
+    boolean poll(String key) {
+        context.signals().poll(key)
+    }
+
+    boolean poll(Map<String, Closure> tests) {
+        context.signals().poll(tests.collectEntries { k, c -> [k, { v -> c.call(v) as boolean } as java.util.function.Predicate] })
+    }
+
+    /** Asks for one line of input and evaluates it as Groovy, with this script's variables in scope. */
+    Object ask(String prompt) {
+        String line = context.readInput(prompt)
+        line == null ? null : new GroovyShell(binding).evaluate(line)
+    }
+
+    void halt(String why = 'halt') {
+        throw new Halt(why)
+    }
+
+    void pause(Number seconds) {
+        env().pause(seconds.doubleValue())
+    }
+
+    /** Groovy's sleep, on the runtime's clock. */
+    void sleep(long millis) {
+        env().pause(millis / 1000d)
+    }
+
+    Position location(Number lat, Number lon, Number height = 0) {
+        double la = lat.doubleValue()
+        double lo = lon.doubleValue()
+        if (!(la >= -90d && la <= 90d)) {
+            throw new DslException("location: the latitude must be between -90 and 90 degrees, got ${lat}")
+        }
+        if (!(lo >= -180d && lo <= 180d)) {
+            throw new DslException("location: the longitude must be between -180 and 180 degrees, got ${lon}")
+        }
+        Position.fromDegrees(la, lo, height.doubleValue())
+    }
+
+    Area area(Position center, Number radius) {
+        new Area(center, radius.doubleValue())
+    }
+
+    /** Platform words: the first word object that has a matching method answers. */
+    def methodMissing(String name, Object args) {
+        Object[] argv = args instanceof Object[] ? (Object[]) args : [args] as Object[]
+        for (Object words : platformWords) {
+            if (InvokerHelper.getMetaClass(words).respondsTo(words, name, argv)) {
+                return InvokerHelper.invokeMethod(words, name, argv)
+            }
+        }
+        throw new MissingMethodException(name, getClass(), argv)
+    }
+
+    // ---- the second halves of two-word instructions
+
+    /** {@code waitFor {c} then task}. */
+    static final class Then {
+        private final Closure<Task> make
+
+        Then(Closure<Task> make) { this.make = make }
+
+        Task then(Task task) { make.call(task) }
+    }
+
+    /** {@code until {c} run task}, {@code during secs run task}. */
+    static final class Run {
+        private final Closure<Task> make
+
+        Run(Closure<Task> make) { this.make = make }
+
+        Task run(Task task) { make.call(task) }
+    }
+
+    /** {@code watch task onError { msg -> ... }}; the handler may call ignore() or propagate() (the default). */
+    static final class OnError {
+        private final Task task
+
+        OnError(Task task) { this.task = task }
+
+        Task onError(@DelegatesTo(value = ErrorDecision, strategy = Closure.DELEGATE_FIRST) Closure handler) {
+            new WatcherTask(task, { String message ->
+                ErrorDecision decision = new ErrorDecision()
+                Closure c = (Closure) handler.clone()
+                c.delegate = decision
+                c.resolveStrategy = Closure.DELEGATE_FIRST
+                c.call(message)
+                decision.decision
+            } as ErrorHandler)
+        }
+    }
+
+    /** The delegate of an onError handler. Each error starts with propagate. */
+    static final class ErrorDecision {
+        ErrorHandler.Decision decision = ErrorHandler.Decision.PROPAGATE
+
+        void ignore() { decision = ErrorHandler.Decision.IGNORE }
+
+        void propagate() { decision = ErrorHandler.Decision.PROPAGATE }
+    }
+}

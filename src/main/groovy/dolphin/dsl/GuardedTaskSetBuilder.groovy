@@ -1,0 +1,28 @@
+package dolphin.dsl
+
+import dolphin.core.Task
+import dolphin.core.TaskGuard
+
+/** The {@code when { cond } then task} branches of allOf, oneOf and choose. */
+class GuardedTaskSetBuilder {
+    private final List<TaskGuard> guards = []
+
+    static List<TaskGuard> build(String word, Closure branches) {
+        GuardedTaskSetBuilder b = new GuardedTaskSetBuilder()
+        Closure c = (Closure) branches.clone()
+        c.delegate = b
+        c.resolveStrategy = Closure.DELEGATE_FIRST
+        c.call()
+        if (b.guards.isEmpty()) {
+            throw new DslException("${word}: no choices were defined; expected one or more 'when { condition } then task'")
+        }
+        b.guards
+    }
+
+    DolphinScript.Then when(Closure condition) {
+        new DolphinScript.Then({ Task t ->
+            guards << new TaskGuard(new ClosureCondition(condition), t)
+            t
+        })
+    }
+}

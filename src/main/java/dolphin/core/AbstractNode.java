@@ -1,0 +1,51 @@
+package dolphin.core;
+
+/** Base class for platform nodes: identity, payload, connection timeout and battery. */
+public abstract class AbstractNode implements Node {
+
+    private final String id;
+    private final String type;
+    private final Payload payload;
+    private volatile double connectionTimeout = DEFAULT_CONNECTION_TIMEOUT;
+
+    protected AbstractNode(String id, String type, Payload payload) {
+        this.id = id;
+        this.type = type;
+        this.payload = payload;
+    }
+
+    @Override
+    public String getId() {
+        return id;
+    }
+
+    @Override
+    public String getType() {
+        return type;
+    }
+
+    @Override
+    public Payload getPayload() {
+        return payload;
+    }
+
+    @Override
+    public double getConnectionTimeout() {
+        return connectionTimeout;
+    }
+
+    @Override
+    public void setConnectionTimeout(double seconds) {
+        connectionTimeout = Node.validateConnectionTimeout(seconds);
+    }
+
+    /** Remaining battery as a fraction in [0, 1]; nodes without a battery report 1.0. */
+    public double batteryRemaining() {
+        return 1.0;
+    }
+
+    @Override
+    public String toString() {
+        return id;
+    }
+}

@@ -1,0 +1,55 @@
+package dolphin.core;
+
+/**
+ * An immutable WGS-84 position: latitude and longitude in radians, height in metres. In this
+ * project heights are above mean sea level (design §4).
+ */
+public record Position(double lat, double lon, double hae) {
+
+    public static Position fromDegrees(double latDeg, double lonDeg, double hae) {
+        return new Position(Math.toRadians(latDeg), Math.toRadians(lonDeg), hae);
+    }
+
+    public double latitudeDegrees() {
+        return Math.toDegrees(lat);
+    }
+
+    public double longitudeDegrees() {
+        return Math.toDegrees(lon);
+    }
+
+    /** Straight-line (ECEF) distance in metres. */
+    public double distanceTo(Position other) {
+        double[] a = Wgs84.toEcef(lat, lon, hae);
+        double[] b = Wgs84.toEcef(other.lat, other.lon, other.hae);
+        return Math.sqrt(sq(a[0] - b[0]) + sq(a[1] - b[1]) + sq(a[2] - b[2]));
+    }
+
+    public boolean near(Position other, double radius) {
+        return distanceTo(other) <= radius;
+    }
+
+    /** (north, east, down) metres from this position to {@code other}. */
+    public double[] displacementTo(Position other) {
+        return Wgs84.ned(this, other);
+    }
+
+    /** This position moved by (north, east, down) metres. */
+    public Position displace(double north, double east, double down) {
+        return Wgs84.displace(this, north, east, down);
+    }
+
+    /** {@code position ^ radius}: the area within radius metres. */
+    public Area xor(Number radius) {
+        return new Area(this, radius.doubleValue());
+    }
+
+    private static double sq(double v) {
+        return v * v;
+    }
+
+    @Override
+    public String toString() {
+        return String.format("(%.6f°, %.6f°, %.3f)", latitudeDegrees(), longitudeDegrees(), hae);
+    }
+}

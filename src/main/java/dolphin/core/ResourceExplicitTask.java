@@ -1,0 +1,34 @@
+package dolphin.core;
+
+/** {@code task[vehicles]}: the task may only take vehicles from the given set. */
+public final class ResourceExplicitTask implements Task {
+
+    private final Task inner;
+    private final NodeSet vehicles;
+
+    public ResourceExplicitTask(Task inner, NodeSet vehicles) {
+        this.inner = inner;
+        this.vehicles = vehicles.copy();
+    }
+
+    @Override
+    public String getId() {
+        return inner.getId() + vehicles;
+    }
+
+    /** The task allocates from available ∩ vehicles; what it takes leaves the pool. */
+    @Override
+    public boolean allocate(NodeSet available, Allocation allocation) {
+        NodeSet pool = NodeSet.intersection(available, vehicles);
+        NodeSet before = pool.copy();
+        boolean ok = inner.allocate(pool, allocation);
+        available.removeAll(NodeSet.difference(before, pool));
+        return ok;
+    }
+
+    /** The inner task's own executor: {@code t[v]} adds no layer at run time. */
+    @Override
+    public TaskExecutor getExecutor() {
+        return inner.getExecutor();
+    }
+}

@@ -1,0 +1,5 @@
+package dolphin.core;
+
+/** What executors need from the environment they run in. */
+public record TaskContext(Clock clock, RuntimeListener listener) {
+}

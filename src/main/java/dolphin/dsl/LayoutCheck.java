@@ -1,0 +1,48 @@
+package dolphin.dsl;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Pattern;
+
+/**
+ * Finds {@code execute} standing alone on a line (report Listing 4). Groovy ends the statement at
+ * the line break, so the {@code v1: ...} entries below it become labels and the script fails
+ * with an obscure message or, worse, runs nothing.
+ */
+final class LayoutCheck {
+
+    private static final Pattern BARE_EXECUTE = Pattern.compile("^\\s*execute\\s*(//.*)?$");
+    private static final Pattern ENTRY = Pattern.compile("^\\s*[A-Za-z_$][\\w$]*\\s*:.*");
+
+    private LayoutCheck() {
+    }
+
+    static List<ScriptError> check(String source, String file) {
+        List<ScriptError> errors = new ArrayList<>();
+        String[] lines = source.split("\\R", -1);
+        for (int i = 0; i < lines.length; i++) {
+            if (!BARE_EXECUTE.matcher(lines[i]).matches()) {
+                continue;
+            }
+            String next = nextCodeLine(lines, i + 1);
+            String entry = next != null && ENTRY.matcher(next).matches()
+                    ? " the '" + next.strip().split("\\s*:")[0] + ":' entry on the next line is not its argument."
+                    : "";
+            errors.add(new ScriptError(file, i + 1, lines[i].indexOf("execute") + 1,
+                    "'execute' stands alone on its line, so it has no task:" + entry
+                    + " Groovy ends a statement at the line break. Expected the first task on the same line,"
+                    + " e.g. 'execute v1: task1,' with further 'v2: task2' entries on the next lines."));
+        }
+        return errors;
+    }
+
+    private static String nextCodeLine(String[] lines, int from) {
+        for (int j = from; j < lines.length; j++) {
+            String t = lines[j].strip();
+            if (!t.isEmpty() && !t.startsWith("//")) {
+                return t;
+            }
+        }
+        return null;
+    }
+}

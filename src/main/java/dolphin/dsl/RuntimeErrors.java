@@ -1,0 +1,91 @@
+package dolphin.dsl;
+
+import groovy.lang.MissingMethodException;
+import groovy.lang.MissingPropertyException;
+import java.util.Arrays;
+import java.util.Collection;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Locale;
+import java.util.stream.Collectors;
+import org.codehaus.groovy.runtime.typehandling.GroovyCastException;
+
+/** Turns an exception thrown while a script runs into a {@link ScriptError}: the script's line and what was expected. */
+final class RuntimeErrors {
+
+    private RuntimeErrors() {
+    }
+
+    static ScriptError describe(Throwable t, String file, Collection<String> words, Collection<String> variables) {
+        return new ScriptError(file, line(t, ScriptCompiler.codeName(file)), 0, message(t, words, variables));
+    }
+
+    /** The innermost script line in the exception's chain of stack traces. */
+    static int line(Throwable t, String codeName) {
+        for (Throwable c = t; c != null; c = c.getCause()) {
+            for (StackTraceElement e : c.getStackTrace()) {
+                if (codeName.equals(e.getFileName()) && e.getLineNumber() > 0) {
+                    return e.getLineNumber();
+                }
+            }
+        }
+        return 0;
+    }
+
+    static String message(Throwable t, Collection<String> words, Collection<String> variables) {
+        if (t instanceof MissingMethodException m) {
+            return "unknown command '" + m.getMethod() + "'" + arguments(m.getArguments())
+                    + suggestion(m.getMethod(), words) + ". Expected a DSL word, a Groovy method or a closure variable.";
+        }
+        if (t instanceof MissingPropertyException p) {
+            if ("execute".equals(p.getProperty())) {
+                return "'execute' has no task: expected 'execute task' or 'execute v1: task1, v2: task2' on one line";
+            }
+            return "unknown name '" + p.getProperty() + "'" + suggestion(p.getProperty(), variables)
+                    + ". Expected a variable assigned earlier in the script (names are case-sensitive)";
+        }
+        if (t instanceof GroovyCastException c) {
+            return "wrong argument type: " + c.getMessage();
+        }
+        if (t instanceof DslException || t instanceof dolphin.core.EnvironmentException) {
+            return t.getMessage();
+        }
+        return t.getClass().getSimpleName() + (t.getMessage() == null ? "" : ": " + t.getMessage());
+    }
+
+    private static String arguments(Object[] args) {
+        return Arrays.stream(args == null ? new Object[0] : args)
+                .map(a -> a == null ? "null" : a.getClass().getSimpleName())
+                .collect(Collectors.joining(", ", " with arguments (", ")"));
+    }
+
+    /** ", did you mean 'x'?" for a known name within two edits, or the same but for case. */
+    static String suggestion(String name, Collection<String> known) {
+        List<String> close = known.stream()
+                .filter(k -> !k.equals(name))
+                .filter(k -> k.equalsIgnoreCase(name) || distance(k.toLowerCase(Locale.ROOT), name.toLowerCase(Locale.ROOT)) <= 2)
+                .sorted(Comparator.comparingInt(k -> distance(k, name)))
+                .limit(3)
+                .toList();
+        return close.isEmpty() ? "" : "; did you mean " + close.stream().map(k -> "'" + k + "'").collect(Collectors.joining(" or ")) + "?";
+    }
+
+    private static int distance(String a, String b) {
+        int[] prev = new int[b.length() + 1];
+        int[] cur = new int[b.length() + 1];
+        for (int j = 0; j <= b.length(); j++) {
+            prev[j] = j;
+        }
+        for (int i = 1; i <= a.length(); i++) {
+            cur[0] = i;
+            for (int j = 1; j <= b.length(); j++) {
+                int cost = a.charAt(i - 1) == b.charAt(j - 1) ? 0 : 1;
+                cur[j] = Math.min(Math.min(cur[j - 1] + 1, prev[j] + 1), prev[j - 1] + cost);
+            }
+            int[] swap = prev;
+            prev = cur;
+            cur = swap;
+        }
+        return prev[b.length()];
+    }
+}

@@ -1,0 +1,124 @@
+package dolphin.dsl;
+
+import groovy.lang.Binding;
+import groovy.lang.GroovyClassLoader;
+import groovy.lang.GroovyCodeSource;
+import groovy.lang.Script;
+import groovy.transform.ThreadInterrupt;
+import java.util.ArrayList;
+import java.util.List;
+import org.codehaus.groovy.control.CompilationFailedException;
+import org.codehaus.groovy.control.CompilerConfiguration;
+import org.codehaus.groovy.control.MultipleCompilationErrorsException;
+import org.codehaus.groovy.control.customizers.ASTTransformationCustomizer;
+import org.codehaus.groovy.control.customizers.ImportCustomizer;
+import org.codehaus.groovy.control.messages.ExceptionMessage;
+import org.codehaus.groovy.control.messages.Message;
+import org.codehaus.groovy.control.messages.SyntaxErrorMessage;
+import org.codehaus.groovy.runtime.InvokerHelper;
+import org.codehaus.groovy.syntax.SyntaxException;
+
+/** Compiles Dolphin scripts: imports, base class, the layout check and the execute-key check. */
+final class ScriptCompiler {
+
+    static final String BASE_CLASS = "dolphin.dsl.DolphinScript";
+
+    private final List<DslExtension> extensions;
+
+    ScriptCompiler(List<DslExtension> extensions) {
+        this.extensions = extensions;
+    }
+
+    private CompilerConfiguration configuration() {
+        CompilerConfiguration config = new CompilerConfiguration();
+        config.setScriptBaseClass(BASE_CLASS);
+        ImportCustomizer imports = new ImportCustomizer();
+        imports.addStaticStars("java.lang.Math");
+        imports.addStarImports("dolphin.core", "dolphin.dsl");
+        extensions.forEach(e -> e.addImports(imports));
+        // ThreadInterrupt makes loops and closures check for interrupts, so stop() ends any script.
+        config.addCompilationCustomizers(imports, new ASTTransformationCustomizer(ThreadInterrupt.class),
+                new ExecuteKeyCheck());
+        return config;
+    }
+
+    /** The script's mistakes found without running it; empty when it compiles. */
+    List<ScriptError> check(String source, String file) {
+        List<ScriptError> errors = LayoutCheck.check(source, file);
+        if (!errors.isEmpty()) {
+            return errors;
+        }
+        try (GroovyClassLoader loader = newLoader()) {
+            loader.parseClass(codeSource(source, file), false);
+            return List.of();
+        } catch (CompilationFailedException e) {
+            return compileErrors(e, file);
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
+    /** Compiles a script into an instance bound to {@code binding}; throws {@link ScriptCompileException}. */
+    Script parse(String source, String file, Binding binding, GroovyClassLoader loader) {
+        List<ScriptError> errors = LayoutCheck.check(source, file);
+        if (!errors.isEmpty()) {
+            throw new ScriptCompileException(errors);
+        }
+        try {
+            Class<?> type = loader.parseClass(codeSource(source, file), false);
+            return InvokerHelper.createScript(type, binding);
+        } catch (CompilationFailedException e) {
+            throw new ScriptCompileException(compileErrors(e, file));
+        }
+    }
+
+    GroovyClassLoader newLoader() {
+        return new GroovyClassLoader(getClass().getClassLoader(), configuration());
+    }
+
+    /** The class file name Groovy sees; stack frames carry it, so errors can be mapped back to the script. */
+    static String codeName(String file) {
+        String base = file.replace('\\', '/');
+        return base.substring(base.lastIndexOf('/') + 1);
+    }
+
+    private static GroovyCodeSource codeSource(String source, String file) {
+        GroovyCodeSource cs = new GroovyCodeSource(source, codeName(file), "/groovy/script");
+        cs.setCachable(false);
+        return cs;
+    }
+
+    private static List<ScriptError> compileErrors(CompilationFailedException e, String file) {
+        List<ScriptError> out = new ArrayList<>();
+        if (e instanceof MultipleCompilationErrorsException m) {
+            for (Message msg : m.getErrorCollector().getErrors()) {
+                if (msg instanceof SyntaxErrorMessage s) {
+                    SyntaxException se = s.getCause();
+                    out.add(new ScriptError(file, se.getStartLine(), se.getStartColumn(), cleanSyntaxMessage(se.getOriginalMessage())));
+                } else if (msg instanceof ExceptionMessage x) {
+                    out.add(new ScriptError(file, 0, 0, x.getCause().getMessage()));
+                }
+            }
+        }
+        if (out.isEmpty()) {
+            out.add(new ScriptError(file, 0, 0, e.getMessage()));
+        }
+        return out;
+    }
+
+    private static String cleanSyntaxMessage(String m) {
+        String s = m.strip();
+        int at = s.indexOf("\n");
+        return at > 0 ? s.substring(0, at).strip() : s;
+    }
+
+    /** Compile errors carried to the run's result. */
+    static final class ScriptCompileException extends RuntimeException {
+        final List<ScriptError> errors;
+
+        ScriptCompileException(List<ScriptError> errors) {
+            super(errors.get(0).toString(), null, false, false);
+            this.errors = errors;
+        }
+    }
+}

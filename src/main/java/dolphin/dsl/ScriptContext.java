@@ -1,0 +1,55 @@
+package dolphin.dsl;
+
+import dolphin.core.Environment;
+import dolphin.core.RuntimeListener;
+import java.util.List;
+import java.util.function.Function;
+
+/** What a running script's DSL words work with; one per script run. */
+public final class ScriptContext {
+
+    private final Environment environment;
+    private final SignalSet signals = new SignalSet();
+    private final Function<String, String> input;
+    private List<Object> words = List.of();
+    private int taskErrors;
+
+    ScriptContext(Environment environment, Function<String, String> input) {
+        this.environment = environment;
+        this.input = input;
+    }
+
+    public Environment environment() {
+        return environment;
+    }
+
+    public RuntimeListener listener() {
+        return environment.getListener();
+    }
+
+    public SignalSet signals() {
+        return signals;
+    }
+
+    public String readInput(String prompt) {
+        return input.apply(prompt);
+    }
+
+    /** The platform words of this run, from the engine's extensions. */
+    public List<Object> words() {
+        return words;
+    }
+
+    void setWords(List<Object> words) {
+        this.words = List.copyOf(words);
+    }
+
+    /** Counts a root task that ended in ERROR, so the run's outcome says so. */
+    public void taskFailed() {
+        taskErrors++;
+    }
+
+    int taskErrors() {
+        return taskErrors;
+    }
+}
