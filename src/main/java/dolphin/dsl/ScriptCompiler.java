@@ -52,7 +52,7 @@ final class ScriptCompiler {
             loader.parseClass(codeSource(source, file), false);
             return List.of();
         } catch (CompilationFailedException e) {
-            return compileErrors(e, file);
+            return compileErrors(e, source, file);
         } catch (java.io.IOException e) {
             throw new java.io.UncheckedIOException(e);
         }
@@ -68,7 +68,7 @@ final class ScriptCompiler {
             Class<?> type = loader.parseClass(codeSource(source, file), false);
             return InvokerHelper.createScript(type, binding);
         } catch (CompilationFailedException e) {
-            throw new ScriptCompileException(compileErrors(e, file));
+            throw new ScriptCompileException(compileErrors(e, source, file));
         }
     }
 
@@ -88,7 +88,11 @@ final class ScriptCompiler {
         return cs;
     }
 
-    private static List<ScriptError> compileErrors(CompilationFailedException e, String file) {
+    private static List<ScriptError> compileErrors(CompilationFailedException e, String source, String file) {
+        var brackets = BracketCheck.check(source, file);
+        if (brackets.isPresent()) {
+            return List.of(brackets.get());
+        }
         List<ScriptError> out = new ArrayList<>();
         if (e instanceof MultipleCompilationErrorsException m) {
             for (Message msg : m.getErrorCollector().getErrors()) {

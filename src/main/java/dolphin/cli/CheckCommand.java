@@ -1,0 +1,55 @@
+package dolphin.cli;
+
+import dolphin.dsl.Engine;
+import dolphin.dsl.ScriptError;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code dolphin check SCRIPT...}: compiles scripts and prints their mistakes as file:line:column: message. */
+@Command(name = "check", mixinStandardHelpOptions = true,
+        description = "Compiles scripts without running them and prints their errors as file:line:column: message. "
+                + "Exit 0 when every script compiles, 1 when one has errors, 2 when a script cannot be read.")
+final class CheckCommand implements Callable<Integer> {
+
+    @Spec
+    private CommandSpec spec;
+
+    @Parameters(arity = "1..*", paramLabel = "SCRIPT", description = "The .dolphin scripts to check.")
+    private List<Path> scripts = new ArrayList<>();
+
+    @Override
+    public Integer call() {
+        PrintWriter err = spec.commandLine().getErr();
+        Engine engine = new Engine(new DryRunPlatform());
+        int code = 0;
+        for (Path script : scripts) {
+            String source;
+            try {
+                source = Files.readString(script);
+            } catch (NoSuchFileException e) {
+                err.println("dolphin check: cannot read " + script + ": no such file");
+                return Main.USAGE;
+            } catch (IOException e) {
+                err.println("dolphin check: cannot read " + script + ": " + e.getMessage());
+                return Main.USAGE;
+            }
+            List<ScriptError> errors = engine.check(source, script.toString());
+            errors.forEach(err::println);
+            if (!errors.isEmpty()) {
+                code = 1;
+            }
+        }
+        err.flush();
+        return code;
+    }
+}

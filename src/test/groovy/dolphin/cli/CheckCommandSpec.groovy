@@ -1,0 +1,70 @@
+package dolphin.cli
+
+import spock.lang.Specification
+
+class CheckCommandSpec extends Specification {
+
+    static String script(String name) {
+        new File(CheckCommandSpec.getResource("/scripts/${name}").toURI()).path
+    }
+
+    Map check(String... args) {
+        def out = new StringWriter()
+        def err = new StringWriter()
+        int code = Main.commandLine(new PrintWriter(out), new PrintWriter(err)).execute(['check', *args] as String[])
+        [code: code, out: out.toString(), err: err.toString()]
+    }
+
+    def "a correct script: no output, exit 0"() {
+        when:
+        def r = check(script('good.dolphin'))
+
+        then:
+        r.code == 0
+        r.out.isEmpty()
+        r.err.isEmpty()
+    }
+
+    def "a script with a mistake: file:line and what was expected, exit 1"() {
+        when:
+        def r = check(script(file))
+
+        then:
+        r.code == 1
+        r.err.contains("${script(file)}:${line}")
+        r.err.contains(fragment)
+
+        where:
+        file                   | line | fragment
+        'bare-execute.dolphin' | 4    | "'execute' stands alone on its line"
+        'syntax-error.dolphin' | 1    | "the '{' opened here is never closed: expected a '}'"
+        'def-key.dolphin'      | 2    | "'v1' is declared with 'def'"
+    }
+
+    def "an unreadable script is a usage error, exit 2"() {
+        when:
+        def r = check('no/such/script.dolphin')
+
+        then:
+        r.code == 2
+        r.err.contains('cannot read no/such/script.dolphin: no such file')
+    }
+
+    def "no command or an unknown option is a usage error, exit 2"() {
+        expect:
+        check(args as String[]).code == 2
+
+        where:
+        args << [['--frobnicate', 'x.dolphin'], []]
+    }
+
+    def "no command at all lists the commands"() {
+        when:
+        def err = new StringWriter()
+        int code = Main.commandLine(new PrintWriter(new StringWriter()), new PrintWriter(err)).execute()
+
+        then:
+        code == 2
+        err.toString().contains('Missing command: expected one of check')
+    }
+}
