@@ -108,14 +108,14 @@ public final class FrameReader {
     /** Returns the bytes to consume at p: the frame's length, 1 to resync past a false start, 0 to wait. */
     private int tryV2(int p, Consumer<Frame> sink) {
         if (end - p < 10) {
-            return 0;
+            return incomplete();
         }
         int len = buf[p + 1] & 0xFF;
         int incompat = buf[p + 2] & 0xFF;
         boolean signed = (incompat & Frame.INCOMPAT_SIGNED) != 0;
         int frameLen = 10 + len + 2 + (signed ? 13 : 0);
         if (end - p < frameLen) {
-            return 0;
+            return incomplete();
         }
         int msgid = msgidAt(p);
         int check = checkCrc(p, 10, len, msgid, frameLen);
@@ -137,12 +137,12 @@ public final class FrameReader {
 
     private int tryV1(int p, Consumer<Frame> sink) {
         if (end - p < 6) {
-            return 0;
+            return incomplete();
         }
         int len = buf[p + 1] & 0xFF;
         int frameLen = 6 + len + 2;
         if (end - p < frameLen) {
-            return 0;
+            return incomplete();
         }
         int msgid = msgidAt(p);
         int check = checkCrc(p, 6, len, msgid, frameLen);
@@ -156,6 +156,18 @@ public final class FrameReader {
         sink.accept(new Frame(1, 0, 0, buf[p + 2] & 0xFF, buf[p + 3] & 0xFF, buf[p + 4] & 0xFF, msgid,
                 Arrays.copyOfRange(buf, p + 6, p + 6 + len), null, check == VERIFIED, Arrays.copyOfRange(buf, p, p + frameLen)));
         return frameLen;
+    }
+
+    /**
+     * A candidate frame runs past the data: on a stream, wait for more; at the end of a datagram it
+     * is a false start, so skip its start byte and look for frames inside it.
+     */
+    private int incomplete() {
+        if (!atPacketEnd) {
+            return 0;
+        }
+        drops.add(DropCounters.Reason.GARBAGE_BYTES, 1);
+        return 1;
     }
 
     /**
