@@ -19,6 +19,12 @@ public interface Clock {
     /** Sleeps for the given clock time. */
     void sleep(Duration duration) throws InterruptedException;
 
+    /**
+     * The real time a blocking I/O wait (a socket or queue timeout) should use to cover the given
+     * clock time; a faster clock waits less.
+     */
+    long realNanos(long clockNanos);
+
     /** A wait that another thread can cut short, e.g. when telemetry arrives. */
     Wakeup newWakeup();
 

@@ -67,6 +67,12 @@ public final class ManualClock implements Clock {
         await(duration, new ManualWakeup());
     }
 
+    /** Virtual time does not pass while a thread blocks on I/O, so such waits only poll (1 ms). */
+    @Override
+    public long realNanos(long clockNanos) {
+        return Math.min(clockNanos, 1_000_000L);
+    }
+
     @Override
     public Wakeup newWakeup() {
         return new ManualWakeup();

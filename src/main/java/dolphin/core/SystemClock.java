@@ -40,6 +40,11 @@ public final class SystemClock implements Clock {
     }
 
     @Override
+    public long realNanos(long clockNanos) {
+        return (long) (clockNanos / speedup);
+    }
+
+    @Override
     public Wakeup newWakeup() {
         return new Wakeup() {
             private final ReentrantLock lock = new ReentrantLock();
@@ -77,6 +82,6 @@ public final class SystemClock implements Clock {
     }
 
     private long toReal(Duration duration) {
-        return (long) (duration.toNanos() / speedup);
+        return realNanos(duration.toNanos());
     }
 }

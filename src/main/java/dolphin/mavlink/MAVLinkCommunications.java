@@ -1,0 +1,404 @@
+package dolphin.mavlink;
+
+import com.MAVLink.Messages.MAVLinkMessage;
+import com.MAVLink.common.msg_command_ack;
+import com.MAVLink.common.msg_command_long;
+import com.MAVLink.common.msg_extended_sys_state;
+import com.MAVLink.common.msg_home_position;
+import com.MAVLink.common.msg_mission_current;
+import com.MAVLink.common.msg_statustext;
+import com.MAVLink.common.msg_sys_status;
+import com.MAVLink.enums.MAV_AUTOPILOT;
+import com.MAVLink.enums.MAV_STATE;
+import com.MAVLink.enums.MAV_TYPE;
+import com.MAVLink.minimal.msg_heartbeat;
+import com.MAVLink.standard.msg_global_position_int;
+import dolphin.core.Clock;
+import dolphin.core.Position;
+import dolphin.mavlink.codec.DropCounters;
+import dolphin.mavlink.codec.Frame;
+import dolphin.mavlink.codec.FrameReader;
+import dolphin.mavlink.codec.FrameWriter;
+import dolphin.mavlink.link.Link;
+import java.io.IOException;
+import java.net.SocketAddress;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The ground station's one MAVLink thread (report Listing 10). Link reader threads hand it bytes;
+ * it decodes frames, discovers vehicles, routes messages through the {@link MessageHandler} to
+ * their {@link MAVLinkNode}, sends everything that goes out, and runs the timers: the 1 Hz GCS
+ * heartbeat, command retries and telemetry re-requests. Other threads talk to it through a queue.
+ */
+public final class MAVLinkCommunications implements AutoCloseable {
+
+    private static final Logger LOG = LoggerFactory.getLogger(MAVLinkCommunications.class);
+    private static final long SECOND = 1_000_000_000L;
+
+    /** Sees every frame in and out, on the communications thread (for forwarding, logs and tests). */
+    public interface FrameObserver {
+        void frame(boolean incoming, Link link, Frame frame);
+    }
+
+    private final MAVLinkConfig config;
+    private final Clock clock;
+    private final List<Link> links = new ArrayList<>();
+    private final Map<Link, FrameReader> readers = new HashMap<>();
+    private final Map<Link, FrameWriter> writers = new HashMap<>();
+    private final Map<Link, Set<SocketAddress>> peers = new HashMap<>();
+    private final Map<String, MAVLinkNode> nodesByKey = new ConcurrentHashMap<>();
+    private final Map<String, MAVLinkNode> nodesById = new ConcurrentHashMap<>();
+    private final MessageHandler handler = new MessageHandler();
+    private final DropCounters drops = new DropCounters();
+    private final LinkedBlockingQueue<Object> queue = new LinkedBlockingQueue<>();
+    private final Timers timers = new Timers();
+    private final CommandSender commands;
+    private final TelemetryRequests telemetry;
+    private final List<FrameObserver> observers = new CopyOnWriteArrayList<>();
+    private final AtomicLong framesIn = new AtomicLong();
+    private final AtomicLong framesOut = new AtomicLong();
+    private final AtomicLong filtered = new AtomicLong();
+    private volatile Runnable telemetryListener = () -> { };
+    private volatile boolean running;
+    private Thread thread;
+    private Tlog tlog;
+
+    public MAVLinkCommunications(MAVLinkConfig config, Clock clock) {
+        this.config = config;
+        this.clock = clock;
+        this.commands = new CommandSender(this::sendOnCommsThread, config.commandTimeout().toNanos(), config.commandAttempts());
+        this.telemetry = new TelemetryRequests(this, config.telemetryHz());
+        routeVehicleState();
+    }
+
+    public MAVLinkConfig config() {
+        return config;
+    }
+
+    public Clock clock() {
+        return clock;
+    }
+
+    /** Opens the links and starts the thread. Throws with the link's name when one cannot be opened. */
+    public synchronized void start() throws IOException {
+        if (running) {
+            return;
+        }
+        try {
+            for (int i = 0; i < config.links().size(); i++) {
+                Link link = Link.open(config.links().get(i), i);
+                links.add(link);
+                readers.put(link, new FrameReader(config.signingKey(), drops));
+                writers.put(link, new FrameWriter(config.sysid(), config.compid(), config.signingKey(), i));
+                peers.put(link, new LinkedHashSet<>());
+            }
+            if (config.tlog() != null) {
+                tlog = new Tlog(config.tlog());
+            }
+        } catch (IOException e) {
+            closeLinks();
+            throw e;
+        }
+        running = true;
+        thread = new Thread(this::loop, "MAVLink communications");
+        thread.setDaemon(true);
+        thread.start();
+        links.forEach(l -> l.start(queue::add, problem -> LOG.warn("link {}", problem)));
+    }
+
+    public List<Link> links() {
+        return List.copyOf(links);
+    }
+
+    /** Every vehicle discovered so far, connected or not, by system id then link. */
+    public List<MAVLinkNode> nodes() {
+        return nodesByKey.values().stream()
+                .sorted(Comparator.comparingInt(MAVLinkNode::getMavLinkId).thenComparingInt(n -> n.getLink().index()))
+                .toList();
+    }
+
+    public MAVLinkNode node(String id) {
+        return nodesById.get(id);
+    }
+
+    /** The consumers of decoded messages from vehicles' autopilots; platforms add theirs (missions). */
+    public MessageHandler messageHandler() {
+        return handler;
+    }
+
+    public DropCounters drops() {
+        return drops;
+    }
+
+    public long framesIn() {
+        return framesIn.get();
+    }
+
+    public long framesOut() {
+        return framesOut.get();
+    }
+
+    /** Frames from systems outside the allow-list. */
+    public long filtered() {
+        return filtered.get();
+    }
+
+    /** How often a vehicle's telemetry streams were asked for again after falling silent. */
+    public int telemetryRerequests(String nodeId) {
+        return telemetry.rerequests(nodeId);
+    }
+
+    /** Runs after each state update that conditions may read (position, battery, mode, mission). */
+    public void setTelemetryListener(Runnable listener) {
+        telemetryListener = listener == null ? () -> { } : listener;
+    }
+
+    public void addObserver(FrameObserver observer) {
+        observers.add(observer);
+    }
+
+    /** Sends a message to a vehicle, from any thread. */
+    public void send(MAVLinkNode node, MAVLinkMessage message) {
+        execute(() -> sendOnCommsThread(node, message));
+    }
+
+    /** Sends a COMMAND_LONG and completes with its COMMAND_ACK, retrying on timeout; from any thread. */
+    public CompletableFuture<CommandResult> command(MAVLinkNode node, int command, float... params) {
+        CompletableFuture<CommandResult> result = new CompletableFuture<>();
+        execute(() -> commandOnCommsThread(node, command, params).whenComplete((r, e) -> {
+            if (e != null) {
+                result.completeExceptionally(e);
+            } else {
+                result.complete(r);
+            }
+        }));
+        return result;
+    }
+
+    /** Runs an action on the communications thread. */
+    public void execute(Runnable action) {
+        queue.add(action);
+    }
+
+    CompletableFuture<CommandResult> commandOnCommsThread(MAVLinkNode node, int command, float... params) {
+        msg_command_long m = new msg_command_long();
+        m.target_system = (short) node.getMavLinkId();
+        m.target_component = (short) node.getAutopilotCompid();
+        m.command = command;
+        float[] p = java.util.Arrays.copyOf(params, 7);
+        m.param1 = p[0];
+        m.param2 = p[1];
+        m.param3 = p[2];
+        m.param4 = p[3];
+        m.param5 = p[4];
+        m.param6 = p[5];
+        m.param7 = p[6];
+        return commands.submit(node, m, clock.nanoTime());
+    }
+
+    void sendOnCommsThread(MAVLinkNode node, MAVLinkMessage message) {
+        transmit(node.getLink(), message, node.getAddress());
+    }
+
+    private void transmit(Link link, MAVLinkMessage message, SocketAddress to) {
+        byte[] frame = writers.get(link).write(message);
+        try {
+            link.send(frame, to);
+            framesOut.incrementAndGet();
+            log(frame);
+            if (!observers.isEmpty()) {
+                observeOutgoing(link, frame);
+            }
+        } catch (IOException e) {
+            LOG.warn("sending {} on {} to {} failed: {}", message.name(), link, to, e.getMessage());
+        }
+    }
+
+    private void loop() {
+        long now = clock.nanoTime();
+        timers.at(now, this::heartbeat);
+        timers.at(now + SECOND / 2, this::supervise);
+        while (running) {
+            try {
+                long wait = Math.max(0, Math.min(timers.next() - clock.nanoTime(), SECOND));
+                Object event = queue.poll(Math.max(1, clock.realNanos(wait)), TimeUnit.NANOSECONDS);
+                if (event instanceof Link.Received r) {
+                    receive(r);
+                } else if (event instanceof Runnable action) {
+                    action.run();
+                }
+                timers.runDue(clock.nanoTime());
+            } catch (InterruptedException e) {
+                running = false;
+            } catch (RuntimeException e) {
+                LOG.warn("communications: {}", e.toString(), e);
+            }
+        }
+    }
+
+    private void heartbeat() {
+        msg_heartbeat hb = new msg_heartbeat();
+        hb.type = MAV_TYPE.MAV_TYPE_GCS;
+        hb.autopilot = MAV_AUTOPILOT.MAV_AUTOPILOT_INVALID;
+        hb.system_status = MAV_STATE.MAV_STATE_ACTIVE;
+        hb.mavlink_version = 3;
+        for (Link link : links) {
+            if (link.fixedPeer() != null) {
+                transmit(link, hb, link.fixedPeer());
+            } else {
+                for (SocketAddress peer : peers.get(link)) {
+                    transmit(link, hb, peer);
+                }
+            }
+        }
+        timers.at(clock.nanoTime() + config.heartbeatPeriod().toNanos(), this::heartbeat);
+    }
+
+    private void supervise() {
+        long now = clock.nanoTime();
+        commands.tick(now);
+        telemetry.check(now);
+        nodesByKey.values().forEach(n -> {
+            if (n.wasConnected != n.isConnected()) {
+                n.wasConnected = !n.wasConnected;
+                LOG.info("vehicle {} {}", n.getId(), n.wasConnected ? "is back" : "lost: no heartbeat within " + n.getConnectionTimeout() + " s");
+                telemetryListener.run();
+            }
+        });
+        timers.at(now + SECOND / 4, this::supervise);
+    }
+
+    private void receive(Link.Received r) {
+        FrameReader reader = readers.get(r.link());
+        reader.feed(r.bytes(), 0, r.bytes().length, f -> onFrame(r.link(), r.peer(), f));
+        if (r.datagram()) {
+            reader.endOfPacket(f -> onFrame(r.link(), r.peer(), f));
+        }
+    }
+
+    private void onFrame(Link link, SocketAddress peer, Frame frame) {
+        framesIn.incrementAndGet();
+        log(frame.raw());
+        peers.get(link).add(peer);
+        observers.forEach(o -> o.frame(true, link, frame));
+        if (!config.allowedSysids().isEmpty() && !config.allowedSysids().contains(frame.sysid())) {
+            filtered.incrementAndGet();
+            return;
+        }
+        MAVLinkMessage message = frame.message();
+        if (message == null) {
+            return;
+        }
+        String key = link.index() + "/" + frame.sysid();
+        MAVLinkNode node = nodesByKey.get(key);
+        if (node == null && message instanceof msg_heartbeat hb) {
+            node = discover(link, peer, frame, hb);
+        }
+        if (node == null || frame.compid() != node.getAutopilotCompid()) {
+            return;
+        }
+        node.heardAt(peer);
+        telemetry.seen(node, frame.msgid(), clock.nanoTime());
+        handler.dispatch(node, message);
+    }
+
+    private MAVLinkNode discover(Link link, SocketAddress peer, Frame frame, msg_heartbeat hb) {
+        String type = DolphinType.of(hb.type, hb.autopilot);
+        if (type == null) {
+            return null;
+        }
+        String plain = String.valueOf(frame.sysid());
+        String id = nodesById.containsKey(plain) ? plain + "@" + link.url() : plain;
+        VehicleFamily family = VehicleFamily.of(hb.type, hb.autopilot);
+        MAVLinkNode node = new MAVLinkNode(id, type, this, link, peer, frame.sysid(), frame.compid(), family, clock);
+        nodesByKey.put(link.index() + "/" + frame.sysid(), node);
+        nodesById.put(id, node);
+        LOG.info("discovered vehicle {} ({}, {}) on {} at {}", id, type, family, link, peer);
+        telemetry.discovered(node, clock.nanoTime());
+        return node;
+    }
+
+    /** The consumers that keep each node's {@link VehicleState} up to date. */
+    private void routeVehicleState() {
+        handler.on(msg_heartbeat.class, (n, hb) -> changed(n, s -> s.withHeartbeat(hb, clock.nanoTime())));
+        handler.on(msg_sys_status.class, (n, m) -> changed(n, s -> s.withSystemStatus(m, clock.nanoTime())));
+        handler.on(msg_global_position_int.class, (n, m) -> changed(n, s -> s.withPosition(
+                Position.fromDegrees(m.lat * 1e-7, m.lon * 1e-7, m.alt * 1e-3), m.relative_alt * 1e-3, clock.nanoTime())));
+        handler.on(msg_home_position.class, (n, m) -> changed(n, s -> s.withHome(
+                Position.fromDegrees(m.latitude * 1e-7, m.longitude * 1e-7, m.altitude * 1e-3))));
+        handler.on(msg_extended_sys_state.class, (n, m) -> changed(n, s -> s.withLandedState(m.landed_state)));
+        handler.on(msg_mission_current.class, (n, m) -> changed(n, s -> s.withMissionCurrent(m.seq, m.total, m.mission_state)));
+        handler.on(msg_statustext.class, (n, m) -> {
+            String text = m.getText();
+            LOG.info("vehicle {}: {}", n.getId(), text);
+            changed(n, s -> s.withStatusText(text));
+        });
+        handler.on(msg_command_ack.class, (n, m) -> commands.onAck(n, m, clock.nanoTime()));
+    }
+
+    private void changed(MAVLinkNode node, java.util.function.UnaryOperator<VehicleState> change) {
+        node.update(change);
+        telemetryListener.run();
+    }
+
+    private void observeOutgoing(Link link, byte[] bytes) {
+        FrameReader r = new FrameReader();
+        r.feed(bytes, 0, bytes.length, f -> observers.forEach(o -> o.frame(false, link, f)));
+    }
+
+    private void log(byte[] frame) {
+        if (tlog != null) {
+            try {
+                tlog.write(frame);
+            } catch (IOException e) {
+                LOG.warn("tlog write failed: {}", e.getMessage());
+            }
+        }
+    }
+
+    /** Stops the thread, closes every socket and the tlog. */
+    @Override
+    public void close() {
+        running = false;
+        if (thread != null) {
+            thread.interrupt();
+            try {
+                thread.join(2000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+        closeLinks();
+        if (tlog != null) {
+            try {
+                tlog.close();
+            } catch (IOException e) {
+                LOG.warn("closing the tlog failed: {}", e.getMessage());
+            }
+        }
+    }
+
+    private void closeLinks() {
+        for (Link l : links) {
+            try {
+                l.close();
+            } catch (IOException e) {
+                LOG.warn("closing {} failed: {}", l, e.getMessage());
+            }
+        }
+    }
+}

@@ -1,0 +1,55 @@
+package dolphin.mavlink;
+
+import dolphin.mavlink.codec.SigningKey;
+import dolphin.mavlink.link.LinkUrl;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+import java.util.Set;
+
+/**
+ * How the ground station talks MAVLink (design §3): its ids, its links, signing, the telemetry rate
+ * it asks for, and an optional tlog.
+ *
+ * @param allowedSysids systems to listen to; empty means all
+ * @param telemetryHz the rate asked for SYS_STATUS and GLOBAL_POSITION_INT (others at 1 Hz)
+ */
+public record MAVLinkConfig(int sysid, int compid, List<LinkUrl> links, SigningKey signingKey, Set<Integer> allowedSysids,
+                            double telemetryHz, Duration heartbeatPeriod, Duration commandTimeout, int commandAttempts,
+                            Path tlog) {
+
+    public static final int DEFAULT_SYSID = 208;
+    public static final int DEFAULT_COMPID = 190;
+    public static final String DEFAULT_LINK = "udpin:0.0.0.0:14559";
+
+    public MAVLinkConfig {
+        links = List.copyOf(links);
+        allowedSysids = Set.copyOf(allowedSysids);
+        if (links.isEmpty()) {
+            throw new IllegalArgumentException("at least one link is needed, e.g. " + DEFAULT_LINK);
+        }
+        if (!(telemetryHz > 0)) {
+            throw new IllegalArgumentException("the telemetry rate must be positive, got " + telemetryHz);
+        }
+    }
+
+    public static MAVLinkConfig of(String... links) {
+        return new MAVLinkConfig(DEFAULT_SYSID, DEFAULT_COMPID, java.util.Arrays.stream(links).map(LinkUrl::parse).toList(),
+                null, Set.of(), 4, Duration.ofSeconds(1), Duration.ofMillis(1000), 5, null);
+    }
+
+    public MAVLinkConfig withSigningKey(SigningKey key) {
+        return new MAVLinkConfig(sysid, compid, links, key, allowedSysids, telemetryHz, heartbeatPeriod, commandTimeout,
+                commandAttempts, tlog);
+    }
+
+    public MAVLinkConfig withTlog(Path file) {
+        return new MAVLinkConfig(sysid, compid, links, signingKey, allowedSysids, telemetryHz, heartbeatPeriod, commandTimeout,
+                commandAttempts, file);
+    }
+
+    public MAVLinkConfig withAllowedSysids(Set<Integer> ids) {
+        return new MAVLinkConfig(sysid, compid, links, signingKey, ids, telemetryHz, heartbeatPeriod, commandTimeout,
+                commandAttempts, tlog);
+    }
+}

@@ -1,0 +1,157 @@
+package dolphin.mavlink;
+
+import com.MAVLink.Messages.MAVLinkMessage;
+import com.MAVLink.common.msg_sys_status;
+import com.MAVLink.minimal.msg_heartbeat;
+import dolphin.core.AbstractNode;
+import dolphin.core.Clock;
+import dolphin.core.EnvironmentException;
+import dolphin.core.Payload;
+import dolphin.core.Position;
+import dolphin.mavlink.link.Link;
+import java.net.SocketAddress;
+import java.time.Duration;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.UnaryOperator;
+
+/**
+ * A MAVLink vehicle as a Dolphin node: a system id on a link (report Listing 9). Its state is an
+ * immutable {@link VehicleState} that the communications thread replaces and any thread reads.
+ */
+public final class MAVLinkNode extends AbstractNode {
+
+    /** How long {@link #batteryRemaining()} waits for the first SYS_STATUS (design §7). */
+    public static final Duration BATTERY_WAIT = Duration.ofSeconds(5);
+
+    private final MAVLinkCommunications comms;
+    private final Link link;
+    private final int sysid;
+    private final int autopilotCompid;
+    private final Clock clock;
+    private final AtomicReference<VehicleState> state;
+    private volatile SocketAddress address;
+    /** The connection state the communications thread last reported; only it reads and writes this. */
+    boolean wasConnected = true;
+
+    MAVLinkNode(String id, String type, MAVLinkCommunications comms, Link link, SocketAddress address, int sysid,
+                int autopilotCompid, VehicleFamily family, Clock clock) {
+        super(id, type, Payload.NONE);
+        this.comms = comms;
+        this.link = link;
+        this.address = address;
+        this.sysid = sysid;
+        this.autopilotCompid = autopilotCompid;
+        this.clock = clock;
+        this.state = new AtomicReference<>(VehicleState.initial(family));
+    }
+
+    /** The MAVLink system id (the report's getMavLinkId). */
+    public int getMavLinkId() {
+        return sysid;
+    }
+
+    public int getAutopilotCompid() {
+        return autopilotCompid;
+    }
+
+    public Link getLink() {
+        return link;
+    }
+
+    /** Where the vehicle was last heard: replies go there. */
+    public SocketAddress getAddress() {
+        return address;
+    }
+
+    void heardAt(SocketAddress from) {
+        address = from;
+    }
+
+    public VehicleFamily getFamily() {
+        return state.get().family();
+    }
+
+    /** The current snapshot of everything known about the vehicle. */
+    public VehicleState state() {
+        return state.get();
+    }
+
+    void update(UnaryOperator<VehicleState> change) {
+        state.updateAndGet(change);
+    }
+
+    @Override
+    public Position getPosition() {
+        return state.get().position();
+    }
+
+    public msg_heartbeat getLastHBReceived() {
+        return state.get().heartbeat();
+    }
+
+    public msg_sys_status getLastSystemStatus() {
+        return state.get().systemStatus();
+    }
+
+    public String getModeName() {
+        return state.get().modeName();
+    }
+
+    public boolean isArmed() {
+        return state.get().armed();
+    }
+
+    public Position getHome() {
+        return state.get().home();
+    }
+
+    /** Heard within the connection timeout (design §3). */
+    @Override
+    public boolean isConnected() {
+        long last = state.get().heartbeatNanos();
+        return clock.nanoTime() - last <= (long) (getConnectionTimeout() * 1e9);
+    }
+
+    /**
+     * The battery as a fraction: waits up to 5 s for the first SYS_STATUS, then fails with a clear
+     * error, as it does for a vehicle without a battery monitor (-1). Never a made-up value: Groovy
+     * orders NaN above every number, so a NaN would silently satisfy {@code >=} (design §7).
+     */
+    @Override
+    public double batteryRemaining() {
+        long deadline = clock.nanoTime() + BATTERY_WAIT.toNanos();
+        while (state.get().systemStatus() == null) {
+            if (clock.nanoTime() >= deadline) {
+                throw new EnvironmentException("battery: vehicle " + getId() + " has sent no SYS_STATUS in "
+                        + BATTERY_WAIT.toSeconds() + " s (are its telemetry streams reaching us?)");
+            }
+            try {
+                clock.sleep(Duration.ofMillis(50));
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new EnvironmentException("battery: interrupted while waiting for vehicle " + getId(), e);
+            }
+        }
+        int pct = state.get().batteryPercent();
+        if (pct < 0) {
+            throw new EnvironmentException("battery: vehicle " + getId() + " reports no battery level (battery_remaining -1:"
+                    + " no battery monitor configured)");
+        }
+        return pct / 100.0;
+    }
+
+    /** Sends a message to this vehicle, on the link and to the address it was heard at. */
+    public void send(MAVLinkMessage message) {
+        comms.send(this, message);
+    }
+
+    /** Nothing is sent: the script no longer tasks the vehicle. */
+    @Override
+    public void release() {
+    }
+
+    @Override
+    public String toString() {
+        return getId();
+    }
+}

@@ -1,0 +1,126 @@
+package dolphin.mavlink;
+
+import com.MAVLink.common.msg_request_data_stream;
+import com.MAVLink.enums.MAV_CMD;
+import com.MAVLink.enums.MAV_DATA_STREAM;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicInteger;
+
+/**
+ * Asks each vehicle for the telemetry the runtime reads, because ArduCopter sends none unless asked
+ * (ardupilot-behaviour §2.5): MAV_CMD_SET_MESSAGE_INTERVAL per message, falling back to
+ * REQUEST_DATA_STREAM when a vehicle refuses it, and asking again when a stream falls silent.
+ * Runs on the communications thread.
+ */
+final class TelemetryRequests {
+
+    static final int SYS_STATUS = 1;
+    static final int GLOBAL_POSITION_INT = 33;
+    static final int MISSION_CURRENT = 42;
+    static final int BATTERY_STATUS = 147;
+    static final int HOME_POSITION = 242;
+    static final int EXTENDED_SYS_STATE = 245;
+
+    private static final long MIN_SILENCE = 3_000_000_000L;
+
+    private static final class Stream {
+        final long intervalNanos;
+        long lastSeen;
+        long lastRequest;
+
+        Stream(long intervalNanos) {
+            this.intervalNanos = intervalNanos;
+        }
+
+        long silenceLimit() {
+            return Math.max(MIN_SILENCE, 5 * intervalNanos);
+        }
+    }
+
+    private static final class Vehicle {
+        final Map<Integer, Stream> streams = new LinkedHashMap<>();
+        boolean fallback;
+    }
+
+    private final MAVLinkCommunications comms;
+    private final long fastNanos;
+    private final Map<MAVLinkNode, Vehicle> vehicles = new LinkedHashMap<>();
+    private final Map<String, AtomicInteger> rerequests = new ConcurrentHashMap<>();
+
+    TelemetryRequests(MAVLinkCommunications comms, double hz) {
+        this.comms = comms;
+        this.fastNanos = (long) (1e9 / hz);
+    }
+
+    void discovered(MAVLinkNode node, long now) {
+        Vehicle v = new Vehicle();
+        for (int id : new int[] {SYS_STATUS, GLOBAL_POSITION_INT, MISSION_CURRENT}) {
+            v.streams.put(id, new Stream(fastNanos));
+        }
+        for (int id : new int[] {EXTENDED_SYS_STATE, BATTERY_STATUS, HOME_POSITION}) {
+            v.streams.put(id, new Stream(1_000_000_000L));
+        }
+        vehicles.put(node, v);
+        v.streams.forEach((id, s) -> request(node, v, id, s, now));
+    }
+
+    void seen(MAVLinkNode node, int msgid, long now) {
+        Vehicle v = vehicles.get(node);
+        Stream s = v == null ? null : v.streams.get(msgid);
+        if (s != null) {
+            s.lastSeen = now;
+        }
+    }
+
+    /** Asks again for the streams that fell silent (vehicles that are lost are left alone). */
+    void check(long now) {
+        vehicles.forEach((node, v) -> {
+            if (!node.isConnected()) {
+                return;
+            }
+            v.streams.forEach((id, s) -> {
+                if (now - Math.max(s.lastSeen, s.lastRequest) > s.silenceLimit()) {
+                    rerequests.computeIfAbsent(node.getId(), k -> new AtomicInteger()).incrementAndGet();
+                    request(node, v, id, s, now);
+                }
+            });
+        });
+    }
+
+    /** How many times streams of a vehicle were asked for again after falling silent. */
+    int rerequests(String nodeId) {
+        AtomicInteger n = rerequests.get(nodeId);
+        return n == null ? 0 : n.get();
+    }
+
+    private void request(MAVLinkNode node, Vehicle v, int msgid, Stream s, long now) {
+        s.lastRequest = now;
+        if (v.fallback) {
+            requestDataStreams(node, s.intervalNanos);
+            return;
+        }
+        comms.commandOnCommsThread(node, MAV_CMD.MAV_CMD_SET_MESSAGE_INTERVAL, msgid, s.intervalNanos / 1000f)
+                .thenAccept(r -> {
+                    if (!r.accepted() && !v.fallback) {
+                        v.fallback = true;
+                        requestDataStreams(node, fastNanos);
+                    }
+                });
+    }
+
+    private void requestDataStreams(MAVLinkNode node, long intervalNanos) {
+        int hz = (int) Math.max(1, Math.round(1e9 / intervalNanos));
+        for (int stream : new int[] {MAV_DATA_STREAM.MAV_DATA_STREAM_EXTENDED_STATUS, MAV_DATA_STREAM.MAV_DATA_STREAM_POSITION,
+                MAV_DATA_STREAM.MAV_DATA_STREAM_EXTRA3}) {
+            msg_request_data_stream m = new msg_request_data_stream();
+            m.target_system = (short) node.getMavLinkId();
+            m.target_component = (short) node.getAutopilotCompid();
+            m.req_stream_id = (short) stream;
+            m.req_message_rate = hz;
+            m.start_stop = 1;
+            comms.sendOnCommsThread(node, m);
+        }
+    }
+}

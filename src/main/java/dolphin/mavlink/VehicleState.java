@@ -1,0 +1,95 @@
+package dolphin.mavlink;
+
+import com.MAVLink.common.msg_sys_status;
+import com.MAVLink.minimal.msg_heartbeat;
+import dolphin.core.Position;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * What the ground station knows of a vehicle, as an immutable snapshot. The communications thread
+ * replaces it on each update (from the vehicle's autopilot component only); script and UI threads
+ * read whole snapshots, so they never see half an update.
+ *
+ * @param heartbeat the last autopilot heartbeat; null before the first
+ * @param heartbeatNanos clock time of that heartbeat
+ * @param systemStatus the last SYS_STATUS; null before the first
+ * @param position the last GLOBAL_POSITION_INT, height above mean sea level; null before the first
+ * @param relativeAlt metres above home from the same message
+ * @param home the vehicle's home from HOME_POSITION; null until reported
+ * @param landedState MAV_LANDED_STATE from EXTENDED_SYS_STATE (0 = undefined)
+ * @param missionSeq the current mission item (MISSION_CURRENT.seq), -1 before the first
+ * @param missionTotal MISSION_CURRENT.total (items excluding home), -1 when unknown
+ * @param missionState MISSION_CURRENT.mission_state (MISSION_STATE), 0 when unknown
+ * @param statusTexts the last STATUSTEXT lines, oldest first
+ */
+public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, VehicleFamily family,
+                           msg_sys_status systemStatus, long systemStatusNanos,
+                           Position position, double relativeAlt, long positionNanos, Position home,
+                           int landedState, int missionSeq, int missionTotal, int missionState,
+                           List<String> statusTexts) {
+
+    public static final int STATUS_LINES = 20;
+    private static final int ARMED_FLAG = 128;
+
+    public static VehicleState initial(VehicleFamily family) {
+        return new VehicleState(null, 0, family, null, 0, null, 0, 0, null, 0, -1, -1, 0, List.of());
+    }
+
+    public boolean armed() {
+        return heartbeat != null && (heartbeat.base_mode & ARMED_FLAG) != 0;
+    }
+
+    public long customMode() {
+        return heartbeat == null ? -1 : heartbeat.custom_mode;
+    }
+
+    public String modeName() {
+        return heartbeat == null ? "unknown" : family.modeName(heartbeat.custom_mode);
+    }
+
+    /** Remaining battery in percent (0..100), or -1 when the vehicle does not know it or has not said. */
+    public int batteryPercent() {
+        return systemStatus == null ? -1 : systemStatus.battery_remaining;
+    }
+
+    public VehicleState withHeartbeat(msg_heartbeat hb, long nanos) {
+        return new VehicleState(hb, nanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
+                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts);
+    }
+
+    public VehicleState withSystemStatus(msg_sys_status s, long nanos) {
+        return new VehicleState(heartbeat, heartbeatNanos, family, s, nanos, position, relativeAlt,
+                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts);
+    }
+
+    public VehicleState withPosition(Position p, double relAlt, long nanos) {
+        return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, p, relAlt,
+                nanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts);
+    }
+
+    public VehicleState withHome(Position h) {
+        return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
+                positionNanos, h, landedState, missionSeq, missionTotal, missionState, statusTexts);
+    }
+
+    public VehicleState withLandedState(int landed) {
+        return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
+                positionNanos, home, landed, missionSeq, missionTotal, missionState, statusTexts);
+    }
+
+    public VehicleState withMissionCurrent(int seq, int total, int state) {
+        return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
+                positionNanos, home, landedState, seq, total, state, statusTexts);
+    }
+
+    public VehicleState withStatusText(String line) {
+        List<String> lines = new ArrayList<>(statusTexts);
+        lines.add(line);
+        if (lines.size() > STATUS_LINES) {
+            lines.remove(0);
+        }
+        return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
+                positionNanos, home, landedState, missionSeq, missionTotal, missionState, List.copyOf(lines));
+    }
+}
