@@ -29,6 +29,9 @@ abstract class DolphinScript extends Script implements DslScript {
     /** Protected, not private: the script class is a subclass, and Groovy cannot reach a superclass's private members dynamically. */
     protected ScriptContext context
 
+    /** An execute whose command chain has not yet supplied its task (see {@link #execute}). */
+    protected PendingExecute pendingExecute
+
     @Override
     void attach(ScriptContext context) {
         this.context = context
@@ -91,11 +94,33 @@ abstract class DolphinScript extends Script implements DslScript {
 
     // ---- running tasks
 
-    /** Runs a task on the picked vehicles and returns its final state; an ERROR is reported, not thrown. */
-    CompletionState execute(Task task) {
-        if (task == null) {
-            throw new DslException('execute: the task is null (a variable that holds no task?)')
+    /**
+     * {@code execute task}, or {@code execute v1: t1, v2: t2, _: t3} (the entries run concurrently,
+     * each on its vehicle set). Returns the final state; an ERROR is reported, not thrown.
+     *
+     * <p>Groovy reads {@code execute v1: waitFor {c} then task} as the command chain
+     * {@code execute(v1: waitFor {c}).then(task)}, so execute may first get a half-built instruction
+     * (waitFor/until/during/watch); it then returns a {@link PendingExecute} whose
+     * {@code then}/{@code run}/{@code onError} completes it and runs everything (report Listings 2, 3).
+     */
+    Object execute(Object what) {
+        if (pendingExecute != null) {
+            throw pendingExecute.unfinished
         }
+        if (what instanceof Task) {
+            return executeTask((Task) what)
+        }
+        if (what instanceof Map) {
+            return executeEntries((Map<String, Object>) what)
+        }
+        if (what instanceof Half) {
+            return executeEntries(['_': what])
+        }
+        throw new DslException(what == null ? 'execute: the task is null (a variable that holds no task?)'
+                : "execute: expected a task or 'v1: task1, v2: task2' entries, but got ${what.getClass().simpleName}")
+    }
+
+    protected CompletionState executeTask(Task task) {
         CompletionState cs = env().run(task)
         if (cs.error) {
             context.taskFailed()
@@ -103,10 +128,13 @@ abstract class DolphinScript extends Script implements DslScript {
         cs
     }
 
-    /** {@code execute v1: t1, v2: t2, _: t3}: the entries run concurrently, each on its vehicle set. */
-    CompletionState execute(Map<String, Object> entries) {
+    protected Object executeEntries(Map<String, Object> entries) {
         if (entries.isEmpty()) {
             throw new DslException('execute: no tasks given')
+        }
+        if (entries.values().any { it instanceof Half }) {
+            pendingExecute = new PendingExecute(this, entries)
+            return pendingExecute
         }
         Task all = null
         entries.each { String key, Object value ->
@@ -116,7 +144,21 @@ abstract class DolphinScript extends Script implements DslScript {
             Task t = key == '_' ? (Task) value : new ResourceExplicitTask((Task) value, vehicleSet('execute', key))
             all = all == null ? t : all | t
         }
-        execute(all)
+        executeTask(all)
+    }
+
+    /** The chain of a {@link PendingExecute} has supplied the missing task. */
+    protected Object resumeExecute(Map<String, Object> entries) {
+        pendingExecute = null
+        executeEntries(entries)
+    }
+
+    /** Called by the engine when the script's code has run to its end. */
+    @Override
+    void scriptEnded() {
+        if (pendingExecute != null) {
+            throw pendingExecute.unfinished
+        }
     }
 
     protected NodeSet vehicleSet(String word, String key) {
@@ -139,7 +181,7 @@ abstract class DolphinScript extends Script implements DslScript {
     }
 
     Run until(Closure condition) {
-        new Run({ Task t -> new ConstrainedTask(t, new ClosureCondition(condition)) })
+        new Run('until { ... }', { Task t -> new ConstrainedTask(t, new ClosureCondition(condition)) })
     }
 
     /** {@code during { secs } run task}: the closure is evaluated once, now. */
@@ -148,7 +190,7 @@ abstract class DolphinScript extends Script implements DslScript {
     }
 
     Run during(Number seconds) {
-        new Run({ Task t -> new TimeConstrainedTask(t, seconds.doubleValue()) })
+        new Run("during ${seconds}", { Task t -> new TimeConstrainedTask(t, seconds.doubleValue()) })
     }
 
     Task idle(Number seconds) {
@@ -210,10 +252,10 @@ abstract class DolphinScript extends Script implements DslScript {
         context.signals().poll(tests.collectEntries { k, c -> [k, { v -> c.call(v) as boolean } as java.util.function.Predicate] })
     }
 
-    /** Asks for one line of input and evaluates it as Groovy, with this script's variables in scope. */
+    /** Asks for one line of input and evaluates it as script code, with this script's variables and words. */
     Object ask(String prompt) {
         String line = context.readInput(prompt)
-        line == null ? null : new GroovyShell(binding).evaluate(line)
+        line == null ? null : context.evaluate(line)
     }
 
     void halt(String why = 'halt') {
@@ -258,26 +300,53 @@ abstract class DolphinScript extends Script implements DslScript {
 
     // ---- the second halves of two-word instructions
 
+    /** The first half of a two-word instruction, waiting for its second: then, run or onError. */
+    interface Half {
+        /** How the first half reads, e.g. 'waitFor { ... }'. */
+        String getOpening()
+
+        /** The word that completes it. */
+        String getClosing()
+
+        Task complete(Object second)
+    }
+
     /** {@code waitFor {c} then task}. */
-    static final class Then {
+    static final class Then implements Half {
         private final Closure<Task> make
 
         Then(Closure<Task> make) { this.make = make }
 
         Task then(Task task) { make.call(task) }
+
+        String getOpening() { 'waitFor { ... }' }
+
+        String getClosing() { 'then' }
+
+        Task complete(Object second) { then((Task) second) }
     }
 
     /** {@code until {c} run task}, {@code during secs run task}. */
-    static final class Run {
+    static final class Run implements Half {
         private final Closure<Task> make
+        private final String opening
 
-        Run(Closure<Task> make) { this.make = make }
+        Run(String opening, Closure<Task> make) {
+            this.opening = opening
+            this.make = make
+        }
 
         Task run(Task task) { make.call(task) }
+
+        String getOpening() { opening }
+
+        String getClosing() { 'run' }
+
+        Task complete(Object second) { run((Task) second) }
     }
 
     /** {@code watch task onError { msg -> ... }}; the handler may call ignore() or propagate() (the default). */
-    static final class OnError {
+    static final class OnError implements Half {
         private final Task task
 
         OnError(Task task) { this.task = task }
@@ -291,6 +360,61 @@ abstract class DolphinScript extends Script implements DslScript {
                 c.call(message)
                 decision.decision
             } as ErrorHandler)
+        }
+
+        String getOpening() { "watch ${task.id}" }
+
+        String getClosing() { 'onError' }
+
+        Task complete(Object second) { onError((Closure) second) }
+    }
+
+    /**
+     * An execute waiting for the rest of its command chain: {@code execute v1: waitFor {c} then t1, v2: t2}
+     * is {@code execute(v1: waitFor {c}).then([v2: t2], t1)}. The chain's call completes the half-built
+     * entry, adds the entries that came with it and runs them all (or waits again for another half).
+     */
+    static final class PendingExecute {
+        private final DolphinScript script
+        private final Map<String, Object> entries
+        /** Thrown if the chain never completes; made here, so it carries the execute's line. */
+        final DslException unfinished
+
+        PendingExecute(DolphinScript script, Map<String, Object> entries) {
+            this.script = script
+            this.entries = new LinkedHashMap<>(entries)
+            def open = this.entries.find { it.value instanceof Half }
+            Half half = (Half) open.value
+            String what = open.key == '_' ? "'${half.opening}'" : "the entry '${open.key}: ${half.opening}'"
+            unfinished = new DslException("execute: ${what} has no '${half.closing}' part. Expected"
+                    + " '${half.opening} ${half.closing} ...' with '${half.closing}' on the same line")
+        }
+
+        Object then(Task task) { complete('then', task, [:]) }
+
+        Object then(Map<String, Object> more, Task task) { complete('then', task, more) }
+
+        Object run(Task task) { complete('run', task, [:]) }
+
+        Object run(Map<String, Object> more, Task task) { complete('run', task, more) }
+
+        Object onError(Closure handler) { complete('onError', handler, [:]) }
+
+        Object onError(Map<String, Object> more, Closure handler) { complete('onError', handler, more) }
+
+        private Object complete(String word, Object second, Map<String, Object> more) {
+            List<String> open = entries.findAll { it.value instanceof Half }.collect { it.key }
+            if (open.size() != 1) {
+                throw new DslException("execute: the entries ${open.collect { "'${it}:'" }.join(', ')} each lack their"
+                        + " second half; expected each in parentheses, e.g. v1: (waitFor { c } then task)")
+            }
+            Half half = (Half) entries[open[0]]
+            if (half.closing != word) {
+                throw new DslException("execute: '${half.opening}' is followed by '${word}'; expected '${half.closing}'")
+            }
+            entries[open[0]] = half.complete(second)
+            entries.putAll(more)
+            script.resumeExecute(entries)
         }
     }
 

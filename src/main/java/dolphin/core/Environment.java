@@ -64,18 +64,19 @@ public final class Environment {
 
     /**
      * Picks {@code count} free vehicles matching {@code filter}, retrying until {@code timeout}
-     * seconds have passed since the first attempt (one attempt when 0), sleeping max(1 s, timeout/10)
+     * seconds have passed since the first attempt (one attempt when 0), sleeping max(1 s, timeout/10), at most 60 s,
      * between attempts. Returns {@link NodeSet#EMPTY} when no attempt succeeds.
      */
     public NodeSet select(NodeFilter filter, int count, double timeout) throws InterruptedException {
         if (count <= 0) {
             throw new EnvironmentException("pick: the vehicle count must be positive, got " + count);
         }
-        if (timeout < 0) {
+        if (!(timeout >= 0)) { // NaN too: it would make the retry loop spin forever
             throw new EnvironmentException("pick: the timeout must not be negative, got " + timeout);
         }
         double first = clock.seconds();
-        Duration pauseBetween = Duration.ofNanos((long) (Math.max(1.0, 0.1 * timeout) * 1e9));
+        // The reference's max(1 s, timeout/10), capped at a minute so long (or infinite) timeouts still retry.
+        Duration pauseBetween = Duration.ofNanos((long) (Math.min(60.0, Math.max(1.0, 0.1 * timeout)) * 1e9));
         while (true) {
             NodeSet chosen = attempt(filter, count);
             if (chosen != NodeSet.EMPTY) {
@@ -163,10 +164,13 @@ public final class Environment {
                     }
                     return cs;
                 }
-                nextTick += TICK.toNanos();
                 long now = clock.nanoTime();
-                if (nextTick < now) {
-                    nextTick = now;
+                if (now >= nextTick) {
+                    // this step was the tick; a step made early by wake() keeps the tick it came before
+                    nextTick += TICK.toNanos();
+                    if (nextTick < now) {
+                        nextTick = now;
+                    }
                 }
                 wakeup.await(Duration.ofNanos(nextTick - now));
             }

@@ -56,6 +56,10 @@ public final class NodeSet implements Iterable<Node> {
     }
 
     public void removeAll(Iterable<? extends Node> others) {
+        if (others == this) {
+            clear();
+            return;
+        }
         others.forEach(this::remove);
     }
 

@@ -50,6 +50,6 @@ public record Position(double lat, double lon, double hae) {
 
     @Override
     public String toString() {
-        return String.format("(%.6f°, %.6f°, %.3f)", latitudeDegrees(), longitudeDegrees(), hae);
+        return String.format(java.util.Locale.ROOT, "(%.6f°, %.6f°, %.3f)", latitudeDegrees(), longitudeDegrees(), hae);
     }
 }

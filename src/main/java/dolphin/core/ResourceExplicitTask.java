@@ -16,13 +16,20 @@ public final class ResourceExplicitTask implements Task {
         return inner.getId() + vehicles;
     }
 
-    /** The task allocates from available ∩ vehicles; what it takes leaves the pool. */
+    /**
+     * The task allocates from available ∩ vehicles; afterwards the pool is (available − vehicles)
+     * followed by what the task left (reference A.4), so a task allocated next prefers vehicles
+     * outside this set.
+     */
     @Override
     public boolean allocate(NodeSet available, Allocation allocation) {
         NodeSet pool = NodeSet.intersection(available, vehicles);
-        NodeSet before = pool.copy();
+        NodeSet outside = NodeSet.difference(available, vehicles);
         boolean ok = inner.allocate(pool, allocation);
-        available.removeAll(NodeSet.difference(before, pool));
+        if (ok) {
+            available.clear();
+            NodeSet.union(outside, pool).forEach(available::add);
+        }
         return ok;
     }
 

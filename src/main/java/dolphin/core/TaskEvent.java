@@ -17,7 +17,7 @@ public record TaskEvent(Kind kind, Task task, List<String> vehicles, CompletionS
 
     @Override
     public String toString() {
-        return String.format("%.1fs %s %s%s%s", time, kind, task.getId(),
+        return String.format(java.util.Locale.ROOT, "%.1fs %s %s%s%s", time, kind, task.getId(),
                 vehicles.isEmpty() ? "" : " on " + String.join(",", vehicles),
                 kind == Kind.COMPLETED ? " " + state : "");
     }

@@ -67,8 +67,8 @@ public abstract class TaskExecutor {
         require(State.READY);
         startNanos = clock().nanoTime();
         state = State.EXECUTING;
-        onStart();
         emit(TaskEvent.Kind.STARTED);
+        onStart();
     }
 
     public final CompletionState step() {

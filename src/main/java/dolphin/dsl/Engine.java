@@ -168,9 +168,13 @@ public final class Engine implements AutoCloseable {
                 words.addAll(e.words(context));
             }
             context.setWords(words);
+            context.setEvaluator(code -> evaluate(compiler, loader, binding, context, code));
             ((DslScript) script).attach(context);
             Script toRun = script;
-            runWithCategories(categories(), toRun::run);
+            runWithCategories(categories(), () -> {
+                toRun.run();
+                ((DslScript) toRun).scriptEnded();
+            });
             result = run.stopRequested() ? stopped()
                     : context.taskErrors() > 0
                     ? new ScriptResult(ScriptResult.Outcome.TASK_ERROR, context.taskErrors() + " task(s) ended in ERROR", null)
@@ -196,6 +200,19 @@ public final class Engine implements AutoCloseable {
         }
         out.scriptFinished(file, result);
         run.finish(result);
+    }
+
+    /** An {@code ask} answer, compiled like a script (imports, words, units) and run with the script's variables. */
+    private static Object evaluate(ScriptCompiler compiler, GroovyClassLoader loader, Binding binding, ScriptContext context,
+                                   String code) {
+        Script answer;
+        try {
+            answer = compiler.parse(code, "answer.groovy", binding, loader);
+        } catch (ScriptCompiler.ScriptCompileException e) {
+            throw new DslException("ask: the answer '" + code + "' is not valid: " + e.errors.get(0).message());
+        }
+        ((DslScript) answer).attach(context);
+        return answer.run();
     }
 
     private static ScriptResult stopped() {

@@ -53,7 +53,7 @@ final class ExecuteKeyCheck extends CompilationCustomizer {
 
             @Override
             public void visitMethodCallExpression(MethodCallExpression call) {
-                if (call.isImplicitThis() && "execute".equals(call.getMethodAsString())) {
+                if (isExecute(call)) {
                     executes.add(call);
                 }
                 super.visitMethodCallExpression(call);
@@ -71,6 +71,18 @@ final class ExecuteKeyCheck extends CompilationCustomizer {
                 }
             }
         }
+    }
+
+    /**
+     * An execute call, or a later link of its command chain, which may carry more entries:
+     * {@code execute v1: waitFor {c} then t1, v2: t2} is {@code execute(v1: ...).then([v2: t2], t1)}.
+     */
+    private static boolean isExecute(MethodCallExpression call) {
+        if (call.isImplicitThis()) {
+            return "execute".equals(call.getMethodAsString());
+        }
+        return List.of("then", "run", "onError").contains(call.getMethodAsString())
+                && call.getObjectExpression() instanceof MethodCallExpression previous && isExecute(previous);
     }
 
     private static List<MapEntryExpression> namedArguments(Expression args) {

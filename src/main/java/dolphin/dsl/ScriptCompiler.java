@@ -38,7 +38,7 @@ final class ScriptCompiler {
         extensions.forEach(e -> e.addImports(imports));
         // ThreadInterrupt makes loops and closures check for interrupts, so stop() ends any script.
         config.addCompilationCustomizers(imports, new ASTTransformationCustomizer(ThreadInterrupt.class),
-                new ExecuteKeyCheck());
+                new ExecuteKeyCheck(), new SplitInstructionCheck());
         return config;
     }
 
@@ -79,8 +79,14 @@ final class ScriptCompiler {
     /** The class file name Groovy sees; stack frames carry it, so errors can be mapped back to the script. */
     static String codeName(String file) {
         String base = file.replace('\\', '/');
-        return base.substring(base.lastIndexOf('/') + 1);
+        base = base.substring(base.lastIndexOf('/') + 1);
+        // Groovy names the script class after the file; a primitive type's name (long.dolphin) cannot be one
+        int dot = base.lastIndexOf('.');
+        return PRIMITIVES.contains(dot < 0 ? base : base.substring(0, dot)) ? "_" + base : base;
     }
+
+    private static final java.util.Set<String> PRIMITIVES =
+            java.util.Set.of("boolean", "byte", "char", "short", "int", "long", "float", "double", "void");
 
     private static GroovyCodeSource codeSource(String source, String file) {
         GroovyCodeSource cs = new GroovyCodeSource(source, codeName(file), "/groovy/script");

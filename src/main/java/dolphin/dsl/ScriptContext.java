@@ -12,6 +12,9 @@ public final class ScriptContext {
     private final SignalSet signals = new SignalSet();
     private final Function<String, String> input;
     private List<Object> words = List.of();
+    private Function<String, Object> evaluator = code -> {
+        throw new IllegalStateException("no script is running");
+    };
     private int taskErrors;
 
     ScriptContext(Environment environment, Function<String, String> input) {
@@ -33,6 +36,15 @@ public final class ScriptContext {
 
     public String readInput(String prompt) {
         return input.apply(prompt);
+    }
+
+    /** Evaluates a line of input (an {@code ask} answer) as script code: the script's variables, words and units. */
+    public Object evaluate(String code) {
+        return evaluator.apply(code);
+    }
+
+    void setEvaluator(Function<String, Object> evaluator) {
+        this.evaluator = evaluator;
     }
 
     /** The platform words of this run, from the engine's extensions. */
