@@ -8,7 +8,8 @@ Tests only: an independent MAVLink implementation to check dolphin.mavlink.codec
       pseudo-random field values and prints one JSON object per line:
         {"kind": "v2" | "signed" | "v1", "variant", "name", "msgid", "version", "seq", "sysid",
          "compid", "hex", "fields", and for signed frames "linkId" and "timestamp"}
-      kind v2: MAVLink 2, unsigned, four variants per message (min, max, random-0, random-1);
+      kind v2: MAVLink 2, unsigned, four variants per message (min, max, random-0, random-1;
+               random-0 keeps uint64 values below 2^63, which the generated Java classes can write);
       kind signed: MAVLink 2 signed with the key, link id, and timestamps T, T+1, ... in order;
       kind v1: MAVLink 1 (pymavlink's force_mavlink1, which keeps the extension fields).
 
@@ -22,7 +23,7 @@ Tests only: an independent MAVLink implementation to check dolphin.mavlink.codec
 
 "fields" are pymavlink's to_dict() values (char arrays as strings, arrays as lists), except that
 non-finite floats, which JSON cannot carry, are the strings "NaN", "Infinity" and "-Infinity".
-Floats are float32 values, printed exactly (Python's shortest repr of the double).
+Floats are float32 values, printed exactly (Python's shortest repr of the double, -0.0 included).
 """
 
 import argparse
@@ -59,8 +60,7 @@ BY_NAME = {cls.msgname: cls for cls in mavlink.mavlink_map.values()}
 
 
 def f32(x):
-    v = struct.unpack("<f", struct.pack("<f", x))[0]
-    return 0.0 if v == 0 else v  # no -0.0: JSON readers (BigDecimal) lose its sign
+    return struct.unpack("<f", struct.pack("<f", x))[0]
 
 
 def fields_of(cls):
@@ -74,6 +74,8 @@ def fields_of(cls):
 def scalar(rng, ftype, variant):
     if ftype in INT_RANGES:
         lo, hi = INT_RANGES[ftype]
+        if ftype == "uint64_t" and variant == "random-0":
+            hi = 2**63 - 1  # what the generated Java classes can write (a Java long); other variants use all 64 bits
         if variant == "min":
             return lo
         if variant == "max":
@@ -100,12 +102,12 @@ def scalar(rng, ftype, variant):
         elif r < 0.22:
             value = rng.choice([math.inf, -math.inf])
         elif r < 0.27:
-            value = rng.choice([big, -big, FLOAT_MIN_SUBNORMAL, -FLOAT_MIN_SUBNORMAL])
+            value = rng.choice([big, -big, FLOAT_MIN_SUBNORMAL, -FLOAT_MIN_SUBNORMAL, -0.0])
         elif r < 0.6:
             value = rng.uniform(-1000.0, 1000.0)
         else:
             value = math.ldexp(rng.uniform(-1.0, 1.0), rng.randint(-60, 60))
-        return f32(value) if ftype == "float" else (value or 0.0)
+        return f32(value) if ftype == "float" else value
     raise ValueError("no generator for type " + ftype)
 
 

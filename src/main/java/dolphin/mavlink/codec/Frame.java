@@ -43,7 +43,9 @@ public record Frame(int version, int incompatFlags, int compatFlags, int seq, in
         if (!MessageTable.get().known(msgid)) {
             return null;
         }
-        MAVLinkPacket packet = new MAVLinkPacket(payload.length, version == 2);
+        // Unpacked as MAVLink 2 whatever the version: a MAVLink 1 frame that carries extension fields
+        // (pymavlink sends them) is read the way pymavlink and the C library read it; absent ones are zero.
+        MAVLinkPacket packet = new MAVLinkPacket(payload.length, true);
         packet.seq = seq;
         packet.sysid = sysid;
         packet.compid = compid;

@@ -40,6 +40,9 @@ public final class FrameWriter {
     }
 
     public byte[] write(MAVLinkMessage message) {
+        // The generated pack() leaves the extension fields out unless the message is marked MAVLink 2
+        // (new messages are not): this writer only writes MAVLink 2, so mark it.
+        message.isMavlink2 = true;
         MAVLinkPacket packet = message.pack();
         byte[] data = packet.payload.getData().array();
         int len = packet.payload.size();

@@ -44,6 +44,11 @@ public abstract class Link implements Closeable {
         return index;
     }
 
+    /** The local port of a socket link (useful when the URL asked for port 0); -1 for others. */
+    public int localPort() {
+        return -1;
+    }
+
     /** Whether each receive is a whole datagram (frames never span two). */
     public abstract boolean datagrams();
 

@@ -39,8 +39,10 @@ public record LinkUrl(Kind kind, String host, int port, String device, int baud,
         }
         String host = rest.substring(0, colon);
         int port = number(rest.substring(colon + 1), text, "port");
-        if (port < 1 || port > 65535) {
-            throw bad(text, "the port must be between 1 and 65535, got " + port);
+        int lowest = kind == Kind.UDPIN ? 0 : 1;
+        if (port < lowest || port > 65535) {
+            throw bad(text, "the port must be between " + lowest + " and 65535, got " + port
+                    + (kind == Kind.UDPIN ? " (0 listens on any free port)" : ""));
         }
         return new LinkUrl(kind, host, port, null, 0, text);
     }

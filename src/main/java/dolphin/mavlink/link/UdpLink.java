@@ -36,7 +36,7 @@ final class UdpLink extends Link {
         socket.setReceiveBufferSize(1 << 20);
     }
 
-    /** The local port (useful when the URL asked for port 0). */
+    @Override
     public int localPort() {
         return socket.getLocalPort();
     }

@@ -2,7 +2,6 @@ package dolphin.mavlink.codec
 
 import com.MAVLink.Messages.MAVLinkMessage
 import com.MAVLink.minimal.msg_heartbeat
-import groovy.json.JsonSlurper
 import spock.lang.Shared
 import spock.lang.Specification
 
@@ -75,12 +74,12 @@ class CodecInteropSpec extends Specification {
     // ---- the harness ---------------------------------------------------------------------------
 
     /** Runs the harness with the lines on stdin and returns its JSON lines; fails on error or timeout. */
-    static List<Map> harness(List<String> args, List<String> input = []) {
+    static List<Map> harness(List<?> args, List<String> input = []) {
         Path dir = Files.createTempDirectory('codec-interop')
         try {
             Path stdin = dir.resolve('stdin'), stdout = dir.resolve('stdout'), stderr = dir.resolve('stderr')
             Files.writeString(stdin, input.collect { it + '\n' }.join(''))
-            List<String> command = [PYTHON.toString(), SCRIPT.toString()] + args
+            List<String> command = ([PYTHON, SCRIPT] + args).collect { it.toString() }
             Process p = new ProcessBuilder(command).directory(PROJECT.toFile())
                     .redirectInput(stdin.toFile()).redirectOutput(stdout.toFile()).redirectError(stderr.toFile()).start()
             if (!p.waitFor(TIMEOUT_SECONDS, TimeUnit.SECONDS)) {
@@ -91,8 +90,7 @@ class CodecInteropSpec extends Specification {
             if (p.exitValue() != 0) {
                 throw new AssertionError("harness ${args[0]} exited with ${p.exitValue()}: ${Files.readString(stderr)}")
             }
-            def slurper = new JsonSlurper()
-            Files.readAllLines(stdout).findAll { it }.collect { slurper.parseText(it) as Map }
+            Files.readAllLines(stdout).findAll { it }.collect { Json.parse(it) as Map }
         } finally {
             dir.toFile().deleteDir()
         }
@@ -100,6 +98,149 @@ class CodecInteropSpec extends Specification {
 
     List<Map> ofKind(String kind) {
         encoded.findAll { it.kind == kind }
+    }
+
+    /**
+     * False for values the generated classes cannot pack: a uint64 of 2^63 or more (a negative Java
+     * long; MAVLinkPayload.putUnsignedLong throws). Only such values parse to BigInteger.
+     */
+    static boolean writable(Map frame) {
+        !(frame.fields as Map).values().flatten().any { it instanceof BigInteger }
+    }
+
+    /** The unsigned MAVLink 2 frames whose values our writer can write. */
+    List<Map> writableV2() {
+        ofKind('v2').findAll { writable(it) }
+    }
+
+    /**
+     * Just enough JSON for the harness's lines (groovy-json is not on the test classpath). Integers
+     * become Integer, Long or BigInteger; other numbers Double, parsed exactly (with the sign of -0.0).
+     */
+    static final class Json {
+        private static final java.util.regex.Pattern NUMBER = ~/-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?/
+        private final String s
+        private int i
+
+        private Json(String s) {
+            this.s = s
+        }
+
+        static Object parse(String text) {
+            def j = new Json(text)
+            def v = j.value()
+            j.ws()
+            if (j.i != text.length()) {
+                throw j.error('trailing characters')
+            }
+            v
+        }
+
+        private IllegalArgumentException error(String what) {
+            new IllegalArgumentException("JSON: $what at $i in: $s")
+        }
+
+        private void ws() {
+            while (i < s.length() && Character.isWhitespace(s.charAt(i))) {
+                i++
+            }
+        }
+
+        private boolean next(String c) {
+            ws()
+            if (s.startsWith(c, i)) {
+                i += c.length()
+                return true
+            }
+            false
+        }
+
+        private void expect(String c) {
+            if (!next(c)) {
+                throw error("expected '$c'")
+            }
+        }
+
+        private Object value() {
+            ws()
+            if (next('{')) {
+                Map<String, Object> m = [:]
+                if (!next('}')) {
+                    do {
+                        ws()
+                        String k = string()
+                        expect(':')
+                        m[k] = value()
+                    } while (next(','))
+                    expect('}')
+                }
+                return m
+            }
+            if (next('[')) {
+                List<Object> l = []
+                if (!next(']')) {
+                    do {
+                        l << value()
+                    } while (next(','))
+                    expect(']')
+                }
+                return l
+            }
+            if (s.startsWith('"', i)) {
+                return string()
+            }
+            if (next('true')) {
+                return true
+            }
+            if (next('false')) {
+                return false
+            }
+            if (next('null')) {
+                return null
+            }
+            def m = NUMBER.matcher(s).region(i, s.length())
+            if (!m.lookingAt()) {
+                throw error('unexpected character')
+            }
+            i = m.end()
+            String text = m.group()
+            if (m.group(2) != null || m.group(3) != null) {
+                return Double.parseDouble(text)
+            }
+            def big = new BigInteger(text)
+            big.bitLength() < 32 ? big.intValue() : big.bitLength() < 64 ? big.longValue() : big
+        }
+
+        private String string() {
+            if (!s.startsWith('"', i)) {
+                throw error('expected a string')
+            }
+            i++
+            def out = new StringBuilder()
+            while (true) {
+                if (i >= s.length()) {
+                    throw error('unterminated string')
+                }
+                char c = s.charAt(i++)
+                if (c == ('"' as char)) {
+                    return out.toString()
+                }
+                if (c != ('\\' as char)) {
+                    out.append(c)
+                    continue
+                }
+                char e = s.charAt(i++)
+                switch (e) {
+                    case ('u' as char): out.append((char) Integer.parseInt(s.substring(i, i + 4), 16)); i += 4; break
+                    case ('n' as char): out.append('\n'); break
+                    case ('t' as char): out.append('\t'); break
+                    case ('r' as char): out.append('\r'); break
+                    case ('b' as char): out.append('\b'); break
+                    case ('f' as char): out.append('\f'); break
+                    default: out.append(e) // " \ /
+                }
+            }
+        }
     }
 
     // ---- bytes and frames ----------------------------------------------------------------------
@@ -159,7 +300,7 @@ class CodecInteropSpec extends Specification {
             case 'NaN': return Double.NaN
             case 'Infinity': return Double.POSITIVE_INFINITY
             case '-Infinity': return Double.NEGATIVE_INFINITY
-            case Number: return Double.parseDouble(json.toString()) // exact: the JSON text is the double's shortest repr
+            case Number: return (json as Number).doubleValue()
             default: throw new AssertionError("not a float value: $json")
         }
     }
@@ -295,6 +436,11 @@ class CodecInteropSpec extends Specification {
         ofKind('v2').any { it.fields.values().any { it == 'NaN' || it instanceof List && 'NaN' in it } }
         ofKind('v2').any { it.fields.values().any { it == 'Infinity' || it == '-Infinity' } }
         ofKind('v2').any { f -> f.variant.startsWith('random') && f.fields.values().any { it instanceof Number && it < 0 } }
+
+        and: 'what our writer can write still covers every message, with at least the min and random-0 values'
+        writableV2().groupBy { it.name }.every { k, v -> v*.variant.containsAll(['min', 'random-0']) }
+        (writableV2()*.name as Set) == (MESSAGES as Set)
+        ofKind('signed').every { writable(it) }
     }
 
     def "the harness decodes its own frames to the values it encoded, and reports bad lines without stopping"() {
@@ -416,7 +562,19 @@ class CodecInteropSpec extends Specification {
         hex(ours) == frame.hex
 
         where:
-        frame << ofKind('v2')
+        frame << writableV2()
+    }
+
+    def "the generated #frame.name cannot pack pymavlink's #frame.variant values: a uint64 of 2^63 or more"() {
+        when: 'a limitation of the generated bindings, not of our codec; if it goes, write these frames above too'
+        writer(frame.sysid, frame.compid, null, 0).write(build(frame))
+
+        then:
+        IllegalArgumentException e = thrown()
+        e.message.contains('unsigned long')
+
+        where:
+        frame << ofKind('v2').findAll { !writable(it) }
     }
 
     def "our signed frame of #frame.name matches pymavlink's signed frame up to the timestamp"() {
@@ -438,7 +596,7 @@ class CodecInteropSpec extends Specification {
     /** pymavlink's view of our frames (unsigned, signed, signed checked with another key), computed once. */
     Map<String, Map> pymavlinkViewOfOurs() {
         if (decodedOurs == null) {
-            def frames = ofKind('v2')
+            def frames = writableV2()
             List<String> unsigned = frames.collect { hex(writer(it.sysid, it.compid, null, it.seq).write(build(it))) }
             List<String> signed = frames.collect { hex(writer(it.sysid, it.compid, KEY, it.seq).write(build(it))) }
             def withKey = harness(['decode', '--key', KEY_HEX], unsigned + signed)
@@ -457,7 +615,7 @@ class CodecInteropSpec extends Specification {
 
     def "our frames of #frame.name (#frame.variant) decode in pymavlink to the same fields, and the signed one verifies there"() {
         given:
-        int i = ofKind('v2').indexOf(frame)
+        int i = writableV2().indexOf(frame)
         Map unsigned = pymavlinkViewOfOurs()["unsigned $i".toString()]
         Map signed = pymavlinkViewOfOurs()["signed $i".toString()]
         Map otherKey = pymavlinkViewOfOurs()["other key $i".toString()]
@@ -488,6 +646,6 @@ class CodecInteropSpec extends Specification {
         !otherKey.sigOk
 
         where:
-        frame << ofKind('v2')
+        frame << writableV2()
     }
 }

@@ -1,0 +1,51 @@
+package dolphin.mavlink
+
+import dolphin.core.SystemClock
+import dolphin.mavlink.codec.SigningKey
+import dolphin.sim.FaultModel
+import dolphin.sim.SimFleet
+import dolphin.sim.SimOptions
+import dolphin.sim.VehicleKind
+import spock.util.concurrent.PollingConditions
+
+/**
+ * A ground station and simulated fleets on loopback UDP, sharing one clock that runs ten times
+ * faster than real time. Close it to stop everything and free the sockets.
+ */
+class FleetHarness implements AutoCloseable {
+    static final double SPEEDUP = 10
+
+    final SystemClock clock = new SystemClock(SPEEDUP)
+    final MAVLinkCommunications comms
+    final List<SimFleet> fleets = []
+
+    FleetHarness(MAVLinkConfig config = MAVLinkConfig.of('udpin:127.0.0.1:0')) {
+        comms = new MAVLinkCommunications(config, clock)
+        comms.start()
+    }
+
+    int port() { comms.links()[0].localPort() }
+
+    SimFleet fleet(int count, VehicleKind kind = VehicleKind.COPTER, int firstSysid = 1, SimOptions options = SimOptions.DEFAULT,
+                   FaultModel faults = FaultModel.NONE, SigningKey key = null) {
+        def config = SimFleet.Config.of(count, kind, new InetSocketAddress('127.0.0.1', port()))
+                .withFirstSysid(firstSysid).withOptions(options).withFaults(faults).withSigningKey(key)
+        def f = new SimFleet(config, clock)
+        f.start()
+        fleets << f
+        f
+    }
+
+    /** Waits up to {@code seconds} of real time for the condition (a closure with assertions). */
+    void eventually(double seconds = 10, Closure condition) {
+        new PollingConditions(timeout: seconds, delay: 0.02).eventually(condition)
+    }
+
+    MAVLinkNode node(String id) { comms.node(id) }
+
+    @Override
+    void close() {
+        fleets.each { it.close() }
+        comms.close()
+    }
+}
