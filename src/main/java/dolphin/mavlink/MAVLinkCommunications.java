@@ -1,5 +1,6 @@
 package dolphin.mavlink;
 
+import dolphin.mavlink.codec.MessageTable;
 import com.MAVLink.Messages.MAVLinkMessage;
 import com.MAVLink.common.msg_command_ack;
 import com.MAVLink.common.msg_command_long;
@@ -224,7 +225,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
                 observeOutgoing(link, frame);
             }
         } catch (IOException e) {
-            LOG.warn("sending {} on {} to {} failed: {}", message.name(), link, to, e.getMessage());
+            LOG.warn("sending {} on {} to {} failed: {}", MessageTable.get().name(message.msgid), link, to, e.getMessage());
         }
     }
 

@@ -1,5 +1,6 @@
 package dolphin.mavlink;
 
+import dolphin.mavlink.codec.MessageTable;
 import com.MAVLink.Messages.MAVLinkMessage;
 import dolphin.core.Node;
 import dolphin.core.NodeSet;
@@ -73,7 +74,7 @@ public final class MAVLinkPlatform implements Platform, DslExtension {
                     throw new DslException("sendMessage: vehicle " + n.getId() + " is not a MAVLink vehicle");
                 }
                 node.send(message);
-                context.listener().message("sent " + message.name() + " to vehicle " + node.getId());
+                context.listener().message("sent " + MessageTable.get().name(message.msgid) + " to vehicle " + node.getId());
             }
         }
     }

@@ -1,5 +1,6 @@
 package dolphin.mavlink;
 
+import dolphin.mavlink.codec.MessageTable;
 import com.MAVLink.Messages.MAVLinkMessage;
 import java.util.List;
 import java.util.Map;
@@ -34,7 +35,7 @@ public final class MessageHandler {
             try {
                 c.accept(node, message);
             } catch (RuntimeException e) {
-                LOG.warn("handling {} from vehicle {} failed", message.name(), node.getId(), e);
+                LOG.warn("handling {} from vehicle {} failed", MessageTable.get().name(message.msgid), node.getId(), e);
             }
         }
         return consumers.size();
