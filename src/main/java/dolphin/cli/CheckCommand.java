@@ -2,6 +2,7 @@ package dolphin.cli;
 
 import dolphin.dsl.Engine;
 import dolphin.dsl.ScriptError;
+import dolphin.mavlink.MAVLinkLanguage;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
@@ -31,6 +32,7 @@ final class CheckCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         Engine engine = new Engine(new DryRunPlatform());
+        engine.addExtension(new MAVLinkLanguage());
         int code = 0;
         for (Path script : scripts) {
             String source;

@@ -1,0 +1,72 @@
+package dolphin.cli;
+
+import dolphin.core.Position;
+import dolphin.mavlink.codec.SigningKey;
+import dolphin.mavlink.link.LinkUrl;
+import dolphin.sim.VehicleKind;
+import java.io.IOException;
+import java.nio.file.Path;
+import picocli.CommandLine.ITypeConverter;
+import picocli.CommandLine.TypeConversionException;
+
+/** picocli converters: a bad value is a usage error (exit 2) with the reason. */
+final class Converters {
+
+    private Converters() {
+    }
+
+    static final class Link implements ITypeConverter<LinkUrl> {
+        @Override
+        public LinkUrl convert(String value) {
+            try {
+                return LinkUrl.parse(value);
+            } catch (IllegalArgumentException e) {
+                throw new TypeConversionException(e.getMessage());
+            }
+        }
+    }
+
+    static final class Kind implements ITypeConverter<VehicleKind> {
+        @Override
+        public VehicleKind convert(String value) {
+            try {
+                return VehicleKind.parse(value);
+            } catch (IllegalArgumentException e) {
+                throw new TypeConversionException(e.getMessage());
+            }
+        }
+    }
+
+    /** {@code lat,lon,alt} in degrees and metres above mean sea level. */
+    static final class Home implements ITypeConverter<Position> {
+        @Override
+        public Position convert(String value) {
+            String[] p = value.split(",");
+            try {
+                if (p.length != 3) {
+                    throw new NumberFormatException();
+                }
+                double lat = Double.parseDouble(p[0].strip());
+                double lon = Double.parseDouble(p[1].strip());
+                if (Math.abs(lat) > 90 || Math.abs(lon) > 180) {
+                    throw new TypeConversionException("home '" + value + "': latitude must be in [-90, 90], longitude in [-180, 180]");
+                }
+                return Position.fromDegrees(lat, lon, Double.parseDouble(p[2].strip()));
+            } catch (NumberFormatException e) {
+                throw new TypeConversionException("home '" + value + "': expected LAT,LON,ALT, e.g. 40.444233,-7.375234,820");
+            }
+        }
+    }
+
+    /** A file with 64 hex digits or a passphrase. */
+    static final class Key implements ITypeConverter<SigningKey> {
+        @Override
+        public SigningKey convert(String value) {
+            try {
+                return SigningKey.fromFile(Path.of(value));
+            } catch (IOException e) {
+                throw new TypeConversionException("cannot read the signing key file " + value + ": " + e.getMessage());
+            }
+        }
+    }
+}

@@ -1,0 +1,107 @@
+package dolphin.cli;
+
+import dolphin.core.Position;
+import dolphin.core.SystemClock;
+import dolphin.mavlink.codec.SigningKey;
+import dolphin.mavlink.link.LinkUrl;
+import dolphin.sim.SimFleet;
+import dolphin.sim.SimOptions;
+import dolphin.sim.VehicleKind;
+import java.io.PrintWriter;
+import java.net.InetSocketAddress;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
+
+/** {@code dolphin sim}: a fleet of simulated ArduPilot vehicles, for a separate {@code dolphin run} or another ground station. */
+@Command(name = "sim", mixinStandardHelpOptions = true,
+        description = "Simulates ArduPilot vehicles that send MAVLink 2 over UDP to a ground station, like SITL with "
+                + "--serial0 udpclient:HOST:PORT. Runs until interrupted or for --duration.")
+final class SimCommand implements Callable<Integer> {
+
+    @Spec
+    private CommandSpec spec;
+
+    @Option(names = "--count", paramLabel = "N", defaultValue = "1", description = "How many vehicles (default: ${DEFAULT-VALUE}).")
+    private int count;
+
+    @Option(names = "--link", paramLabel = "URL", converter = Converters.Link.class,
+            description = "Where the vehicles send: udpout:HOST:PORT, repeatable (vehicles are spread over the links). "
+                    + "Default: udpout:127.0.0.1:14559.")
+    private List<LinkUrl> links = new ArrayList<>();
+
+    @Option(names = "--type", paramLabel = "TYPE", converter = Converters.Kind.class, defaultValue = "copter",
+            description = "copter or plane (default: ${DEFAULT-VALUE}).")
+    private VehicleKind type;
+
+    @Option(names = "--home", paramLabel = "LAT,LON,ALT", converter = Converters.Home.class,
+            description = "Home of the first vehicle, the others 10 m apart to the east (default: 40.444233,-7.375234,820).")
+    private Position home;
+
+    @Option(names = "--first-sysid", paramLabel = "N", defaultValue = "1", description = "System id of the first vehicle.")
+    private int firstSysid;
+
+    @Option(names = "--speedup", paramLabel = "X", defaultValue = "1", description = "Run X times faster than real time.")
+    private double speedup;
+
+    @Option(names = "--warmup", paramLabel = "SECONDS", defaultValue = "0",
+            description = "Refuse to arm (PreArm) this long after start, as ArduPilot does while its EKF settles.")
+    private double warmup;
+
+    @Option(names = "--drain", paramLabel = "PERCENT_PER_MINUTE", defaultValue = "14",
+            description = "Battery use while armed (default: ${DEFAULT-VALUE}, about ArduCopter SITL's).")
+    private double drain;
+
+    @Option(names = "--duration", paramLabel = "SECONDS", description = "Stop after this much simulated time.")
+    private Double duration;
+
+    @Option(names = "--signing-key", paramLabel = "FILE", converter = Converters.Key.class,
+            description = "Sign frames and accept only signed ones: a file with 64 hex digits or a passphrase.")
+    private SigningKey key;
+
+    @Override
+    public Integer call() throws Exception {
+        if (count < 1) {
+            throw new ParameterException(spec.commandLine(), "--count must be at least 1, got " + count);
+        }
+        if (!(speedup > 0) || Double.isInfinite(speedup)) {
+            throw new ParameterException(spec.commandLine(), "--speedup must be a positive number, got " + speedup);
+        }
+        List<InetSocketAddress> gcs = new ArrayList<>();
+        for (LinkUrl url : links.isEmpty() ? List.of(LinkUrl.parse("udpout:127.0.0.1:14559")) : links) {
+            if (url.kind() != LinkUrl.Kind.UDPOUT) {
+                throw new ParameterException(spec.commandLine(), "--link for sim must be udpout:HOST:PORT, got " + url);
+            }
+            gcs.add(url.address());
+        }
+        SimFleet.Config base = SimFleet.Config.of(count, type, gcs.get(0));
+        SimFleet.Config config;
+        try {
+            config = new SimFleet.Config(count, type, home != null ? home : base.home(), base.spacingMetres(), firstSysid, gcs,
+                    SimOptions.DEFAULT.withWarmup(warmup).withDrain(drain), key, base.faults());
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
+        SystemClock clock = new SystemClock(speedup);
+        PrintWriter out = spec.commandLine().getOut();
+        try (SimFleet fleet = new SimFleet(config, clock)) {
+            fleet.start();
+            out.printf("simulating %d %s(s), system ids %d..%d, sending to %s%s%n", count, type.name().toLowerCase(java.util.Locale.ROOT),
+                    firstSysid, firstSysid + count - 1, gcs, speedup != 1 ? " at " + speedup + "x" : "");
+            out.flush();
+            Runtime.getRuntime().addShutdownHook(new Thread(fleet::close));
+            if (duration == null) {
+                Thread.currentThread().join();
+            } else {
+                clock.sleep(Duration.ofNanos((long) (duration * 1e9)));
+            }
+        }
+        return 0;
+    }
+}

@@ -1,0 +1,90 @@
+package dolphin.cli
+
+import spock.lang.Specification
+import spock.lang.Timeout
+
+@Timeout(60)
+class RunCommandSpec extends Specification {
+
+    static final String EXAMPLE = 'dsl-examples/battery-and-position.dolphin'
+
+    Map dolphin(String... args) {
+        def out = new StringWriter()
+        def err = new StringWriter()
+        int code = Main.commandLine(new PrintWriter(out), new PrintWriter(err)).execute(args)
+        [code: code, out: out.toString(), err: err.toString()]
+    }
+
+    static int freePort() {
+        new DatagramSocket(0).withCloseable { it.localPort }
+    }
+
+    def "the example runs against the in-process simulated fleet"() {
+        when:
+        def r = dolphin('run', EXAMPLE, '--sim', '2', '--speedup', '5')
+
+        then:
+        r.code == 0
+        r.out =~ /vehicle \{ 1 \}: battery 100 %, position \(40\.444233°, -7\.375234°, 820\.000\)/
+        r.out =~ /vehicle \{ 2 \}: battery 100 %, position \(40\.444233°, -7\.375116°, 820\.000\)/
+        r.out.contains("${EXAMPLE}: completed")
+    }
+
+    def "dolphin run talks to vehicles that dolphin sim started separately"() {
+        given:
+        int port = freePort()
+        def sim = Thread.start {
+            dolphin('sim', '--count', '2', '--link', "udpout:127.0.0.1:${port}", '--speedup', '5', '--duration', '60')
+        }
+
+        when:
+        def r = dolphin('run', EXAMPLE, '--link', "udpin:127.0.0.1:${port}")
+
+        then:
+        r.code == 0
+        r.out.contains('vehicle { 1 }: battery 100 %')
+        r.out.contains('vehicle { 2 }: battery 100 %')
+
+        cleanup:
+        sim?.interrupt()
+    }
+
+    def "a script error is reported with file:line and exit 1"() {
+        given:
+        def script = File.createTempFile('bad', '.dolphin')
+        script.text = 'v = pick { timeout 5 }\ntakeoff v\n'
+
+        when:
+        def r = dolphin('run', script.path, '--sim', '1', '--speedup', '5')
+
+        then:
+        r.code == 1
+        r.err.contains("${script.path}:2: unknown command 'takeoff'")
+
+        cleanup:
+        script?.delete()
+    }
+
+    def "bad command lines are usage errors: a message and exit 2"() {
+        when:
+        def r = dolphin(args as String[])
+
+        then:
+        r.code == 2
+        r.err.contains(message)
+
+        where:
+        args                                                       | message
+        ['run', EXAMPLE, '--frobnicate']                           | "Unknown option: '--frobnicate'"
+        ['run']                                                    | "Missing required parameter: 'SCRIPT'"
+        ['run', 'no/such.dolphin']                                 | 'cannot read no/such.dolphin: no such file'
+        ['run', EXAMPLE, '--link', 'udpin:localhost']              | "bad connection string 'udpin:localhost': expected HOST:PORT"
+        ['run', EXAMPLE, '--link', 'carrier-pigeon:1']             | "unknown link kind 'carrier-pigeon'"
+        ['run', EXAMPLE, '--link', 'udpin:0.0.0.0:99999']          | 'the port must be between 0 and 65535'
+        ['run', EXAMPLE, '--speedup', '10']                        | '--speedup needs --sim'
+        ['run', EXAMPLE, '--sim', '1', '--sim-type', 'submarine']  | "unknown vehicle type 'submarine'"
+        ['sim', '--count', '0']                                    | '--count must be at least 1'
+        ['sim', '--link', 'udpin:0.0.0.0:14559']                   | '--link for sim must be udpout:HOST:PORT'
+        ['sim', '--home', '95,0,0']                                | 'latitude must be in [-90, 90]'
+    }
+}
