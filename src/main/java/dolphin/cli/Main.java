@@ -25,7 +25,20 @@ public final class Main implements Runnable {
     }
 
     public static void main(String[] args) {
+        quietLogs();
         System.exit(commandLine(new PrintWriter(System.out, true), new PrintWriter(System.err, true)).execute(args));
+    }
+
+    /** Short log lines on standard error (link events, discovered vehicles), unless the user configured logging. */
+    private static void quietLogs() {
+        String prefix = "org.slf4j.simpleLogger.";
+        java.util.Map.of("showThreadName", "false", "showLogName", "false", "showDateTime", "true",
+                "dateTimeFormat", "HH:mm:ss", "levelInBrackets", "true")
+                .forEach((k, v) -> {
+                    if (System.getProperty(prefix + k) == null) {
+                        System.setProperty(prefix + k, v);
+                    }
+                });
     }
 
     /** The command line with its output streams, so tests can run it in process. */
