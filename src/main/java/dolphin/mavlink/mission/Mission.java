@@ -1,0 +1,133 @@
+package dolphin.mavlink.mission;
+
+import com.MAVLink.Messages.MAVLinkMessage;
+import com.MAVLink.enums.MAV_CMD;
+import dolphin.core.EnvironmentException;
+import dolphin.core.NodeFilter;
+import dolphin.core.PlatformTask;
+import dolphin.core.PlatformTaskExecutor;
+import dolphin.core.Position;
+import dolphin.mavlink.MAVLinkNode;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * A MAVLink mission as a Dolphin task (report Listing 5): the commands of a {@code mission { }}
+ * block, turned into the items a vehicle flies. Item 0 is always the home placeholder, which
+ * ArduPilot overwrites with its home; real items start at 1 (design §5). The same Mission object
+ * may fly on several vehicles at once (E-3): it holds no per-flight state.
+ */
+public final class Mission extends PlatformTask {
+
+    private final Position home;
+    private final List<DroneCommand> droneCommands = new ArrayList<>();
+
+    /** @param home the home the script named, or null */
+    public Mission(String name, Position home, List<DroneCommand> commands) {
+        super(name);
+        this.home = home;
+        setDroneCommands(commands);
+    }
+
+    public void setDroneCommands(List<DroneCommand> commands) {
+        droneCommands.clear();
+        droneCommands.addAll(commands);
+    }
+
+    public List<DroneCommand> getCommandList() {
+        return List.copyOf(droneCommands);
+    }
+
+    /** The home the script named ({@code home ...}), or null. */
+    public Position getHome() {
+        return home;
+    }
+
+    /** The number of items, the home placeholder included: what MISSION_COUNT says. */
+    public int missionPoints() {
+        return 1 + droneCommands.stream().filter(c -> c instanceof MissionPoint).mapToInt(c -> ((MissionPoint) c).messageCount()).sum();
+    }
+
+    /**
+     * The items to upload: item 0 at the mission's home, else the vehicle's home (may be null when
+     * building without a vehicle), else the first position in the mission; then each point's items.
+     */
+    public List<MissionItem> items(Position vehicleHome) {
+        List<MissionItem> items = new ArrayList<>();
+        items.add(MissionItem.at(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, placeholderHome(vehicleHome), 0, 0, 0, 0));
+        int seq = 1;
+        for (DroneCommand c : droneCommands) {
+            if (c instanceof MissionPoint p) {
+                List<MissionItem> emitted = p.items(seq);
+                items.addAll(emitted);
+                seq += emitted.size();
+            }
+        }
+        return items;
+    }
+
+    private Position placeholderHome(Position vehicleHome) {
+        if (home != null) {
+            return home;
+        }
+        if (vehicleHome != null) {
+            return vehicleHome;
+        }
+        for (DroneCommand c : droneCommands) {
+            if (c instanceof MissionPoint p && p.getPosition() != null) {
+                return p.getPosition();
+            }
+        }
+        throw new EnvironmentException("mission " + getId() + " has no home: name one with 'home', or give it a position");
+    }
+
+    /** The MISSION_ITEM_INT messages for a vehicle (report's toMissionMessages). */
+    public List<MAVLinkMessage> toMissionMessages(MAVLinkNode dest) {
+        List<MAVLinkMessage> out = new ArrayList<>();
+        for (MissionItem i : items(dest.getHome())) {
+            out.add(i.toMessage(dest.getMavLinkId(), dest.getAutopilotCompid()));
+        }
+        return out;
+    }
+
+    /**
+     * The commands that are not mission items, keyed by item seq (F-3): key 0 for those before the
+     * first mission point (sent before the upload), key k for those after the point whose last
+     * item is k (sent when the vehicle reports item k reached).
+     */
+    public Map<Integer, List<DroneCommand>> nonMissionCommands() {
+        Map<Integer, List<DroneCommand>> byKey = new LinkedHashMap<>();
+        int lastSeq = 0;
+        for (DroneCommand c : droneCommands) {
+            if (c instanceof MissionPoint p) {
+                lastSeq += p.messageCount();
+            } else {
+                byKey.computeIfAbsent(c.executeOnStartup() ? 0 : lastSeq, k -> new ArrayList<>()).add(c);
+            }
+        }
+        return byKey;
+    }
+
+    /** The report's droneCommandsToMissionItem: the non-mission commands' messages, keyed by item seq. */
+    public Map<Integer, List<MAVLinkMessage>> droneCommandsToMissionItem(MAVLinkNode dest) {
+        Map<Integer, List<MAVLinkMessage>> out = new LinkedHashMap<>();
+        nonMissionCommands().forEach((k, cmds) -> cmds.forEach(c -> out.computeIfAbsent(k, x -> new ArrayList<>())
+                .addAll(c.toMavLinkMessage(dest))));
+        return out;
+    }
+
+    /** One vehicle of any type. */
+    @Override
+    public List<NodeFilter> getRequirements() {
+        return List.of(NodeFilter.ANY);
+    }
+
+    /** Flying missions (upload, arm, start, follow) is the MissionExecutor's job, which is not built yet. */
+    @Override
+    public PlatformTaskExecutor getExecutor() {
+        throw new EnvironmentException("mission " + getId() + " cannot fly yet: this build can only build missions"
+                + " (dolphin mission SCRIPT); the MissionExecutor that uploads and flies them is not there yet");
+    }
+}
