@@ -3,6 +3,7 @@ package dolphin.cli;
 import dolphin.core.Position;
 import dolphin.mavlink.codec.SigningKey;
 import dolphin.mavlink.link.LinkUrl;
+import dolphin.mavlink.mission.MissionFormat;
 import dolphin.sim.VehicleKind;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -31,6 +32,18 @@ final class Converters {
         public VehicleKind convert(String value) {
             try {
                 return VehicleKind.parse(value);
+            } catch (IllegalArgumentException e) {
+                throw new TypeConversionException(e.getMessage());
+            }
+        }
+    }
+
+    /** A mission file format: plan, waypoints or geojson. */
+    static final class Format implements ITypeConverter<MissionFormat> {
+        @Override
+        public MissionFormat convert(String value) {
+            try {
+                return MissionFormat.parse(value);
             } catch (IllegalArgumentException e) {
                 throw new TypeConversionException(e.getMessage());
             }

@@ -10,7 +10,8 @@ import picocli.CommandLine.Spec;
 /** The {@code dolphin} command. Exit codes: 0 done, 1 script or task error, 2 usage error. */
 @Command(name = "dolphin", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         description = "Runs Dolphin scripts that orchestrate vehicles.",
-        subcommands = {RunCommand.class, SimCommand.class, CheckCommand.class, CommandLine.HelpCommand.class})
+        subcommands = {RunCommand.class, SimCommand.class, CheckCommand.class, MissionCommand.class,
+                CommandLine.HelpCommand.class})
 public final class Main implements Runnable {
 
     public static final int USAGE = 2;

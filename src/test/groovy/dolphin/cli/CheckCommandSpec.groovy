@@ -65,6 +65,6 @@ class CheckCommandSpec extends Specification {
 
         then:
         code == 2
-        err.toString().contains('Missing command: expected one of run, sim, check, help')
+        err.toString().contains('Missing command: expected one of run, sim, check, mission, help')
     }
 }

@@ -1,0 +1,235 @@
+package dolphin.cli;
+
+import dolphin.core.EnvironmentException;
+import dolphin.core.ManualClock;
+import dolphin.dsl.Engine;
+import dolphin.dsl.EngineListener;
+import dolphin.dsl.ScriptResult;
+import dolphin.mavlink.MAVLinkLanguage;
+import dolphin.mavlink.dsl.MissionRecorder;
+import dolphin.mavlink.mission.Mission;
+import dolphin.mavlink.mission.MissionFormat;
+import dolphin.mavlink.mission.MissionItem;
+import dolphin.mavlink.mission.MissionTable;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.HashSet;
+import java.util.IdentityHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code dolphin mission SCRIPT [--export FORMAT] [--out DIR]}: builds a script's missions without
+ * vehicles (a dry run) and prints each as a table, or writes one file per mission.
+ *
+ * <p>The dry run runs the script with the MAVLink language on a platform without vehicles, on a
+ * virtual clock that jumps over waits (a {@code pick { timeout 30 }} takes no real time), and records
+ * every Mission that a {@code mission { }} block builds. With no vehicles, the script ends at its
+ * first {@code pick} (it halts there): the missions it defines before are the ones shown, which suits
+ * scripts that define their missions first and fly them afterwards. Item 0 is the mission's home,
+ * or its first position when it names none (there is no vehicle home).
+ */
+@Command(name = "mission", mixinStandardHelpOptions = true,
+        description = {"Builds the missions of a script without vehicles (a dry run) and prints each as a table of its "
+                + "mission items, or writes them to files with --export.",
+                "The script runs without vehicles, on a clock that does not wait, until its end or its first pick "
+                        + "(which finds no vehicles): define missions before picking vehicles.",
+                "Exit 0 when done, 1 on a script error, 2 on a usage error."})
+final class MissionCommand implements Callable<Integer> {
+
+    @Spec
+    private CommandSpec spec;
+
+    @Parameters(paramLabel = "SCRIPT", description = "The .dolphin script whose missions to build.")
+    private Path script;
+
+    @Option(names = "--export", paramLabel = "FORMAT", converter = Converters.Format.class,
+            description = "Write each mission to a file instead of printing it: plan (QGroundControl), waypoints "
+                    + "(QGC WPL 110: Mission Planner, MAVProxy) or geojson (maps). The file is named after the mission.")
+    private MissionFormat format;
+
+    @Option(names = "--out", paramLabel = "DIR",
+            description = "With --export: the directory to write to, created if missing (default: the current directory).")
+    private Path out;
+
+    @Override
+    public Integer call() throws InterruptedException {
+        PrintWriter stdout = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        if (out != null && format == null) {
+            throw new ParameterException(spec.commandLine(), "--out needs --export: without it the missions are printed");
+        }
+        String source;
+        try {
+            source = Files.readString(script, StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            err.println("dolphin mission: cannot read " + script + ": " + (Files.exists(script) ? e.getMessage() : "no such file"));
+            return Main.USAGE;
+        }
+        Path dir = null;
+        if (format != null) {
+            dir = outputDirectory(err);
+            if (dir == null) {
+                return Main.USAGE;
+            }
+        }
+
+        List<Mission> missions = dryRun(source, err);
+        if (missions == null) {
+            return 1;
+        }
+        if (missions.isEmpty()) {
+            err.println("dolphin mission: " + script + " builds no mission (no mission { } ran before the script ended"
+                    + " or reached its first pick)");
+            err.flush();
+            return 0;
+        }
+        List<List<MissionItem>> itemLists = new ArrayList<>();
+        for (Mission m : missions) {
+            try {
+                itemLists.add(m.items(null));
+            } catch (EnvironmentException e) {
+                err.println("dolphin mission: " + script + ": " + e.getMessage());
+                return 1;
+            }
+        }
+        if (format == null) {
+            for (int i = 0; i < missions.size(); i++) {
+                Mission m = missions.get(i);
+                List<MissionItem> items = itemLists.get(i);
+                if (i > 0) {
+                    stdout.println();
+                }
+                stdout.println("mission " + m.getId() + ": " + items.size() + " items (item 0 is the home"
+                        + (m.getHome() == null ? ": the first position, the mission names none" : "") + ")");
+                stdout.print(MissionTable.format(items));
+            }
+            stdout.flush();
+            return 0;
+        }
+        Set<String> taken = new HashSet<>();
+        for (int i = 0; i < missions.size(); i++) {
+            Mission m = missions.get(i);
+            Path file = dir.resolve(uniqueName(fileName(m.getId()), format.extension(), taken));
+            try {
+                Files.writeString(file, format.write(m.getId(), itemLists.get(i)), StandardCharsets.UTF_8);
+            } catch (IOException e) {
+                err.println("dolphin mission: cannot write " + file + ": " + e.getMessage());
+                return Main.USAGE;
+            }
+            stdout.println(file);
+        }
+        stdout.flush();
+        return 0;
+    }
+
+    /** The --out directory (created if missing), or null after saying why it cannot be written to. */
+    private Path outputDirectory(PrintWriter err) {
+        Path dir = out == null ? Path.of("") : out;
+        String shown = out == null ? "the current directory" : out.toString();
+        try {
+            Files.createDirectories(dir.toAbsolutePath());
+        } catch (IOException e) {
+            err.println("dolphin mission: cannot create the directory " + shown + ": " + describe(e));
+            return null;
+        }
+        if (!Files.isWritable(dir.toAbsolutePath())) {
+            err.println("dolphin mission: cannot write to " + shown + ": permission denied");
+            return null;
+        }
+        return dir;
+    }
+
+    /**
+     * Runs the script without vehicles and returns the missions it built, in order (each once), or
+     * null after printing the script's error (file:line).
+     */
+    private List<Mission> dryRun(String source, PrintWriter err) throws InterruptedException {
+        Set<Mission> seen = Collections.newSetFromMap(new IdentityHashMap<>());
+        List<Mission> missions = Collections.synchronizedList(new ArrayList<>());
+        Engine engine = new Engine(new DryRunPlatform(), ManualClock.autoAdvancing());
+        engine.addExtension(new MAVLinkLanguage());
+        engine.addExtension(new MissionRecorder(m -> {
+            synchronized (seen) {
+                if (seen.add(m)) {
+                    missions.add(m);
+                }
+            }
+        }));
+        List<String> messages = Collections.synchronizedList(new ArrayList<>());
+        engine.addListener(new EngineListener() {
+            @Override
+            public void message(String text) {
+                messages.add(text);
+            }
+        });
+        ScriptResult result;
+        try (engine) {
+            result = engine.run(source, script.toString()).await();
+        }
+        String error = result.error() == null ? null : result.error().toString();
+        synchronized (messages) {
+            // The script's own messages (and the engine's notes), on standard error: standard output is the tables.
+            messages.stream().filter(m -> !m.equals(error)).forEach(err::println);
+        }
+        switch (result.outcome()) {
+            case SCRIPT_ERROR -> {
+                err.println(error != null ? error : script + ": " + result.message());
+                err.flush();
+                return null;
+            }
+            case TASK_ERROR, STOPPED -> {
+                err.println("dolphin mission: " + script + ": " + result.message());
+                err.flush();
+                return null;
+            }
+            case HALTED -> err.println("dolphin mission: the dry run stops there: it has no vehicles to pick; "
+                    + missions.size() + " mission(s) built before it");
+            default -> {
+            }
+        }
+        err.flush();
+        synchronized (missions) {
+            return List.copyOf(missions);
+        }
+    }
+
+    /** A mission's name as a file name: letters, digits, '.', '_' and '-' kept, runs of others as '_'. */
+    static String fileName(String missionName) {
+        String s = missionName == null ? "" : missionName.strip().replaceAll("[^A-Za-z0-9._-]+", "_");
+        s = s.replaceAll("^[._]+", "").replaceAll("_+$", "");
+        return s.isEmpty() ? "mission" : s;
+    }
+
+    /** base + extension, or base-2, base-3, ... when taken (case-insensitively: some file systems ignore case). */
+    static String uniqueName(String base, String extension, Set<String> taken) {
+        String name = base + extension;
+        for (int n = 2; !taken.add(name.toLowerCase(Locale.ROOT)); n++) {
+            name = base + "-" + n + extension;
+        }
+        return name;
+    }
+
+    private static String describe(IOException e) {
+        if (e instanceof java.nio.file.FileAlreadyExistsException) {
+            return "a file of that name is in the way";
+        }
+        if (e instanceof java.nio.file.AccessDeniedException) {
+            return "permission denied";
+        }
+        return e.getMessage();
+    }
+}
