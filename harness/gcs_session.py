@@ -18,14 +18,21 @@ dolphin.mavlink against.
         4. sets GUIDED (copter custom mode 4) with MAV_CMD_DO_SET_MODE and waits for a heartbeat,
            received after the COMMAND_ACK, that shows it.
       Prints one JSON document with everything observed (see `report`); a step that times out is
-      listed in "errors" and the session goes on, so the caller sees all it can. Exit status 0
+      listed in "errors" and the session goes on, so the caller sees all it can; "mav_loss" is
+      pymavlink's count of frames missing from the vehicles' sequence numbers. Exit status 0
       unless the script itself fails.
 
   gcs_session.py tlog FILE
       Reads a telemetry log with mavutil.mavlink_connection(FILE) and prints one JSON document:
         {"frames": messages read, "bad_data": BAD_DATA count, "indexed": frames pymavlink's mmap
          index counted, "by_sysid": {sysid: {type: count}}, "first_timestamp", "last_timestamp"
-         (Unix seconds), "backwards": timestamps smaller than the one before}
+         (Unix seconds), "backwards": timestamps smaller than the one before, "seq_gaps": frames
+         missing from each sender's (sysid, compid) sequence numbers, "reader": the mavutil class
+         that read it}
+      The gaps are counted here, not taken from pymavlink's mav_loss: mavmmaplog (what
+      mavlink_connection opens a .tlog with) indexes the file first, reading the first message of
+      each type out of order through post_message, which leaves mav_loss and last_seq polluted
+      (hundreds of "lost" frames in a log with none missing).
 """
 
 import argparse
@@ -64,11 +71,12 @@ class GroundStation:
 
     Targeting: every simulated vehicle sends from its own UDP port (like SITL's
     --serial0 udpclient:HOST:PORT), all to our one port. mavudp in udpin mode remembers every
-    sender in `clients` and its write() sends each datagram to *all* of them (pymavlink 2.4.50;
-    older versions replied to the last sender only, and `last_address` is kept only for udpbcast).
-    Broadcasting works with vehicles that filter on target_system, but it is not how a ground
-    station should address one of several vehicles, and it would hide a vehicle that answers
-    commands meant for another. So this station reads the socket itself: each datagram's source
+    sender in `clients` and its write() sends each datagram to *all* of them (pymavlink 2.4.50,
+    udp_timeout 0; earlier releases replied to the last sender only, and `last_address` is kept
+    only for udpbcast). Broadcasting works only because each vehicle drops commands whose
+    target_system is not its own; MAVLink routing (ArduPilot's MAVLink_routing) instead learns
+    which link and address each system id is heard on and sends targeted messages only there. This
+    station does the same: it reads the socket itself, and each datagram's source
     address goes with the messages pymavlink's parser (mav.parse_buffer, all frames of the datagram)
     decodes from it, giving a map sysid -> address; mavutil's bookkeeping still runs (post_message:
     sysid_state, flight mode names, loss counts). Commands are built and sent by pymavlink's
@@ -106,7 +114,7 @@ class GroundStation:
         while True:
             try:
                 data, address = self.sock.recvfrom(65535)
-            except (BlockingIOError, InterruptedError):
+            except (BlockingIOError, InterruptedError, ConnectionRefusedError):
                 return
             for m in self.master.mav.parse_buffer(data) or []:
                 self.master.post_message(m)
@@ -124,7 +132,7 @@ class GroundStation:
             self.addresses[sysid] = address
         self.counts.setdefault(sysid, {}).setdefault(kind, 0)
         self.counts[sysid][kind] += 1
-        self.first_seen.setdefault(sysid, {}).setdefault(kind, round(t, 3))
+        self.first_seen.setdefault(sysid, {}).setdefault(kind, round(t, 6))
         if kind == "HEARTBEAT":
             self.heartbeats.setdefault(sysid, []).append((t, m))
         elif kind == "COMMAND_ACK":
@@ -173,7 +181,7 @@ class GroundStation:
                                                       rec["attempts"], *(list(params) + [0] * 7)[:7])
             self.send(s, msg)
             if rec["sent"] is None:
-                rec["sent"] = round(self.now(), 3)
+                rec["sent"] = round(self.now(), 6)
             rec["attempts"] += 1
             rec["last"] = time.monotonic()
 
@@ -185,7 +193,7 @@ class GroundStation:
             for t, s, ack in self.acks[seen:]:
                 if s in pending and ack.command == command:
                     pending.discard(s)
-                    out[s].update(result=ack.result, acked=round(t, 3), target_system=ack.target_system)
+                    out[s].update(result=ack.result, acked=round(t, 6), target_system=ack.target_system)
             seen = len(self.acks)
             for s in pending:
                 if time.monotonic() - out[s]["last"] >= RESEND_SECONDS:
@@ -198,7 +206,7 @@ class GroundStation:
         return out
 
     def texts_from(self, sysid, since):
-        return [{"t": round(t, 3), "severity": sev, "text": text}
+        return [{"t": round(t, 6), "severity": sev, "text": text}
                 for t, s, sev, text in self.texts if s == sysid and t >= since]
 
     # ---- the session ---------------------------------------------------------------------------
@@ -216,7 +224,7 @@ class GroundStation:
             hbs = self.heartbeats.get(s, [])
             if hbs:
                 t, hb = hbs[0]
-                v["heartbeat"] = {"t": round(t, 3), "type": hb.type, "autopilot": hb.autopilot,
+                v["heartbeat"] = {"t": round(t, 6), "type": hb.type, "autopilot": hb.autopilot,
                                   "base_mode": hb.base_mode, "custom_mode": hb.custom_mode,
                                   "system_status": hb.system_status, "mavlink_version": hb.mavlink_version,
                                   "count": len(hbs)}
@@ -281,9 +289,11 @@ class GroundStation:
             rec["pymavlink_armed"] = bool(state.armed)
             vehicles[str(s)]["mode"] = rec
 
+        # pymavlink's count of frames missing from each sender's sequence numbers (post_message)
+        report["mav_loss"] = self.master.mav_loss
         report["counts"] = {str(k): v for k, v in self.counts.items()}
         report["addresses"] = {str(k): list(v) for k, v in self.addresses.items()}
-        report["elapsed"] = round(self.now(), 3)
+        report["elapsed"] = round(self.now(), 6)
         return report
 
 
@@ -304,8 +314,9 @@ def run_session(args):
 
 def run_tlog(args):
     log = mavutil.mavlink_connection(args.file)
-    by_sysid, frames, bad, backwards = {}, 0, 0, 0
+    by_sysid, frames, bad, backwards, gaps = {}, 0, 0, 0, 0
     first = last = None
+    seqs = {}
     while True:
         m = log.recv_msg()
         if m is None:
@@ -314,6 +325,10 @@ def run_tlog(args):
             bad += 1
             continue
         frames += 1
+        source = (m.get_srcSystem(), m.get_srcComponent())
+        if source in seqs:
+            gaps += (m.get_seq() - seqs[source] - 1) % 256
+        seqs[source] = m.get_seq()
         t = m._timestamp
         if first is None:
             first = t
@@ -324,7 +339,7 @@ def run_tlog(args):
         counts[m.get_type()] = counts.get(m.get_type(), 0) + 1
     report = {"file": args.file, "frames": frames, "bad_data": bad, "indexed": getattr(log, "_count", None),
               "by_sysid": by_sysid, "first_timestamp": first, "last_timestamp": last, "backwards": backwards,
-              "reader": type(log).__name__}
+              "seq_gaps": gaps, "reader": type(log).__name__}
     log.close()
     print(json.dumps(report, sort_keys=True))
 

@@ -51,6 +51,13 @@ public final class Main implements Runnable {
         return cl;
     }
 
+    /** Rejects a speed-up that is not a positive, finite number: a usage error. */
+    static void checkSpeedup(CommandSpec spec, double speedup) {
+        if (!(speedup > 0) || Double.isInfinite(speedup)) {
+            throw new ParameterException(spec.commandLine(), "--speedup must be a positive number, got " + speedup);
+        }
+    }
+
     static final class Version implements CommandLine.IVersionProvider {
         @Override
         public String[] getVersion() {

@@ -116,9 +116,7 @@ final class RunCommand implements Callable<Integer> {
         if (sim < 0) {
             throw new ParameterException(spec.commandLine(), "--sim must be a positive number of vehicles, got " + sim);
         }
-        if (!(speedup > 0) || Double.isInfinite(speedup)) {
-            throw new ParameterException(spec.commandLine(), "--speedup must be a positive number, got " + speedup);
-        }
+        Main.checkSpeedup(spec, speedup);
         if (speedup != 1 && sim == 0) {
             throw new ParameterException(spec.commandLine(), "--speedup needs --sim: real vehicles run in real time");
         }

@@ -70,9 +70,7 @@ final class SimCommand implements Callable<Integer> {
         if (count < 1) {
             throw new ParameterException(spec.commandLine(), "--count must be at least 1, got " + count);
         }
-        if (!(speedup > 0) || Double.isInfinite(speedup)) {
-            throw new ParameterException(spec.commandLine(), "--speedup must be a positive number, got " + speedup);
-        }
+        Main.checkSpeedup(spec, speedup);
         List<InetSocketAddress> gcs = new ArrayList<>();
         for (LinkUrl url : links.isEmpty() ? List.of(LinkUrl.parse("udpout:127.0.0.1:14559")) : links) {
             if (url.kind() != LinkUrl.Kind.UDPOUT) {

@@ -7,25 +7,15 @@ import java.util.List;
  * {@code allOf { when {c} then t ... }}: every branch runs once, one at a time, each started when
  * no branch is running and its guard is the first (in declaration order) of the remaining ones to hold.
  */
-public final class AllOfTask implements Task {
-
-    private final List<TaskGuard> guards;
+public final class AllOfTask extends GuardedTask {
 
     public AllOfTask(List<TaskGuard> guards) {
-        if (guards.isEmpty()) {
-            throw new EnvironmentException("allOf: no choices were defined (add when { condition } then task)");
-        }
-        this.guards = List.copyOf(guards);
+        super("allOf", guards);
     }
 
     @Override
     public String getId() {
         return "(allOf " + TaskGuard.ids(guards) + ")";
-    }
-
-    @Override
-    public boolean allocate(NodeSet available, Allocation allocation) {
-        return TaskGuard.allocateAll(guards, available, allocation);
     }
 
     @Override

@@ -6,26 +6,16 @@ import java.util.List;
  * {@code oneOf}/{@code choose} and {@code waitFor { c } then t}: the guards are scanned in order at
  * each step until one holds; that branch starts in the same step and its state is the result.
  */
-public final class ChoiceTask implements Task {
-
-    private final List<TaskGuard> guards;
+public final class ChoiceTask extends GuardedTask {
 
     public ChoiceTask(List<TaskGuard> guards) {
-        if (guards.isEmpty()) {
-            throw new EnvironmentException("oneOf: no choices were defined (add when { condition } then task)");
-        }
-        this.guards = List.copyOf(guards);
+        super("oneOf", guards);
     }
 
     @Override
     public String getId() {
         return guards.size() == 1 ? "(waitFor {...} then " + guards.get(0).task().getId() + ")"
                 : "(oneOf " + TaskGuard.ids(guards) + ")";
-    }
-
-    @Override
-    public boolean allocate(NodeSet available, Allocation allocation) {
-        return TaskGuard.allocateAll(guards, available, allocation);
     }
 
     @Override

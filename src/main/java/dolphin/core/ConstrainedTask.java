@@ -9,24 +9,18 @@ import java.util.List;
  * <p>Unlike the original, the task is started at the first step whose check is false, so a
  * condition that already holds never starts it (no mission upload followed by an RTL).
  */
-public final class ConstrainedTask implements Task {
+public final class ConstrainedTask extends WrapperTask {
 
-    private final Task inner;
     private final Condition until;
 
     public ConstrainedTask(Task inner, Condition until) {
-        this.inner = inner;
+        super(inner);
         this.until = until;
     }
 
     @Override
     public String getId() {
         return "(" + inner.getId() + " / {...})";
-    }
-
-    @Override
-    public boolean allocate(NodeSet available, Allocation allocation) {
-        return inner.allocate(available, allocation.child(0));
     }
 
     @Override

@@ -3,27 +3,21 @@ package dolphin.core;
 import java.util.List;
 
 /** {@code during secs run task}: the task is stopped and this is DONE once the time has elapsed. */
-public final class TimeConstrainedTask implements Task {
+public final class TimeConstrainedTask extends WrapperTask {
 
-    private final Task inner;
     private final double seconds;
 
     public TimeConstrainedTask(Task inner, double seconds) {
+        super(inner);
         if (!(seconds >= 0)) {
             throw new EnvironmentException("during: the duration must be a non-negative number of seconds, got " + seconds);
         }
-        this.inner = inner;
         this.seconds = seconds;
     }
 
     @Override
     public String getId() {
         return "(during " + seconds + " s run " + inner.getId() + ")";
-    }
-
-    @Override
-    public boolean allocate(NodeSet available, Allocation allocation) {
-        return inner.allocate(available, allocation.child(0));
     }
 
     @Override

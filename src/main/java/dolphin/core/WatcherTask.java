@@ -3,24 +3,18 @@ package dolphin.core;
 import java.util.List;
 
 /** {@code watch task onError { msg -> ... }}: an ERROR of the task goes to the handler, which ignores (DONE) or propagates it. */
-public final class WatcherTask implements Task {
+public final class WatcherTask extends WrapperTask {
 
-    private final Task inner;
     private final ErrorHandler handler;
 
     public WatcherTask(Task inner, ErrorHandler handler) {
-        this.inner = inner;
+        super(inner);
         this.handler = handler;
     }
 
     @Override
     public String getId() {
         return "(watch " + inner.getId() + ")";
-    }
-
-    @Override
-    public boolean allocate(NodeSet available, Allocation allocation) {
-        return inner.allocate(available, allocation.child(0));
     }
 
     @Override

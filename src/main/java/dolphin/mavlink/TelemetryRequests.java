@@ -1,5 +1,11 @@
 package dolphin.mavlink;
 
+import com.MAVLink.common.msg_extended_sys_state;
+import com.MAVLink.common.msg_home_position;
+import com.MAVLink.common.msg_battery_status;
+import com.MAVLink.common.msg_mission_current;
+import com.MAVLink.standard.msg_global_position_int;
+import com.MAVLink.common.msg_sys_status;
 import com.MAVLink.common.msg_request_data_stream;
 import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_DATA_STREAM;
@@ -16,12 +22,6 @@ import java.util.concurrent.atomic.AtomicInteger;
  */
 final class TelemetryRequests {
 
-    static final int SYS_STATUS = 1;
-    static final int GLOBAL_POSITION_INT = 33;
-    static final int MISSION_CURRENT = 42;
-    static final int BATTERY_STATUS = 147;
-    static final int HOME_POSITION = 242;
-    static final int EXTENDED_SYS_STATE = 245;
 
     private static final long MIN_SILENCE = 3_000_000_000L;
 
@@ -56,10 +56,12 @@ final class TelemetryRequests {
 
     void discovered(MAVLinkNode node, long now) {
         Vehicle v = new Vehicle();
-        for (int id : new int[] {SYS_STATUS, GLOBAL_POSITION_INT, MISSION_CURRENT}) {
+        for (int id : new int[] {msg_sys_status.MAVLINK_MSG_ID_SYS_STATUS,
+                msg_global_position_int.MAVLINK_MSG_ID_GLOBAL_POSITION_INT, msg_mission_current.MAVLINK_MSG_ID_MISSION_CURRENT}) {
             v.streams.put(id, new Stream(fastNanos));
         }
-        for (int id : new int[] {EXTENDED_SYS_STATE, BATTERY_STATUS, HOME_POSITION}) {
+        for (int id : new int[] {msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE,
+                msg_battery_status.MAVLINK_MSG_ID_BATTERY_STATUS, msg_home_position.MAVLINK_MSG_ID_HOME_POSITION}) {
             v.streams.put(id, new Stream(1_000_000_000L));
         }
         vehicles.put(node, v);

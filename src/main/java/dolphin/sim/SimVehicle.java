@@ -35,15 +35,10 @@ import java.util.function.Consumer;
  */
 public final class SimVehicle {
 
-    static final int HEARTBEAT = 0;
-    static final int SYS_STATUS = 1;
-    static final int GLOBAL_POSITION_INT = 33;
-    static final int MISSION_CURRENT = 42;
-    static final int BATTERY_STATUS = 147;
-    static final int HOME_POSITION = 242;
-    static final int EXTENDED_SYS_STATE = 245;
-    private static final Set<Integer> STREAMABLE = Set.of(SYS_STATUS, GLOBAL_POSITION_INT, MISSION_CURRENT, BATTERY_STATUS,
-            HOME_POSITION, EXTENDED_SYS_STATE);
+    private static final Set<Integer> STREAMABLE = Set.of(msg_sys_status.MAVLINK_MSG_ID_SYS_STATUS,
+            msg_global_position_int.MAVLINK_MSG_ID_GLOBAL_POSITION_INT, msg_mission_current.MAVLINK_MSG_ID_MISSION_CURRENT,
+            msg_battery_status.MAVLINK_MSG_ID_BATTERY_STATUS, msg_home_position.MAVLINK_MSG_ID_HOME_POSITION,
+            msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE);
     private static final long SECOND = 1_000_000_000L;
     private static final int FORCE_DISARM = 21196;
 
@@ -199,7 +194,7 @@ public final class SimVehicle {
         }
         if (m instanceof msg_command_long c && c.target_system == sysid) {
             commandsHandled++;
-            ack(c.command, command(c, now));
+            ack(c, command(c, now));
         } else if (m instanceof msg_set_mode s && s.target_system == sysid) {
             setModeIfValid(s.custom_mode);
         } else if (m instanceof msg_request_data_stream r && r.target_system == sysid) {
@@ -226,7 +221,7 @@ public final class SimVehicle {
                 yield MAV_RESULT.MAV_RESULT_ACCEPTED;
             }
             case MAV_CMD.MAV_CMD_GET_HOME_POSITION -> {
-                out.accept(telemetry(HOME_POSITION));
+                out.accept(telemetry(msg_home_position.MAVLINK_MSG_ID_HOME_POSITION));
                 yield MAV_RESULT.MAV_RESULT_ACCEPTED;
             }
             default -> MAV_RESULT.MAV_RESULT_UNSUPPORTED;
@@ -297,9 +292,11 @@ public final class SimVehicle {
     private void requestDataStream(msg_request_data_stream r) {
         Set<Integer> ids = switch (r.req_stream_id) {
             case MAV_DATA_STREAM.MAV_DATA_STREAM_ALL -> STREAMABLE;
-            case MAV_DATA_STREAM.MAV_DATA_STREAM_EXTENDED_STATUS -> Set.of(SYS_STATUS, MISSION_CURRENT, EXTENDED_SYS_STATE);
-            case MAV_DATA_STREAM.MAV_DATA_STREAM_POSITION -> Set.of(GLOBAL_POSITION_INT);
-            case MAV_DATA_STREAM.MAV_DATA_STREAM_EXTRA3 -> Set.of(BATTERY_STATUS, HOME_POSITION);
+            case MAV_DATA_STREAM.MAV_DATA_STREAM_EXTENDED_STATUS -> Set.of(msg_sys_status.MAVLINK_MSG_ID_SYS_STATUS,
+                    msg_mission_current.MAVLINK_MSG_ID_MISSION_CURRENT, msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE);
+            case MAV_DATA_STREAM.MAV_DATA_STREAM_POSITION -> Set.of(msg_global_position_int.MAVLINK_MSG_ID_GLOBAL_POSITION_INT);
+            case MAV_DATA_STREAM.MAV_DATA_STREAM_EXTRA3 -> Set.of(msg_battery_status.MAVLINK_MSG_ID_BATTERY_STATUS,
+                    msg_home_position.MAVLINK_MSG_ID_HOME_POSITION);
             default -> Set.of();
         };
         for (int id : ids) {
@@ -312,11 +309,13 @@ public final class SimVehicle {
         }
     }
 
-    private void ack(int command, int result) {
+    /** Answers the sender of the command, as ArduPilot does. */
+    private void ack(msg_command_long c, int result) {
         msg_command_ack a = new msg_command_ack();
-        a.command = command;
+        a.command = c.command;
         a.result = (short) result;
-        a.target_system = 255;
+        a.target_system = (short) c.sysid;
+        a.target_component = (short) c.compid;
         out.accept(a);
     }
 
@@ -340,14 +339,14 @@ public final class SimVehicle {
 
     private MAVLinkMessage telemetry(int msgid) {
         return switch (msgid) {
-            case SYS_STATUS -> {
+            case msg_sys_status.MAVLINK_MSG_ID_SYS_STATUS -> {
                 msg_sys_status s = new msg_sys_status();
                 s.voltage_battery = 12600;
                 s.current_battery = (short) (armed ? 2800 : 0);
                 s.battery_remaining = (byte) Math.round(battery);
                 yield s;
             }
-            case GLOBAL_POSITION_INT -> {
+            case msg_global_position_int.MAVLINK_MSG_ID_GLOBAL_POSITION_INT -> {
                 msg_global_position_int p = new msg_global_position_int();
                 p.lat = (int) Math.round(position.latitudeDegrees() * 1e7);
                 p.lon = (int) Math.round(position.longitudeDegrees() * 1e7);
@@ -356,7 +355,7 @@ public final class SimVehicle {
                 p.hdg = 65535;
                 yield p;
             }
-            case HOME_POSITION -> {
+            case msg_home_position.MAVLINK_MSG_ID_HOME_POSITION -> {
                 msg_home_position h = new msg_home_position();
                 h.latitude = (int) Math.round(home.latitudeDegrees() * 1e7);
                 h.longitude = (int) Math.round(home.longitudeDegrees() * 1e7);
@@ -364,13 +363,13 @@ public final class SimVehicle {
                 h.q = new float[] {1, 0, 0, 0};
                 yield h;
             }
-            case EXTENDED_SYS_STATE -> {
+            case msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE -> {
                 msg_extended_sys_state e = new msg_extended_sys_state();
                 e.landed_state = (short) (position.hae() - home.hae() > 0.5 ? MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR
                         : MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND);
                 yield e;
             }
-            case BATTERY_STATUS -> {
+            case msg_battery_status.MAVLINK_MSG_ID_BATTERY_STATUS -> {
                 msg_battery_status b = new msg_battery_status();
                 b.battery_remaining = (byte) Math.round(battery);
                 b.current_battery = (short) (armed ? 2800 : 0);

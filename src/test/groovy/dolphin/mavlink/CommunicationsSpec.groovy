@@ -213,6 +213,22 @@ class CommunicationsSpec extends Specification {
         h.eventually { assert node.modeName == 'GUIDED' }
     }
 
+    def "command acknowledgements are addressed to the ground station that sent the command"() {
+        given:
+        h.fleet(1)
+        h.eventually { assert h.node('1') != null }
+        def acks = [].asSynchronized()
+        h.comms.addObserver { incoming, link, frame -> if (incoming && frame.msgid() == 77) acks << frame.message() }
+
+        when:
+        h.comms.command(h.node('1'), MAV_CMD.MAV_CMD_BATTERY_RESET, 255, 50).get()
+
+        then:
+        h.eventually { assert !acks.isEmpty() }
+        acks[0].target_system == 208
+        acks[0].target_component == 190
+    }
+
     def "DO_SET_HOME moves the vehicle's home, which comes back in HOME_POSITION"() {
         given:
         h.fleet(1)

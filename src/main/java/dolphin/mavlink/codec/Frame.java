@@ -52,9 +52,7 @@ public record Frame(int version, int incompatFlags, int compatFlags, int seq, in
         packet.msgid = msgid;
         packet.incompatFlags = incompatFlags;
         packet.compatFlags = compatFlags;
-        for (byte b : payload) {
-            packet.payload.add(b);
-        }
+        packet.payload.getData().put(payload); // as add() byte by byte, in one copy
         MAVLinkMessage m = packet.unpack();
         if (m != null) {
             m.isMavlink2 = version == 2;
