@@ -15,13 +15,11 @@ public final class CameraPoint extends MissionPoint {
     /** The interval between pictures when none is given, in seconds. */
     public static final float DEFAULT_INTERVAL = 2f;
 
-    private final String word;
     private final float interval;
     private final int count;
 
     public CameraPoint(String word, float interval, int count) {
-        super(null);
-        this.word = Objects.requireNonNull(word, "word");
+        super(word, null);
         this.interval = interval;
         this.count = count;
     }
@@ -36,17 +34,12 @@ public final class CameraPoint extends MissionPoint {
     }
 
     @Override
-    public String name() {
-        return word;
-    }
-
-    @Override
     public List<MissionItem> items(int seq) {
         return List.of(MissionItem.command(seq, MAV_CMD.MAV_CMD_IMAGE_START_CAPTURE, 0, interval, count, 0));
     }
 
     @Override
     public String toString() {
-        return word + " interval " + interval + " s count " + count;
+        return name() + " interval " + interval + " s count " + count;
     }
 }

@@ -7,12 +7,7 @@ import java.util.List;
 public final class CameraStopPoint extends MissionPoint {
 
     public CameraStopPoint() {
-        super(null);
-    }
-
-    @Override
-    public String name() {
-        return "stopCapturing";
+        super("stopCapturing", null);
     }
 
     @Override

@@ -17,7 +17,7 @@ public final class ChangeSpeed extends MissionPoint {
     private final int type;
 
     public ChangeSpeed(float speed, int type) {
-        super(null);
+        super("speed", null);
         this.speed = speed;
         this.type = type;
     }
@@ -28,11 +28,6 @@ public final class ChangeSpeed extends MissionPoint {
 
     public int type() {
         return type;
-    }
-
-    @Override
-    public String name() {
-        return "speed";
     }
 
     @Override

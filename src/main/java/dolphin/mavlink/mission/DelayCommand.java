@@ -12,17 +12,12 @@ public final class DelayCommand extends MissionPoint {
     private final float seconds;
 
     public DelayCommand(float seconds) {
-        super(null);
+        super("delay", null);
         this.seconds = seconds;
     }
 
     public float seconds() {
         return seconds;
-    }
-
-    @Override
-    public String name() {
-        return "delay";
     }
 
     @Override

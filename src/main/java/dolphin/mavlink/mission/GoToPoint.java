@@ -15,20 +15,12 @@ public final class GoToPoint extends MissionPoint {
     /** The acceptance radius of the original plugin, in metres. */
     public static final float ACCEPTANCE_RADIUS = 50f;
 
-    private final String word;
-
     public GoToPoint(String word, Position target) {
-        super(Objects.requireNonNull(target, "target"));
-        this.word = Objects.requireNonNull(word, "word");
+        super(word, Objects.requireNonNull(target, "target"));
     }
 
     public GoToPoint(Position target) {
         this("goPos", target);
-    }
-
-    @Override
-    public String name() {
-        return word;
     }
 
     @Override
@@ -38,6 +30,6 @@ public final class GoToPoint extends MissionPoint {
 
     @Override
     public String toString() {
-        return word + " " + getPosition();
+        return name() + " " + getPosition();
     }
 }

@@ -12,13 +12,11 @@ import java.util.Objects;
  */
 public final class LandingPoint extends MissionPoint {
 
-    private final String word;
     private final float yaw;
     private final int landMode;
 
     public LandingPoint(String word, Position target, float yaw, int landMode) {
-        super(Objects.requireNonNull(target, "target"));
-        this.word = Objects.requireNonNull(word, "word");
+        super(word, Objects.requireNonNull(target, "target"));
         this.yaw = yaw;
         this.landMode = landMode;
     }
@@ -32,17 +30,12 @@ public final class LandingPoint extends MissionPoint {
     }
 
     @Override
-    public String name() {
-        return word;
-    }
-
-    @Override
     public List<MissionItem> items(int seq) {
         return List.of(MissionItem.at(seq, MAV_CMD.MAV_CMD_NAV_LAND, getPosition(), 0, landMode, 0, yaw));
     }
 
     @Override
     public String toString() {
-        return word + " " + getPosition() + " yaw " + yaw + " mode " + landMode;
+        return name() + " " + getPosition() + " yaw " + yaw + " mode " + landMode;
     }
 }

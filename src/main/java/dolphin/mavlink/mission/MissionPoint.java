@@ -12,10 +12,18 @@ import java.util.List;
  */
 public abstract class MissionPoint extends DroneCommand {
 
+    private final String word;
     private final Position position;
 
-    protected MissionPoint(Position position) {
+    /** @param word the DSL word that made the point, e.g. "moveAndLoiterTime" */
+    protected MissionPoint(String word, Position position) {
+        this.word = java.util.Objects.requireNonNull(word, "word");
         this.position = position;
+    }
+
+    @Override
+    public final String name() {
+        return word;
     }
 
     public Position getPosition() {

@@ -47,7 +47,7 @@ public final class SurveyArea extends MissionPoint {
      * @param spacing the distance between passes, metres (> 0)
      */
     public SurveyArea(Position base, double length, double width, double spacing, SurveyDirection direction) {
-        super(Objects.requireNonNull(base, "base"));
+        super("surveyArea", Objects.requireNonNull(base, "base"));
         this.direction = Objects.requireNonNull(direction, "direction");
         if (!(length >= 0) || Double.isInfinite(length)) {
             throw new IllegalArgumentException("the length must be a number of metres, not negative, got " + length);
@@ -121,11 +121,6 @@ public final class SurveyArea extends MissionPoint {
     /** The waypoints in flight order: leg, shift, leg, ..., leg, base. */
     public List<Position> waypoints() {
         return waypoints;
-    }
-
-    @Override
-    public String name() {
-        return "surveyArea";
     }
 
     @Override

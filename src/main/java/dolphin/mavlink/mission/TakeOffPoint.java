@@ -13,13 +13,11 @@ public final class TakeOffPoint extends MissionPoint {
 
     public static final float DEFAULT_PITCH = 15f;
 
-    private final String word;
     private final float pitch;
     private final float yaw;
 
     public TakeOffPoint(String word, Position target, float pitch, float yaw) {
-        super(Objects.requireNonNull(target, "target"));
-        this.word = Objects.requireNonNull(word, "word");
+        super(word, Objects.requireNonNull(target, "target"));
         this.pitch = pitch;
         this.yaw = yaw;
     }
@@ -33,17 +31,12 @@ public final class TakeOffPoint extends MissionPoint {
     }
 
     @Override
-    public String name() {
-        return word;
-    }
-
-    @Override
     public List<MissionItem> items(int seq) {
         return List.of(MissionItem.at(seq, MAV_CMD.MAV_CMD_NAV_TAKEOFF, getPosition(), pitch, 0, 0, yaw));
     }
 
     @Override
     public String toString() {
-        return word + " " + getPosition() + " pitch " + pitch + " yaw " + yaw;
+        return name() + " " + getPosition() + " pitch " + pitch + " yaw " + yaw;
     }
 }
