@@ -195,6 +195,14 @@ public final class MAVLinkCommunications implements AutoCloseable {
         queue.add(action);
     }
 
+    /**
+     * Runs an action on the communications thread after {@code delay} of clock time (protocol
+     * timeouts). Callable from any thread; to cancel, let the action check whether it is still due.
+     */
+    public void schedule(java.time.Duration delay, Runnable action) {
+        execute(() -> timers.at(clock.nanoTime() + delay.toNanos(), action));
+    }
+
     CompletableFuture<CommandResult> commandOnCommsThread(MAVLinkNode node, int command, float... params) {
         msg_command_long m = new msg_command_long();
         m.target_system = (short) node.getMavLinkId();
