@@ -21,6 +21,8 @@ import dolphin.mavlink.codec.Frame;
 import dolphin.mavlink.codec.FrameReader;
 import dolphin.mavlink.codec.FrameWriter;
 import dolphin.mavlink.link.Link;
+import dolphin.mavlink.mission.MissionTransferConfig;
+import dolphin.mavlink.mission.MissionTransfers;
 import java.io.IOException;
 import java.net.SocketAddress;
 import java.util.ArrayList;
@@ -74,6 +76,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
     private final AtomicLong framesOut = new AtomicLong();
     private final AtomicLong filtered = new AtomicLong();
     private volatile Runnable telemetryListener = () -> { };
+    private volatile MissionTransferConfig missionTransferConfig = MissionTransferConfig.DEFAULT;
     private volatile boolean running;
     private Thread thread;
     private Tlog tlog;
@@ -92,6 +95,15 @@ public final class MAVLinkCommunications implements AutoCloseable {
 
     public Clock clock() {
         return clock;
+    }
+
+    /** Timeout and tries of mission uploads and downloads started from now on. */
+    public MissionTransferConfig missionTransferConfig() {
+        return missionTransferConfig;
+    }
+
+    public void setMissionTransferConfig(MissionTransferConfig config) {
+        missionTransferConfig = java.util.Objects.requireNonNull(config, "config");
     }
 
     /** Opens the links and starts the thread. Throws with the link's name when one cannot be opened. */
@@ -357,6 +369,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
             changed(n, s -> s.withStatusText(text));
         });
         handler.on(msg_command_ack.class, (n, m) -> commands.onAck(n, m, clock.nanoTime()));
+        MissionTransfers.route(handler);
     }
 
     private void changed(MAVLinkNode node, java.util.function.UnaryOperator<VehicleState> change) {

@@ -9,6 +9,9 @@ import dolphin.core.EnvironmentException;
 import dolphin.core.Payload;
 import dolphin.core.Position;
 import dolphin.mavlink.link.Link;
+import dolphin.mavlink.mission.MissionDownloadProtocol;
+import dolphin.mavlink.mission.MissionTransfers;
+import dolphin.mavlink.mission.MissionUploadProtocol;
 import java.net.SocketAddress;
 import java.time.Duration;
 import java.util.concurrent.atomic.AtomicReference;
@@ -30,6 +33,7 @@ public final class MAVLinkNode extends AbstractNode {
     private final Clock clock;
     private final AtomicReference<VehicleState> state;
     private volatile SocketAddress address;
+    private final MissionTransfers missionTransfers;
     /** The connection state the communications thread last reported; only it reads and writes this. */
     boolean wasConnected = true;
 
@@ -43,6 +47,22 @@ public final class MAVLinkNode extends AbstractNode {
         this.autopilotCompid = autopilotCompid;
         this.clock = clock;
         this.state = new AtomicReference<>(VehicleState.initial(family));
+        this.missionTransfers = new MissionTransfers(comms, this);
+    }
+
+    /** Uploads missions to this vehicle, one transfer at a time (shared with the download protocol). */
+    public MissionUploadProtocol getUploadProtocol() {
+        return missionTransfers.upload();
+    }
+
+    /** Downloads this vehicle's mission, one transfer at a time (shared with the upload protocol). */
+    public MissionDownloadProtocol getDownloadProtocol() {
+        return missionTransfers.download();
+    }
+
+    /** The vehicle's mission transfers and their queue; the mission messages are routed there. */
+    public MissionTransfers missionTransfers() {
+        return missionTransfers;
     }
 
     /** The MAVLink system id (the report's getMavLinkId). */

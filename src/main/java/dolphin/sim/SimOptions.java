@@ -7,21 +7,39 @@ package dolphin.sim;
  * @param drainPercentPerMinute battery use while armed (ArduCopter SITL: about 14 %/min)
  * @param messageIntervalSupported false makes MAV_CMD_SET_MESSAGE_INTERVAL UNSUPPORTED (older firmware)
  * @param refuseModeChanges true makes every mode change fail
+ * @param missionCapacity the most mission items (home included) the vehicle stores; a larger
+ *        MISSION_COUNT is refused with NO_SPACE (ArduPilot's limit depends on its storage; 700 here)
  */
 public record SimOptions(double warmupSeconds, double drainPercentPerMinute, boolean messageIntervalSupported,
-                         boolean refuseModeChanges) {
+                         boolean refuseModeChanges, int missionCapacity) {
 
-    public static final SimOptions DEFAULT = new SimOptions(0, 14, true, false);
+    public static final int DEFAULT_MISSION_CAPACITY = 700;
+    public static final SimOptions DEFAULT = new SimOptions(0, 14, true, false, DEFAULT_MISSION_CAPACITY);
+
+    public SimOptions(double warmupSeconds, double drainPercentPerMinute, boolean messageIntervalSupported,
+                      boolean refuseModeChanges) {
+        this(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, DEFAULT_MISSION_CAPACITY);
+    }
+
+    public SimOptions {
+        if (missionCapacity < 1) {
+            throw new IllegalArgumentException("the mission capacity must hold at least home, got " + missionCapacity);
+        }
+    }
 
     public SimOptions withWarmup(double seconds) {
-        return new SimOptions(seconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges);
+        return new SimOptions(seconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity);
     }
 
     public SimOptions withDrain(double percentPerMinute) {
-        return new SimOptions(warmupSeconds, percentPerMinute, messageIntervalSupported, refuseModeChanges);
+        return new SimOptions(warmupSeconds, percentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity);
     }
 
     public SimOptions withoutMessageInterval() {
-        return new SimOptions(warmupSeconds, drainPercentPerMinute, false, refuseModeChanges);
+        return new SimOptions(warmupSeconds, drainPercentPerMinute, false, refuseModeChanges, missionCapacity);
+    }
+
+    public SimOptions withMissionCapacity(int items) {
+        return new SimOptions(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, items);
     }
 }

@@ -6,7 +6,16 @@ import com.MAVLink.common.msg_command_ack;
 import com.MAVLink.common.msg_command_long;
 import com.MAVLink.common.msg_extended_sys_state;
 import com.MAVLink.common.msg_home_position;
+import com.MAVLink.common.msg_mission_ack;
+import com.MAVLink.common.msg_mission_clear_all;
+import com.MAVLink.common.msg_mission_count;
 import com.MAVLink.common.msg_mission_current;
+import com.MAVLink.common.msg_mission_item;
+import com.MAVLink.common.msg_mission_item_int;
+import com.MAVLink.common.msg_mission_request;
+import com.MAVLink.common.msg_mission_request_int;
+import com.MAVLink.common.msg_mission_request_list;
+import com.MAVLink.common.msg_mission_set_current;
 import com.MAVLink.common.msg_request_data_stream;
 import com.MAVLink.common.msg_set_mode;
 import com.MAVLink.common.msg_statustext;
@@ -15,7 +24,6 @@ import com.MAVLink.enums.MAV_AUTOPILOT;
 import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_DATA_STREAM;
 import com.MAVLink.enums.MAV_LANDED_STATE;
-import com.MAVLink.enums.MISSION_STATE;
 import com.MAVLink.enums.MAV_MODE_FLAG;
 import com.MAVLink.enums.MAV_RESULT;
 import com.MAVLink.enums.MAV_SEVERITY;
@@ -23,7 +31,9 @@ import com.MAVLink.enums.MAV_STATE;
 import com.MAVLink.minimal.msg_heartbeat;
 import com.MAVLink.standard.msg_global_position_int;
 import dolphin.core.Position;
+import dolphin.mavlink.mission.MissionItem;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.function.Consumer;
@@ -60,6 +70,9 @@ public final class SimVehicle {
     private Position target;
     private double speed;
     private int commandsHandled;
+    private final MissionStore missionStore;
+    private final MissionTransfer transfer;
+    private final MissionFlight flight;
 
     SimVehicle(int sysid, VehicleKind kind, Position home, SimOptions options, long now) {
         this.sysid = sysid;
@@ -71,6 +84,9 @@ public final class SimVehicle {
         this.mode = kind.bootMode;
         this.nextHeartbeat = now;
         this.lastTick = now;
+        this.missionStore = new MissionStore(() -> this.home, options.missionCapacity());
+        this.transfer = new MissionTransfer(missionStore, new TransferHost());
+        this.flight = new MissionFlight(kind, missionStore, new FlightBody());
         if (kind.defaultStreamHz > 0) {
             for (int id : STREAMABLE) {
                 intervals.put(id, (long) (SECOND / kind.defaultStreamHz));
@@ -138,6 +154,31 @@ public final class SimVehicle {
         nextDue.clear();
     }
 
+    /** The stored mission, home first (seq 0 is always the vehicle's home, as in ArduPilot). */
+    public synchronized List<MissionItem> mission() {
+        return missionStore.items();
+    }
+
+    /** Camera items (IMAGE_START/STOP_CAPTURE, DO_DIGICAM_CONTROL, DO_SET_CAM_TRIGG_DIST) the missions ran. */
+    public synchronized int cameraCommands() {
+        return flight.cameraCommands();
+    }
+
+    /** The current mission item (seq), as MISSION_CURRENT reports it while the mission runs. */
+    public synchronized int missionCurrent() {
+        return flight.current();
+    }
+
+    /** MISSION_STATE: NO_MISSION, NOT_STARTED, ACTIVE, PAUSED or COMPLETE. */
+    public synchronized int missionState() {
+        return flight.state();
+    }
+
+    /** Whether an upload is in progress. */
+    public synchronized boolean missionUploading() {
+        return transfer.uploading();
+    }
+
     /** Moves towards {@code to} at {@code metresPerSecond} (straight line, heights included). */
     public synchronized void flyTo(Position to, double metresPerSecond) {
         target = to;
@@ -146,7 +187,9 @@ public final class SimVehicle {
 
     /** Mode changes by "someone else", e.g. a pilot's switch: the ground station is not asked. */
     public synchronized void setMode(int customMode) {
+        int from = mode;
         mode = customMode;
+        flight.modeChanged(from, mode);
     }
 
     synchronized void tick(long now) {
@@ -156,6 +199,8 @@ public final class SimVehicle {
             battery = Math.max(0, battery - options.drainPercentPerMinute() * dt / 60);
         }
         move(dt);
+        transfer.tick(now);
+        flight.tick(dt);
         if (silent) {
             return;
         }
@@ -199,6 +244,10 @@ public final class SimVehicle {
             setModeIfValid(s.custom_mode);
         } else if (m instanceof msg_request_data_stream r && r.target_system == sysid) {
             requestDataStream(r);
+        } else if (missionTarget(m) == sysid) {
+            transfer.handle(m, now);
+        } else if (m instanceof msg_mission_set_current s && s.target_system == sysid) {
+            flight.setCurrent(s.seq);
         }
     }
 
@@ -224,8 +273,48 @@ public final class SimVehicle {
                 out.accept(telemetry(msg_home_position.MAVLINK_MSG_ID_HOME_POSITION));
                 yield MAV_RESULT.MAV_RESULT_ACCEPTED;
             }
+            case MAV_CMD.MAV_CMD_MISSION_START -> missionStart(c);
+            case MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT -> flight.setCurrent((int) c.param1) ? MAV_RESULT.MAV_RESULT_ACCEPTED
+                    : MAV_RESULT.MAV_RESULT_FAILED;
+            case MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH -> setModeIfValid(kind.rtlMode) ? MAV_RESULT.MAV_RESULT_ACCEPTED
+                    : MAV_RESULT.MAV_RESULT_FAILED;
+            case MAV_CMD.MAV_CMD_NAV_LAND -> kind == VehicleKind.COPTER && setModeIfValid(MissionFlight.COPTER_LAND_MODE)
+                    ? MAV_RESULT.MAV_RESULT_ACCEPTED : MAV_RESULT.MAV_RESULT_UNSUPPORTED;
             default -> MAV_RESULT.MAV_RESULT_UNSUPPORTED;
         };
+    }
+
+    /** GCS_MAVLINK_Copter::handle_MAV_CMD_MISSION_START: p1 = p2 = 0, switch to AUTO, auto_armed. */
+    private int missionStart(msg_command_long c) {
+        if (c.param1 != 0 || c.param2 != 0) {
+            return MAV_RESULT.MAV_RESULT_DENIED;
+        }
+        if (mode != kind.autoMode && !setModeIfValid(kind.autoMode)) {
+            return MAV_RESULT.MAV_RESULT_FAILED;
+        }
+        flight.missionStart();
+        return MAV_RESULT.MAV_RESULT_ACCEPTED;
+    }
+
+    private static int missionTarget(MAVLinkMessage m) {
+        if (m instanceof msg_mission_count x) {
+            return x.target_system;
+        } else if (m instanceof msg_mission_item_int x) {
+            return x.target_system;
+        } else if (m instanceof msg_mission_item x) {
+            return x.target_system;
+        } else if (m instanceof msg_mission_request_list x) {
+            return x.target_system;
+        } else if (m instanceof msg_mission_request_int x) {
+            return x.target_system;
+        } else if (m instanceof msg_mission_request x) {
+            return x.target_system;
+        } else if (m instanceof msg_mission_clear_all x) {
+            return x.target_system;
+        } else if (m instanceof msg_mission_ack x) {
+            return x.target_system;
+        }
+        return -1;
     }
 
     private int arm(long now) {
@@ -250,6 +339,7 @@ public final class SimVehicle {
             return MAV_RESULT.MAV_RESULT_FAILED;
         }
         armed = false;
+        flight.disarmed();
         return MAV_RESULT.MAV_RESULT_ACCEPTED;
     }
 
@@ -257,7 +347,13 @@ public final class SimVehicle {
         if (!kind.family.modes().containsKey(custom) || options.refuseModeChanges()) {
             return false;
         }
+        if (custom == kind.autoMode && mode != kind.autoMode && !flight.autoAllowed()) {
+            text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, "Auto: Missing Takeoff Cmd");
+            return false;
+        }
+        int from = mode;
         mode = (int) custom;
+        flight.modeChanged(from, mode);
         return true;
     }
 
@@ -319,7 +415,88 @@ public final class SimVehicle {
         out.accept(a);
     }
 
+    private void send(MAVLinkMessage m) {
+        if (!silent) {
+            out.accept(m);
+        }
+    }
+
+    /** The mission transfer's view of this vehicle. */
+    private final class TransferHost implements MissionTransfer.Host {
+        @Override
+        public void send(MAVLinkMessage m) {
+            SimVehicle.this.send(m);
+        }
+
+        @Override
+        public void text(int severity, String text) {
+            SimVehicle.this.text(severity, text);
+        }
+
+        @Override
+        public boolean clearAllowed() {
+            return !flight.flyingMission();
+        }
+
+        @Override
+        public void missionChanged() {
+            flight.missionChanged();
+        }
+    }
+
+    /** The mission flight's view of this vehicle. */
+    private final class FlightBody implements MissionFlight.Body {
+        @Override
+        public Position position() {
+            return position;
+        }
+
+        @Override
+        public void place(Position p) {
+            position = p;
+        }
+
+        @Override
+        public Position home() {
+            return home;
+        }
+
+        @Override
+        public boolean armed() {
+            return armed;
+        }
+
+        @Override
+        public int mode() {
+            return mode;
+        }
+
+        @Override
+        public void switchMode(int m) {
+            mode = m;
+        }
+
+        @Override
+        public void touchdown() {
+            armed = false;
+            flight.disarmed();
+        }
+
+        @Override
+        public void send(MAVLinkMessage m) {
+            SimVehicle.this.send(m);
+        }
+
+        @Override
+        public void text(int severity, String text) {
+            SimVehicle.this.text(severity, text);
+        }
+    }
+
     private void text(int severity, String text) {
+        if (silent) {
+            return;
+        }
         msg_statustext t = new msg_statustext();
         t.severity = (short) severity;
         t.setText(text);
@@ -376,11 +553,7 @@ public final class SimVehicle {
                 b.voltages = new int[] {4200, 4200, 4200, 65535, 65535, 65535, 65535, 65535, 65535, 65535};
                 yield b;
             }
-            default -> {
-                msg_mission_current c = new msg_mission_current();
-                c.mission_state = (short) MISSION_STATE.MISSION_STATE_NO_MISSION;
-                yield c;
-            }
+            default -> flight.missionCurrent();
         };
     }
 }

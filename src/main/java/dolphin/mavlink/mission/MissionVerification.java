@@ -1,0 +1,64 @@
+package dolphin.mavlink.mission;
+
+import java.util.List;
+import java.util.Optional;
+
+/**
+ * Compares the items sent with those downloaded back, skipping item 0 (ArduPilot replaces it with
+ * its home), as ArduPilot's autotest does (check_mission_upload_download): command, frame and
+ * autocontinue equal, params equal with NaN equal to NaN, x and y exactly (degE7), z within 1 cm.
+ */
+public final class MissionVerification {
+
+    /** How far a downloaded z may be from the one sent, in metres (the vehicle may store it with less precision). */
+    public static final double Z_TOLERANCE = 0.01;
+
+    private MissionVerification() {
+    }
+
+    /** The first difference, e.g. "item 2 (NAV_WAYPOINT): z sent 20.0, vehicle has 25.0"; empty when they match. */
+    public static Optional<String> firstDifference(List<MissionItem> sent, List<MissionItem> downloaded) {
+        if (sent.size() != downloaded.size()) {
+            return Optional.of("the vehicle has " + downloaded.size() + " items (home included), " + sent.size() + " were sent");
+        }
+        for (int i = 1; i < sent.size(); i++) {
+            MissionItem s = sent.get(i);
+            MissionItem d = downloaded.get(i);
+            String diff = difference(s, d);
+            if (diff != null) {
+                return Optional.of("item " + i + " (" + s.commandName() + "): " + diff);
+            }
+        }
+        return Optional.empty();
+    }
+
+    private static String difference(MissionItem s, MissionItem d) {
+        if (s.command() != d.command()) {
+            return "command sent " + s.commandName() + ", vehicle has " + d.commandName();
+        }
+        if (s.frame() != d.frame()) {
+            return "frame sent " + s.frameName() + ", vehicle has " + d.frameName();
+        }
+        float[] sp = {s.param1(), s.param2(), s.param3(), s.param4()};
+        float[] dp = {d.param1(), d.param2(), d.param3(), d.param4()};
+        for (int p = 0; p < 4; p++) {
+            if (Float.compare(sp[p], dp[p]) != 0 && !(sp[p] == dp[p])) {
+                return "param" + (p + 1) + " sent " + sp[p] + ", vehicle has " + dp[p];
+            }
+        }
+        if (s.x() != d.x()) {
+            return "x sent " + s.x() + ", vehicle has " + d.x();
+        }
+        if (s.y() != d.y()) {
+            return "y sent " + s.y() + ", vehicle has " + d.y();
+        }
+        boolean bothNaN = Float.isNaN(s.z()) && Float.isNaN(d.z());
+        if (!bothNaN && !(Math.abs(s.z() - d.z()) <= Z_TOLERANCE)) {
+            return "z sent " + s.z() + ", vehicle has " + d.z();
+        }
+        if (s.autocontinue() != d.autocontinue()) {
+            return "autocontinue sent " + s.autocontinue() + ", vehicle has " + d.autocontinue();
+        }
+        return null;
+    }
+}

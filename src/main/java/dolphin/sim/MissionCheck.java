@@ -1,0 +1,70 @@
+package dolphin.sim;
+
+import com.MAVLink.enums.MAV_CMD;
+import com.MAVLink.enums.MAV_FRAME;
+import com.MAVLink.enums.MAV_MISSION_RESULT;
+import dolphin.mavlink.mission.MissionItem;
+import java.util.Set;
+
+/**
+ * The checks ArduPilot makes on each uploaded item (AP_Mission::mavlink_int_to_mission_cmd), with
+ * its MAV_MISSION_RESULT codes: commands it does not know (DO_CHANGE_ALTITUDE and
+ * DO_TRIGGER_CONTROL among them) are UNSUPPORTED; commands with a position accept only the global
+ * frames (and MISSION); latitude, longitude and altitude must be sane.
+ */
+final class MissionCheck {
+
+    /** Commands with a location, whose frame and x, y, z are checked. */
+    static final Set<Integer> POSITIONAL = Set.of(MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM,
+            MAV_CMD.MAV_CMD_NAV_LOITER_TURNS, MAV_CMD.MAV_CMD_NAV_LOITER_TIME, MAV_CMD.MAV_CMD_NAV_LAND,
+            MAV_CMD.MAV_CMD_NAV_TAKEOFF, MAV_CMD.MAV_CMD_NAV_CONTINUE_AND_CHANGE_ALT, MAV_CMD.MAV_CMD_NAV_LOITER_TO_ALT,
+            MAV_CMD.MAV_CMD_NAV_SPLINE_WAYPOINT, MAV_CMD.MAV_CMD_DO_SET_HOME, MAV_CMD.MAV_CMD_DO_SET_ROI,
+            MAV_CMD.MAV_CMD_DO_LAND_START);
+
+    /** Commands without a location that ArduPilot stores in a mission. */
+    static final Set<Integer> OTHERS = Set.of(MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH, MAV_CMD.MAV_CMD_NAV_DELAY,
+            MAV_CMD.MAV_CMD_CONDITION_DELAY, MAV_CMD.MAV_CMD_CONDITION_CHANGE_ALT, MAV_CMD.MAV_CMD_CONDITION_DISTANCE,
+            MAV_CMD.MAV_CMD_CONDITION_YAW, MAV_CMD.MAV_CMD_DO_JUMP, MAV_CMD.MAV_CMD_DO_CHANGE_SPEED,
+            MAV_CMD.MAV_CMD_DO_SET_RELAY, MAV_CMD.MAV_CMD_DO_REPEAT_RELAY, MAV_CMD.MAV_CMD_DO_SET_SERVO,
+            MAV_CMD.MAV_CMD_DO_REPEAT_SERVO, MAV_CMD.MAV_CMD_DO_DIGICAM_CONFIGURE, MAV_CMD.MAV_CMD_DO_DIGICAM_CONTROL,
+            MAV_CMD.MAV_CMD_DO_MOUNT_CONTROL, MAV_CMD.MAV_CMD_DO_SET_CAM_TRIGG_DIST, MAV_CMD.MAV_CMD_DO_GRIPPER,
+            MAV_CMD.MAV_CMD_DO_SET_ROI_NONE, MAV_CMD.MAV_CMD_IMAGE_START_CAPTURE, MAV_CMD.MAV_CMD_IMAGE_STOP_CAPTURE,
+            MAV_CMD.MAV_CMD_VIDEO_START_CAPTURE, MAV_CMD.MAV_CMD_VIDEO_STOP_CAPTURE, MAV_CMD.MAV_CMD_DO_PARACHUTE);
+
+    static final Set<Integer> GLOBAL_FRAMES = Set.of(MAV_FRAME.MAV_FRAME_MISSION, MAV_FRAME.MAV_FRAME_GLOBAL,
+            MAV_FRAME.MAV_FRAME_GLOBAL_INT, MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT,
+            MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT, MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT,
+            MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT_INT);
+
+    /** ArduPilot's LOCATION_ALT_MAX_M: heights beyond it do not fit its Location. */
+    static final double ALT_MAX_METRES = 83_000;
+
+    private MissionCheck() {
+    }
+
+    /** MAV_MISSION_ACCEPTED, or the error the vehicle answers the item with. */
+    static int result(MissionItem item) {
+        if (!POSITIONAL.contains(item.command())) {
+            return OTHERS.contains(item.command()) ? MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
+                    : MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED;
+        }
+        if (!GLOBAL_FRAMES.contains(item.frame())) {
+            return MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED_FRAME;
+        }
+        if (Math.abs((long) item.x()) > 900_000_000L) {
+            return MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM5_X;
+        }
+        if (Math.abs((long) item.y()) > 1_800_000_000L) {
+            return MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM6_Y;
+        }
+        if (!Float.isFinite(item.z()) || Math.abs(item.z()) >= ALT_MAX_METRES) {
+            return MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM7;
+        }
+        return MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
+    }
+
+    /** Whether the item's z is relative to home (relative and terrain frames, and MISSION). */
+    static boolean relative(int frame) {
+        return frame != MAV_FRAME.MAV_FRAME_GLOBAL && frame != MAV_FRAME.MAV_FRAME_GLOBAL_INT;
+    }
+}

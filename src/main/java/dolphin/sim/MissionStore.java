@@ -1,0 +1,80 @@
+package dolphin.sim;
+
+import com.MAVLink.enums.MAV_CMD;
+import dolphin.core.Position;
+import dolphin.mavlink.mission.MissionItem;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Supplier;
+
+/**
+ * The mission a simulated vehicle stores, as ArduPilot's AP_Mission keeps it: index 0 is always
+ * home (written items at seq 0 are dropped, and reading seq 0 gives the vehicle's current home as a
+ * NAV_WAYPOINT in MAV_FRAME_GLOBAL, height above mean sea level); real items start at 1.
+ */
+final class MissionStore {
+
+    private final List<MissionItem> items = new ArrayList<>();
+    private final Supplier<Position> home;
+    private final int capacity;
+
+    MissionStore(Supplier<Position> home, int capacity) {
+        this.home = home;
+        this.capacity = capacity;
+        items.add(null);
+    }
+
+    int capacity() {
+        return capacity;
+    }
+
+    /** Items stored, home included (what MISSION_COUNT reports on download). */
+    int count() {
+        return items.size();
+    }
+
+    MissionItem get(int seq) {
+        return seq == 0 ? homeItem() : items.get(seq);
+    }
+
+    /** Keeps the first {@code n} items (home always stays), as MISSION_COUNT does at once. */
+    void truncate(int n) {
+        while (items.size() > Math.max(1, n)) {
+            items.remove(items.size() - 1);
+        }
+    }
+
+    /** Writes an item at its seq (seq 0 is home and is not written; seq may be at most count()). */
+    void put(MissionItem item) {
+        int seq = item.seq();
+        if (seq == 0) {
+            return;
+        }
+        if (seq < items.size()) {
+            items.set(seq, item);
+        } else if (seq == items.size()) {
+            items.add(item);
+        } else {
+            throw new IllegalArgumentException("mission item " + seq + " written after only " + items.size());
+        }
+    }
+
+    void clear() {
+        truncate(1);
+    }
+
+    /** Every item, home first. */
+    List<MissionItem> items() {
+        List<MissionItem> all = new ArrayList<>(items.size());
+        for (int i = 0; i < items.size(); i++) {
+            all.add(get(i));
+        }
+        return all;
+    }
+
+    private MissionItem homeItem() {
+        Position h = home.get();
+        return new MissionItem(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, com.MAVLink.enums.MAV_FRAME.MAV_FRAME_GLOBAL, 0, 0, 0, 0,
+                MissionItem.degE7(h.latitudeDegrees()), MissionItem.degE7(h.longitudeDegrees()), (float) h.hae(), true);
+    }
+}

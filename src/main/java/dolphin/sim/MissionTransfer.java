@@ -1,0 +1,272 @@
+package dolphin.sim;
+
+import com.MAVLink.Messages.MAVLinkMessage;
+import com.MAVLink.common.msg_mission_ack;
+import com.MAVLink.common.msg_mission_clear_all;
+import com.MAVLink.common.msg_mission_count;
+import com.MAVLink.common.msg_mission_item;
+import com.MAVLink.common.msg_mission_item_int;
+import com.MAVLink.common.msg_mission_request;
+import com.MAVLink.common.msg_mission_request_int;
+import com.MAVLink.common.msg_mission_request_list;
+import com.MAVLink.enums.MAV_MISSION_RESULT;
+import com.MAVLink.enums.MAV_MISSION_TYPE;
+import com.MAVLink.enums.MAV_SEVERITY;
+import dolphin.mavlink.mission.MissionItem;
+
+/**
+ * The vehicle side of the mission protocol, as ArduPilot's MissionItemProtocol does it: uploads
+ * (MISSION_COUNT truncates at once; items are asked for with MISSION_REQUEST, id 40, re-asked every
+ * second, cancelled after 8 s without one; a wrong seq is INVALID_SEQUENCE and the upload goes on;
+ * another sender, or a download, during an upload is DENIED), downloads (MISSION_REQUEST_LIST,
+ * MISSION_REQUEST_INT answered with MISSION_ITEM_INT, MISSION_REQUEST with MISSION_ITEM) and
+ * MISSION_CLEAR_ALL. Only mission_type MISSION; fences and rally points are UNSUPPORTED. Runs on
+ * the fleet's thread, under the vehicle's lock.
+ */
+final class MissionTransfer {
+
+    static final long RESEND_NANOS = 1_000_000_000L;
+    static final long UPLOAD_TIMEOUT_NANOS = 8_000_000_000L;
+
+    /** What the transfer needs from its vehicle. */
+    interface Host {
+        void send(MAVLinkMessage m);
+
+        void text(int severity, String text);
+
+        /** False while armed and flying a mission in AUTO: clearing is refused then. */
+        boolean clearAllowed();
+
+        /** The stored mission changed (an upload finished, or it was cleared). */
+        void missionChanged();
+    }
+
+    private final MissionStore store;
+    private final Host host;
+    private boolean uploading;
+    private int uploaderSys;
+    private int uploaderComp;
+    private int expected;
+    private int next;
+    private long lastItem;
+    private long lastRequest;
+    private boolean floatWarned;
+
+    MissionTransfer(MissionStore store, Host host) {
+        this.store = store;
+        this.host = host;
+    }
+
+    boolean uploading() {
+        return uploading;
+    }
+
+    /** Handles a mission message addressed to this vehicle; false if it is not one. */
+    boolean handle(MAVLinkMessage m, long now) {
+        if (m instanceof msg_mission_count c) {
+            count(c, now);
+        } else if (m instanceof msg_mission_item_int i) {
+            item(i.sysid, i.compid, i.mission_type, MissionItem.fromMessage(i), now);
+        } else if (m instanceof msg_mission_item i) {
+            if (!floatWarned) {
+                floatWarned = true;
+                host.text(MAV_SEVERITY.MAV_SEVERITY_WARNING, "got MISSION_ITEM; GCS should send MISSION_ITEM_INT");
+            }
+            item(i.sysid, i.compid, i.mission_type, fromFloat(i), now);
+        } else if (m instanceof msg_mission_request_list r) {
+            if (refuseDownload(r.sysid, r.compid, r.mission_type)) {
+                return true;
+            }
+            msg_mission_count c = new msg_mission_count();
+            c.count = store.count();
+            c.mission_type = MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION;
+            c.target_system = (short) r.sysid;
+            c.target_component = (short) r.compid;
+            host.send(c);
+        } else if (m instanceof msg_mission_request_int r) {
+            if (!refuseDownload(r.sysid, r.compid, r.mission_type) && inRange(r.sysid, r.compid, r.seq)) {
+                host.send(store.get(r.seq).toMessage(r.sysid, r.compid));
+            }
+        } else if (m instanceof msg_mission_request r) {
+            if (!refuseDownload(r.sysid, r.compid, r.mission_type) && inRange(r.sysid, r.compid, r.seq)) {
+                host.send(toFloat(store.get(r.seq), r.sysid, r.compid));
+            }
+        } else if (m instanceof msg_mission_clear_all c) {
+            clear(c);
+        } else {
+            return m instanceof msg_mission_ack; // the end of a download: nothing to do
+        }
+        return true;
+    }
+
+    /** Re-requests the pending item every second; cancels the upload after 8 s without an item. */
+    void tick(long now) {
+        if (!uploading) {
+            return;
+        }
+        if (now - lastItem >= UPLOAD_TIMEOUT_NANOS) {
+            uploading = false;
+            ack(uploaderSys, uploaderComp, MAV_MISSION_RESULT.MAV_MISSION_OPERATION_CANCELLED);
+            host.text(MAV_SEVERITY.MAV_SEVERITY_WARNING, "Mission upload timeout");
+        } else if (now - lastRequest >= RESEND_NANOS) {
+            request(now);
+        }
+    }
+
+    private void count(msg_mission_count c, long now) {
+        if (c.mission_type != MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION) {
+            ack(c.sysid, c.compid, MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED, c.mission_type);
+            return;
+        }
+        if (uploading && !fromUploader(c.sysid, c.compid)) {
+            ack(c.sysid, c.compid, MAV_MISSION_RESULT.MAV_MISSION_DENIED);
+            return;
+        }
+        uploading = false;
+        if (c.count > store.capacity()) {
+            ack(c.sysid, c.compid, MAV_MISSION_RESULT.MAV_MISSION_NO_SPACE);
+            return;
+        }
+        store.truncate(c.count);
+        if (c.count == 0) {
+            ack(c.sysid, c.compid, MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED);
+            host.missionChanged();
+            return;
+        }
+        uploading = true;
+        uploaderSys = c.sysid;
+        uploaderComp = c.compid;
+        expected = c.count;
+        next = 0;
+        lastItem = now;
+        request(now);
+    }
+
+    private void item(int sys, int comp, int missionType, MissionItem item, long now) {
+        if (!uploading) {
+            return; // not asked for: ArduPilot ignores it too (a late duplicate)
+        }
+        if (!fromUploader(sys, comp)) {
+            ack(sys, comp, MAV_MISSION_RESULT.MAV_MISSION_DENIED);
+            return;
+        }
+        if (item.seq() != next) {
+            ack(sys, comp, MAV_MISSION_RESULT.MAV_MISSION_INVALID_SEQUENCE);
+            return;
+        }
+        int result = missionType != MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION ? MAV_MISSION_RESULT.MAV_MISSION_ERROR
+                : MissionCheck.result(item);
+        if (result != MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
+            uploading = false;
+            ack(sys, comp, result);
+            host.missionChanged();
+            return;
+        }
+        store.put(item);
+        lastItem = now;
+        next++;
+        if (next < expected) {
+            request(now);
+            return;
+        }
+        uploading = false;
+        ack(sys, comp, MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED);
+        host.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Flight plan received");
+        host.missionChanged();
+    }
+
+    private void clear(msg_mission_clear_all c) {
+        if (c.mission_type != MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION) {
+            ack(c.sysid, c.compid, MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED, c.mission_type);
+            return;
+        }
+        if (uploading || !host.clearAllowed()) {
+            ack(c.sysid, c.compid, uploading ? MAV_MISSION_RESULT.MAV_MISSION_DENIED : MAV_MISSION_RESULT.MAV_MISSION_ERROR);
+            return;
+        }
+        store.clear();
+        ack(c.sysid, c.compid, MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED);
+        host.missionChanged();
+    }
+
+    private boolean refuseDownload(int sys, int comp, int missionType) {
+        if (missionType != MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION) {
+            ack(sys, comp, MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED, missionType);
+            return true;
+        }
+        if (uploading) {
+            ack(sys, comp, MAV_MISSION_RESULT.MAV_MISSION_DENIED);
+            return true;
+        }
+        return false;
+    }
+
+    private boolean inRange(int sys, int comp, int seq) {
+        if (seq < 0 || seq >= store.count()) {
+            ack(sys, comp, MAV_MISSION_RESULT.MAV_MISSION_INVALID_SEQUENCE);
+            return false;
+        }
+        return true;
+    }
+
+    private boolean fromUploader(int sys, int comp) {
+        return sys == uploaderSys && comp == uploaderComp;
+    }
+
+    private void request(long now) {
+        msg_mission_request r = new msg_mission_request();
+        r.seq = next;
+        r.mission_type = MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION;
+        r.target_system = (short) uploaderSys;
+        r.target_component = (short) uploaderComp;
+        host.send(r);
+        lastRequest = now;
+    }
+
+    private void ack(int sys, int comp, int result) {
+        ack(sys, comp, result, MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION);
+    }
+
+    private void ack(int sys, int comp, int result, int missionType) {
+        msg_mission_ack a = new msg_mission_ack();
+        a.type = (short) result;
+        a.mission_type = (short) missionType;
+        a.target_system = (short) sys;
+        a.target_component = (short) comp;
+        host.send(a);
+    }
+
+    private static MissionItem fromFloat(msg_mission_item i) {
+        boolean positional = MissionCheck.POSITIONAL.contains(i.command);
+        int x = positional ? clampE7(i.x) : Math.round(i.x);
+        int y = positional ? clampE7(i.y) : Math.round(i.y);
+        return new MissionItem(i.seq, i.command, i.frame, i.param1, i.param2, i.param3, i.param4, x, y, i.z,
+                i.autocontinue != 0);
+    }
+
+    private static int clampE7(float degrees) {
+        double e7 = degrees * 1e7;
+        return Double.isFinite(e7) ? (int) Math.max(Integer.MIN_VALUE, Math.min(Integer.MAX_VALUE, Math.round(e7)))
+                : Integer.MAX_VALUE;
+    }
+
+    private static msg_mission_item toFloat(MissionItem item, int sys, int comp) {
+        msg_mission_item m = new msg_mission_item();
+        boolean positional = MissionCheck.POSITIONAL.contains(item.command()) || item.seq() == 0;
+        m.target_system = (short) sys;
+        m.target_component = (short) comp;
+        m.seq = item.seq();
+        m.command = item.command();
+        m.frame = (short) item.frame();
+        m.param1 = item.param1();
+        m.param2 = item.param2();
+        m.param3 = item.param3();
+        m.param4 = item.param4();
+        m.x = positional ? (float) (item.x() * 1e-7) : item.x();
+        m.y = positional ? (float) (item.y() * 1e-7) : item.y();
+        m.z = item.z();
+        m.autocontinue = (short) (item.autocontinue() ? 1 : 0);
+        m.mission_type = MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION;
+        return m;
+    }
+}

@@ -1,0 +1,98 @@
+package dolphin.mavlink.mission
+
+import com.MAVLink.enums.MAV_CMD
+import dolphin.core.Position
+import dolphin.dsl.Engine
+import dolphin.dsl.EngineListener
+import dolphin.dsl.ScriptResult
+import dolphin.mavlink.FleetHarness
+import dolphin.mavlink.MAVLinkPlatform
+import dolphin.sim.FaultModel
+import dolphin.sim.SimOptions
+import dolphin.sim.VehicleKind
+import spock.lang.AutoCleanup
+import spock.lang.Specification
+import spock.lang.Timeout
+import spock.lang.Unroll
+
+import java.time.Duration
+import java.util.concurrent.TimeUnit
+
+/** Mission upload, download and verify against simulated vehicles (dolphin.sim), with random loss both ways. */
+@Timeout(120)
+class SimMissionTransferSpec extends Specification {
+
+    @AutoCleanup
+    FleetHarness h = new FleetHarness()
+
+    static List<MissionItem> missionAround(Position home, int points, double alt) {
+        def items = [MissionItem.at(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, home, 0, 0, 0, 0)]
+        items << MissionItem.at(1, MAV_CMD.MAV_CMD_NAV_TAKEOFF, Position.fromDegrees(home.latitudeDegrees(), home.longitudeDegrees(),
+                home.hae() + alt), 0, 0, 0, Float.NaN)
+        (2..points).each { i ->
+            items << MissionItem.at(i, MAV_CMD.MAV_CMD_NAV_WAYPOINT, Position.fromDegrees(home.latitudeDegrees() + i * 1e-4,
+                    home.longitudeDegrees() - i * 1e-4, home.hae() + alt + i), 0, 2, 0, Float.NaN)
+        }
+        items
+    }
+
+    @Unroll
+    def "#rounds uploads with #lossPct% loss both ways each complete and verify by download"() {
+        given:
+        def fleet = h.fleet(1, VehicleKind.COPTER, 1, SimOptions.DEFAULT, loss == 0 ? FaultModel.NONE : FaultModel.loss(loss, 7))
+        h.eventually(20) { assert h.node('1')?.home != null }
+        def node = h.node('1')
+        h.comms.missionTransferConfig = new MissionTransferConfig(Duration.ofMillis(1500), tries)
+        def ackLost = 0
+
+        expect:
+        (1..rounds).each { round ->
+            def items = missionAround(node.home, 4 + round, 20 + round)
+            def up = node.uploadProtocol.upload(items).get(60, TimeUnit.SECONDS)
+            if (!up.success()) {
+                // only the lost final ACK may leave us unsure; the download below settles it
+                assert up.error().contains('its ACK was lost'): up.error()
+                ackLost++
+            }
+            def down = node.downloadProtocol.download().get(60, TimeUnit.SECONDS)
+            assert down.success(): down.error()
+            String diff = MissionVerification.firstDifference(items, down.items()).orElse(null)
+            assert diff == null
+            assert fleet.vehicle(1).mission().size() == items.size()
+        }
+        ackLost <= rounds / 2
+
+        where:
+        loss | tries | rounds
+        0    | 5     | 3
+        0.1  | 5     | 5
+        0.3  | 10    | 5
+        lossPct = (int) (loss * 100)
+    }
+
+    def "a script downloads a vehicle's mission with downloadMission"() {
+        given:
+        h.fleet(1)
+        h.eventually(20) { assert h.node('1')?.home != null }
+        def node = h.node('1')
+        def items = missionAround(node.home, 3, 25)
+        assert node.uploadProtocol.upload(items).get(30, TimeUnit.SECONDS).success()
+        def messages = [].asSynchronized()
+        def engine = new Engine(new MAVLinkPlatform(h.comms), h.clock)
+        engine.addListener(new EngineListener() {
+            void message(String text) { messages << text }
+        })
+
+        when:
+        def result = engine.run('''
+            v = pick { id '1'; timeout 20 }
+            m = downloadMission(v)
+            message "points ${m.missionPoints()} first ${m.getCommandList()[0].item().commandName()}"
+        ''', 'download.dolphin').await(Duration.ofSeconds(30))
+
+        then:
+        result.outcome == ScriptResult.Outcome.COMPLETED
+        messages.contains('downloaded 4 mission items from vehicle 1')
+        messages.contains('points 4 first NAV_TAKEOFF')
+    }
+}
