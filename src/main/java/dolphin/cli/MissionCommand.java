@@ -5,6 +5,7 @@ import dolphin.core.ManualClock;
 import dolphin.dsl.Engine;
 import dolphin.dsl.EngineListener;
 import dolphin.dsl.ScriptResult;
+import dolphin.dsl.ScriptRun;
 import dolphin.mavlink.MAVLinkLanguage;
 import dolphin.mavlink.dsl.MissionRecorder;
 import dolphin.mavlink.mission.Mission;
@@ -49,6 +50,10 @@ import picocli.CommandLine.Spec;
                         + "(which finds no vehicles): define missions before picking vehicles.",
                 "Exit 0 when done, 1 on a script error, 2 on a usage error."})
 final class MissionCommand implements Callable<Integer> {
+
+    @Option(names = "--time-limit", paramLabel = "SECONDS", defaultValue = "60",
+            description = "Stop a dry run that has not ended after this much real time (default: ${DEFAULT-VALUE}).")
+    private double timeLimit;
 
     @Spec
     private CommandSpec spec;
@@ -178,7 +183,18 @@ final class MissionCommand implements Callable<Integer> {
         });
         ScriptResult result;
         try (engine) {
-            result = engine.run(source, script.toString()).await();
+            ScriptRun run = engine.run(source, script.toString());
+            result = run.await(java.time.Duration.ofMillis((long) (timeLimit * 1000)));
+            if (result == null) {
+                // Without vehicles a script that never picks one (a loop of its own) never ends.
+                run.stop();
+                run.await();
+                err.println("dolphin mission: " + script + ": the dry run was stopped after " + timeLimit
+                        + " s (a script that loops without picking vehicles does not end without them); "
+                        + missions.size() + " mission(s) built by then");
+                err.flush();
+                return null;
+            }
         }
         String error = result.error() == null ? null : result.error().toString();
         synchronized (messages) {

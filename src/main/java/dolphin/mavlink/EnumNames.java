@@ -10,14 +10,18 @@ import java.util.concurrent.ConcurrentHashMap;
 /** Names of the values of a generated MAVLink enum class (e.g. COPTER_MODE), with its prefix removed. */
 public final class EnumNames {
 
-    private static final Map<Class<?>, Map<Long, String>> CACHE = new ConcurrentHashMap<>();
+    private record Key(Class<?> type, String prefix) {
+    }
+
+    private static final Map<Key, Map<Long, String>> CACHE = new ConcurrentHashMap<>();
 
     private EnumNames() {
     }
 
     /** value -> name without {@code prefix}, e.g. 3 -> "AUTO" for COPTER_MODE with prefix "COPTER_MODE_". */
     public static Map<Long, String> of(Class<?> enumClass, String prefix) {
-        return CACHE.computeIfAbsent(enumClass, c -> {
+        return CACHE.computeIfAbsent(new Key(enumClass, prefix), key -> {
+            Class<?> c = key.type();
             Map<Long, String> names = new LinkedHashMap<>();
             for (Field f : c.getFields()) {
                 if (Modifier.isStatic(f.getModifiers()) && (f.getType() == int.class || f.getType() == long.class)

@@ -368,4 +368,23 @@ b = make()
         MavwpHarness.differences(expected.survey, loaded[0]) == []
         MavwpHarness.differences(expected['return home'], loaded[1]) == []
     }
+
+    def "a dry run that does not end is stopped after the time limit, with the missions built so far"() {
+        given:
+        def script = File.createTempFile('loop', '.dolphin')
+        script.text = "m = mission { name 'x'; goPos 40, -7, 100 }\nwhile (true) { }\n"
+
+        when:
+        def out = new StringWriter()
+        def err = new StringWriter()
+        int code = Main.commandLine(new PrintWriter(out), new PrintWriter(err)).execute('mission', script.path, '--time-limit', '1')
+
+        then:
+        code == 1
+        err.toString().contains('the dry run was stopped after 1.0 s')
+        err.toString().contains('1 mission(s) built by then')
+
+        cleanup:
+        script?.delete()
+    }
 }
