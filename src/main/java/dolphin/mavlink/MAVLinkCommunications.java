@@ -7,6 +7,7 @@ import com.MAVLink.common.msg_command_long;
 import com.MAVLink.common.msg_extended_sys_state;
 import com.MAVLink.common.msg_home_position;
 import com.MAVLink.common.msg_mission_current;
+import com.MAVLink.common.msg_mission_item_reached;
 import com.MAVLink.common.msg_statustext;
 import com.MAVLink.common.msg_sys_status;
 import com.MAVLink.enums.MAV_AUTOPILOT;
@@ -21,6 +22,8 @@ import dolphin.mavlink.codec.Frame;
 import dolphin.mavlink.codec.FrameReader;
 import dolphin.mavlink.codec.FrameWriter;
 import dolphin.mavlink.link.Link;
+import dolphin.mavlink.mission.MissionExecutor;
+import dolphin.mavlink.mission.MissionExecutorConfig;
 import dolphin.mavlink.mission.MissionTransferConfig;
 import dolphin.mavlink.mission.MissionTransfers;
 import java.io.IOException;
@@ -77,6 +80,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
     private final AtomicLong filtered = new AtomicLong();
     private volatile Runnable telemetryListener = () -> { };
     private volatile MissionTransferConfig missionTransferConfig = MissionTransferConfig.DEFAULT;
+    private volatile MissionExecutorConfig missionExecutorConfig = MissionExecutorConfig.DEFAULT;
     private volatile boolean running;
     private Thread thread;
     private Tlog tlog;
@@ -100,6 +104,19 @@ public final class MAVLinkCommunications implements AutoCloseable {
     /** Timeout and tries of mission uploads and downloads started from now on. */
     public MissionTransferConfig missionTransferConfig() {
         return missionTransferConfig;
+    }
+
+    public MissionExecutorConfig missionExecutorConfig() {
+        return missionExecutorConfig;
+    }
+
+    public void setMissionExecutorConfig(MissionExecutorConfig config) {
+        missionExecutorConfig = java.util.Objects.requireNonNull(config, "config");
+    }
+
+    /** Wakes the script's task tree, as telemetry does (e.g. when a transfer or command completes). */
+    public void wakeScript() {
+        telemetryListener.run();
     }
 
     public void setMissionTransferConfig(MissionTransferConfig config) {
@@ -369,6 +386,13 @@ public final class MAVLinkCommunications implements AutoCloseable {
             changed(n, s -> s.withStatusText(text));
         });
         handler.on(msg_command_ack.class, (n, m) -> commands.onAck(n, m, clock.nanoTime()));
+        handler.on(msg_mission_item_reached.class, (n, m) -> {
+            MissionExecutor executor = n.getExecutor();
+            if (executor != null) {
+                executor.consume(m);
+                telemetryListener.run();
+            }
+        });
         MissionTransfers.route(handler);
     }
 

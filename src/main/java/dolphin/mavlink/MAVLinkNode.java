@@ -9,6 +9,7 @@ import dolphin.core.EnvironmentException;
 import dolphin.core.Payload;
 import dolphin.core.Position;
 import dolphin.mavlink.link.Link;
+import dolphin.mavlink.mission.MissionExecutor;
 import dolphin.mavlink.mission.MissionDownloadProtocol;
 import dolphin.mavlink.mission.MissionTransfers;
 import dolphin.mavlink.mission.MissionUploadProtocol;
@@ -33,6 +34,7 @@ public final class MAVLinkNode extends AbstractNode {
     private final Clock clock;
     private final AtomicReference<VehicleState> state;
     private volatile SocketAddress address;
+    private volatile MissionExecutor executor;
     private final MissionTransfers missionTransfers;
     /** The connection state the communications thread last reported; only it reads and writes this. */
     boolean wasConnected = true;
@@ -61,6 +63,15 @@ public final class MAVLinkNode extends AbstractNode {
     }
 
     /** The vehicle's mission transfers and their queue; the mission messages are routed there. */
+    /** The executor flying a mission on this vehicle, or null (report: setExecutor). */
+    public MissionExecutor getExecutor() {
+        return executor;
+    }
+
+    public void setExecutor(MissionExecutor executor) {
+        this.executor = executor;
+    }
+
     public MissionTransfers missionTransfers() {
         return missionTransfers;
     }
@@ -68,6 +79,10 @@ public final class MAVLinkNode extends AbstractNode {
     /** The MAVLink system id (the report's getMavLinkId). */
     public int getMavLinkId() {
         return sysid;
+    }
+
+    public MAVLinkCommunications communications() {
+        return comms;
     }
 
     public int getAutopilotCompid() {
@@ -165,9 +180,10 @@ public final class MAVLinkNode extends AbstractNode {
         comms.send(this, message);
     }
 
-    /** Nothing is sent: the script no longer tasks the vehicle. */
+    /** Nothing is sent: the script no longer tasks the vehicle, which forgets its executor. */
     @Override
     public void release() {
+        executor = null;
     }
 
     @Override

@@ -124,10 +124,9 @@ public final class Mission extends PlatformTask {
         return List.of(NodeFilter.ANY);
     }
 
-    /** Flying missions (upload, arm, start, follow) is the MissionExecutor's job, which is not built yet. */
+    /** A new executor that uploads, starts and follows this mission on its vehicle. */
     @Override
     public PlatformTaskExecutor getExecutor() {
-        throw new EnvironmentException("mission " + getId() + " cannot fly yet: this build can only build missions"
-                + " (dolphin mission SCRIPT); the MissionExecutor that uploads and flies them is not there yet");
+        return new MissionExecutor(this);
     }
 }

@@ -1,0 +1,418 @@
+package dolphin.mavlink.mission;
+
+import com.MAVLink.common.msg_mission_item_reached;
+import com.MAVLink.enums.MAV_CMD;
+import com.MAVLink.enums.MAV_LANDED_STATE;
+import com.MAVLink.enums.MAV_MODE_FLAG;
+import com.MAVLink.enums.MAV_RESULT;
+import com.MAVLink.enums.MISSION_STATE;
+import dolphin.core.CompletionState;
+import dolphin.core.Node;
+import dolphin.core.PlatformTaskExecutor;
+import dolphin.mavlink.CommandResult;
+import dolphin.mavlink.MAVLinkCommunications;
+import dolphin.mavlink.MAVLinkNode;
+import dolphin.mavlink.VehicleFamily;
+import dolphin.mavlink.VehicleState;
+import java.time.Duration;
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.OptionalLong;
+import java.util.TreeMap;
+import java.util.concurrent.CompletableFuture;
+import java.util.function.Supplier;
+
+/**
+ * Flies a {@link Mission} on one vehicle (report Listing 8; design §6): a state machine stepped on
+ * the script thread, PREPARE, UPLOAD, VERIFY, ARM, START, RUNNING, then DONE or ERROR, each state
+ * with a deadline in clock time. Commands and transfers run on the communications thread; each
+ * state waits for one of them, and their completion wakes the task tree.
+ */
+public final class MissionExecutor extends PlatformTaskExecutor {
+
+    public enum State { PREPARE, UPLOAD, VERIFY, ARM, START, RUNNING, DONE, ERROR }
+
+    /** A command of PREPARE or START: what it is (for errors) and how to send it. */
+    private record Step(String what, Supplier<CompletableFuture<CommandResult>> send) {
+    }
+
+    private final Mission mission;
+    private final Deque<Step> steps = new ArrayDeque<>();
+    private final Map<JumpToItem, Integer> jumpsLeft = new HashMap<>();
+    private MAVLinkNode node;
+    private MAVLinkCommunications comms;
+    private MissionExecutorConfig config;
+    private List<MissionItem> items;
+    private TreeMap<Integer, List<DroneCommand>> keyed;
+    private volatile State state = State.PREPARE;
+    private String failure;
+    private long deadline;
+    private CompletableFuture<?> pending;
+    private String uploadError;
+    private long nextArm;
+    private boolean armModeSet;
+    private volatile int reached;
+    private int sentUpTo;
+    private int reported;
+    private boolean active;
+    private boolean sawAuto;
+
+    public MissionExecutor(Mission mission) {
+        super(mission);
+        this.mission = mission;
+    }
+
+    public State state() {
+        return state;
+    }
+
+    /** The report's consume(MISSION_ITEM_REACHED), on the communications thread: "reached at least seq". */
+    public void consume(msg_mission_item_reached message) {
+        synchronized (this) {
+            reached = Math.max(reached, message.seq);
+        }
+    }
+
+    @Override
+    protected void onStart() {
+        Node vehicle = getVehicle();
+        if (!(vehicle instanceof MAVLinkNode n)) {
+            failure = "vehicle " + vehicle.getId() + " is not a MAVLink vehicle";
+            return;
+        }
+        node = n;
+        comms = node.communications();
+        config = comms.missionExecutorConfig();
+        node.setExecutor(this);
+        try {
+            items = mission.items(node.getHome());
+        } catch (RuntimeException e) {
+            failure = e.getMessage();
+            return;
+        }
+        keyed = new TreeMap<>(mission.nonMissionCommands());
+        keyed.values().forEach(cmds -> cmds.stream().filter(c -> c instanceof JumpToItem)
+                .forEach(c -> jumpsLeft.put((JumpToItem) c, ((JumpToItem) c).repetitions())));
+        List<DroneCommand> beforeUpload = keyed.remove(0);
+        if (beforeUpload != null) {
+            beforeUpload.forEach(c -> c.toMavLinkMessage(node).forEach(node::send));
+        }
+        VehicleState s = node.state();
+        if (s.armed() && isMode(s, "AUTO")) {
+            String hold = holdMode();
+            steps.add(new Step("leaving AUTO for " + hold + " before the new mission", () -> setMode(hold)));
+        }
+        if (mission.getHome() != null) {
+            var h = mission.getHome();
+            steps.add(new Step("DO_SET_HOME", () -> comms.command(node, MAV_CMD.MAV_CMD_DO_SET_HOME, 0, 0, 0, 0,
+                    (float) h.latitudeDegrees(), (float) h.longitudeDegrees(), (float) h.hae())));
+        }
+        enter(State.PREPARE, config.prepare());
+    }
+
+    @Override
+    protected CompletionState onStep() {
+        if (failure != null) {
+            return fail(failure);
+        }
+        long now = clock().nanoTime();
+        if (state != State.RUNNING && now > deadline) {
+            return fail(state + " did not finish within its deadline");
+        }
+        return switch (state) {
+            case PREPARE -> {
+                if (runSteps()) {
+                    progress("uploading " + items.size() + " items");
+                    pending = watch(node.getUploadProtocol().upload(items));
+                    enter(State.UPLOAD, config.upload());
+                }
+                yield CompletionState.IN_PROGRESS;
+            }
+            case UPLOAD -> upload();
+            case VERIFY -> verify();
+            case ARM -> arm(now);
+            case START -> {
+                if (runSteps()) {
+                    progress("started");
+                    enter(State.RUNNING, Duration.ZERO);
+                }
+                yield failure != null ? fail(failure) : CompletionState.IN_PROGRESS;
+            }
+            case RUNNING -> running();
+            case DONE -> CompletionState.DONE;
+            case ERROR -> fail(failure);
+        };
+    }
+
+    private CompletionState upload() {
+        TransferResult r = done();
+        if (r == null) {
+            return CompletionState.IN_PROGRESS;
+        }
+        if (!r.success()) {
+            if (!config.verify()) {
+                return fail(r.error());
+            }
+            // The vehicle may hold the mission although the final ACK was lost: the download decides.
+            uploadError = r.error();
+        }
+        if (config.verify()) {
+            pending = watch(node.getDownloadProtocol().download());
+            enter(State.VERIFY, config.upload());
+        } else {
+            enterArm();
+        }
+        return CompletionState.IN_PROGRESS;
+    }
+
+    private CompletionState verify() {
+        TransferResult r = done();
+        if (r == null) {
+            return CompletionState.IN_PROGRESS;
+        }
+        if (!r.success()) {
+            return fail(uploadError != null ? uploadError : "verifying the upload failed: " + r.error());
+        }
+        var difference = MissionVerification.firstDifference(items, r.items());
+        if (difference.isPresent()) {
+            return fail(uploadError != null ? uploadError
+                    : "the vehicle holds another mission than the one uploaded: " + difference.get());
+        }
+        progress(uploadError == null ? "upload verified" : "upload verified by download (" + uploadError + ")");
+        enterArm();
+        return CompletionState.IN_PROGRESS;
+    }
+
+    private void enterArm() {
+        enter(State.ARM, config.arm());
+        nextArm = clock().nanoTime();
+    }
+
+    /** Copter: GUIDED, then arm; others arm in their current mode. Arming is retried until the deadline. */
+    private CompletionState arm(long now) {
+        if (getFamily() == VehicleFamily.COPTER && !armModeSet) {
+            if (pending == null) {
+                pending = watch(setMode("GUIDED"));
+            }
+            CommandResult r = commandDone();
+            if (r == null) {
+                return CompletionState.IN_PROGRESS;
+            }
+            if (!r.accepted()) {
+                return fail("vehicle " + node.getId() + " refused GUIDED: " + r.resultName());
+            }
+            armModeSet = true;
+        }
+        if (pending == null) {
+            if (now < nextArm) {
+                return CompletionState.IN_PROGRESS;
+            }
+            pending = watch(comms.command(node, MAV_CMD.MAV_CMD_COMPONENT_ARM_DISARM, 1));
+        }
+        CommandResult r = commandDone();
+        if (r == null) {
+            return CompletionState.IN_PROGRESS;
+        }
+        if (r.accepted()) {
+            progress("armed");
+            if (getFamily() == VehicleFamily.COPTER) {
+                steps.add(new Step("AUTO", () -> setMode("AUTO")));
+                steps.add(new Step("MAV_CMD_MISSION_START", () -> comms.command(node, MAV_CMD.MAV_CMD_MISSION_START, 0, 0)));
+            } else {
+                steps.add(new Step("AUTO", () -> setMode("AUTO")));
+            }
+            enter(State.START, config.start());
+            return CompletionState.IN_PROGRESS;
+        }
+        if (now + config.retryArm().toNanos() > deadline) {
+            return fail("vehicle " + node.getId() + " refused to arm for " + config.arm().toSeconds() + " s: "
+                    + lastArmText(r));
+        }
+        nextArm = now + config.retryArm().toNanos();
+        return CompletionState.IN_PROGRESS;
+    }
+
+    private String lastArmText(CommandResult r) {
+        List<String> texts = node.state().statusTexts();
+        for (int i = texts.size() - 1; i >= 0; i--) {
+            if (texts.get(i).contains("Arm")) {
+                return texts.get(i);
+            }
+        }
+        return r.resultName();
+    }
+
+    private CompletionState running() {
+        VehicleState s = node.state();
+        if (s.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE) {
+            active = true;
+        }
+        int last = items.size() - 1;
+        int r = reached;
+        if (active && s.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE) {
+            r = Math.max(r, s.missionSeq() - 1);
+        }
+        if (r > reported) {
+            reported = r;
+            progress("item " + Math.min(r, last) + " of " + last + " reached");
+        }
+        sendKeyedCommands(r);
+        boolean complete = active && s.missionState() == MISSION_STATE.MISSION_STATE_COMPLETE;
+        int lastCommand = items.get(last).command();
+        boolean endsInLanding = lastCommand == MAV_CMD.MAV_CMD_NAV_LAND;
+        // An unlimited loiter never ends by itself: only a condition (/, until, during) ends the mission.
+        boolean endless = lastCommand == MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM;
+        if (endsInLanding && (complete || r >= last)) {
+            if (!s.armed() && s.landedState() != MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR) {
+                return finish();
+            }
+            return CompletionState.IN_PROGRESS;
+        }
+        if (!endless && (complete || r >= last)) {
+            return finish();
+        }
+        if (isMode(s, "AUTO")) {
+            sawAuto = true;
+        } else if (sawAuto) {
+            return fail("vehicle " + node.getId() + " left AUTO: now " + s.modeName());
+        }
+        return CompletionState.IN_PROGRESS;
+    }
+
+    /** Sends the non-mission commands keyed by the items reached; a jump goes back and runs them again. */
+    private void sendKeyedCommands(int r) {
+        for (Map.Entry<Integer, List<DroneCommand>> e : keyed.subMap(sentUpTo, false, r, true).entrySet()) {
+            for (DroneCommand c : e.getValue()) {
+                if (c instanceof JumpToItem jump) {
+                    int left = jumpsLeft.getOrDefault(jump, 0);
+                    if (left > 0) {
+                        jumpsLeft.put(jump, left - 1);
+                        jump.toMavLinkMessage(node).forEach(node::send);
+                        progress("jump to item " + jump.item());
+                        synchronized (this) {
+                            reached = jump.item() - 1;
+                        }
+                        sentUpTo = jump.item() - 1;
+                        reported = sentUpTo;
+                        return;
+                    }
+                } else {
+                    c.toMavLinkMessage(node).forEach(node::send);
+                }
+            }
+            sentUpTo = e.getKey();
+        }
+    }
+
+    private CompletionState finish() {
+        state = State.DONE;
+        progress("done");
+        return CompletionState.DONE;
+    }
+
+    /** Sends each step's command in turn; true when all were accepted. A refusal fails the mission. */
+    private boolean runSteps() {
+        while (true) {
+            if (pending == null) {
+                if (steps.isEmpty()) {
+                    return true;
+                }
+                pending = watch(steps.peek().send().get());
+            }
+            CommandResult r = commandDone();
+            if (r == null) {
+                return false;
+            }
+            Step step = steps.poll();
+            if (!r.accepted()) {
+                failure = "vehicle " + node.getId() + " refused " + step.what() + ": " + r.resultName();
+                return false;
+            }
+        }
+    }
+
+    private CompletableFuture<CommandResult> setMode(String name) {
+        OptionalLong mode = getFamily().modeNumber(name);
+        if (mode.isEmpty()) {
+            return CompletableFuture.completedFuture(new CommandResult(MAV_CMD.MAV_CMD_DO_SET_MODE, MAV_RESULT.MAV_RESULT_UNSUPPORTED, 0));
+        }
+        return comms.command(node, MAV_CMD.MAV_CMD_DO_SET_MODE, MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED, mode.getAsLong());
+    }
+
+    private String holdMode() {
+        for (String m : new String[] {"LOITER", "HOLD", "POSHOLD"}) {
+            if (getFamily().modeNumber(m).isPresent()) {
+                return m;
+            }
+        }
+        return "GUIDED";
+    }
+
+    private VehicleFamily getFamily() {
+        return node.getFamily();
+    }
+
+    private static boolean isMode(VehicleState s, String name) {
+        return s.heartbeat() != null && s.family().modeNumber(name).orElse(-1) == s.customMode();
+    }
+
+    private CommandResult commandDone() {
+        return (CommandResult) done();
+    }
+
+    @SuppressWarnings("unchecked")
+    private <T> T done() {
+        if (pending == null || !pending.isDone()) {
+            return null;
+        }
+        T r = (T) pending.join();
+        pending = null;
+        return r;
+    }
+
+    private void enter(State next, Duration limit) {
+        state = next;
+        deadline = clock().nanoTime() + limit.toNanos();
+    }
+
+    /** Steps the task tree as soon as the operation completes, not at the next tick. */
+    private <T> CompletableFuture<T> watch(CompletableFuture<T> operation) {
+        operation.whenComplete((r, e) -> comms.wakeScript());
+        return operation;
+    }
+
+    private CompletionState fail(String why) {
+        failure = why;
+        state = State.ERROR;
+        return CompletionState.error("mission " + mission.getId() + (node != null ? " on vehicle " + node.getId() : "") + ": " + why);
+    }
+
+    private void progress(String what) {
+        context().listener().message("mission " + mission.getId() + " on vehicle " + node.getId() + ": " + what);
+    }
+
+    /** Cut short (a condition, a stopped sequence): the vehicle is sent home if it may be flying. */
+    @Override
+    protected void onStop() {
+        if (node != null && (state == State.ARM || state == State.START || state == State.RUNNING)) {
+            comms.command(node, MAV_CMD.MAV_CMD_DO_SET_MODE, MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED,
+                    getFamily().modeNumber("RTL").orElse(0));
+            progress("cut short: RTL");
+        }
+        release();
+    }
+
+    @Override
+    protected void onCompletion() {
+        release();
+    }
+
+    private void release() {
+        if (node != null && node.getExecutor() == this) {
+            node.setExecutor(null);
+        }
+    }
+}

@@ -1,0 +1,117 @@
+package dolphin.mavlink.mission
+
+import dolphin.dsl.Engine
+import dolphin.dsl.EngineListener
+import dolphin.dsl.ScriptResult
+import dolphin.mavlink.FleetHarness
+import dolphin.mavlink.MAVLinkPlatform
+import dolphin.sim.SimOptions
+import dolphin.sim.VehicleKind
+import java.time.Duration
+import spock.lang.AutoCleanup
+import spock.lang.Specification
+import spock.lang.Timeout
+
+/** Missions flown end to end: a script, the MissionExecutor, the protocols, simulated vehicles over UDP. */
+@Timeout(120)
+class MissionExecutorSpec extends Specification {
+
+    @AutoCleanup
+    FleetHarness h = new FleetHarness()
+    List<String> messages = [].asSynchronized()
+
+    static final String HOP = '''
+        hop = mission {
+            name 'hop'
+            takeOff location(40.444233, -7.375234, 840)
+            goPos 40.4446, -7.375234, 840
+            landingPoint 40.4446, -7.375234, 820
+        }
+    '''
+
+    ScriptResult run(String script) {
+        def engine = new Engine(new MAVLinkPlatform(h.comms), h.clock)
+        engine.addListener(new EngineListener() {
+            void message(String text) { messages << text }
+        })
+        def result = engine.run(script, 'fly.dolphin').await(Duration.ofSeconds(100))
+        assert result != null: "script did not end; messages: ${messages}"
+        result
+    }
+
+    def "a copter flies a mission to its landing: uploaded, verified, armed in GUIDED, started, landed and disarmed"() {
+        given:
+        def fleet = h.fleet(1)
+
+        when:
+        def result = run(HOP + '''
+            v = pick { timeout 10 }
+            r = execute v: hop
+            message "result: ${r}"
+        ''')
+
+        then:
+        result.outcome == ScriptResult.Outcome.COMPLETED
+        messages.contains('result: DONE')
+        ['uploading 4 items', 'upload verified', 'armed', 'started', 'done'].every { step ->
+            messages.any { it == "mission hop on vehicle 1: ${step}".toString() }
+        }
+        with(fleet.vehicle(1)) {
+            !armed()
+            position().distanceTo(dolphin.core.Position.fromDegrees(40.4446, -7.375234, 820)) < 2
+            mission().size() == 4
+        }
+    }
+
+    def "a mission cut short by a condition sends its vehicle home (RTL), and the next mission flies"() {
+        given:
+        def fleet = h.fleet(1)
+
+        when:
+        def result = run(HOP + '''
+            back = mission { name 'back'; home location(40.444233, -7.375234, 820); returnHomeAndLand() }
+            v = pick { timeout 10 }
+            execute v: (hop / { position(v).hae > 835 }) >> back
+        ''')
+
+        then:
+        result.outcome == ScriptResult.Outcome.COMPLETED
+        messages.contains('mission hop on vehicle 1: cut short: RTL')
+        messages.contains('mission back on vehicle 1: done')
+        !fleet.vehicle(1).armed()
+    }
+
+    def "arming refused past the deadline is an ERROR with the vehicle's PreArm text, seen by watch"() {
+        given:
+        h.comms.missionExecutorConfig = MissionExecutorConfig.DEFAULT.withArm(Duration.ofSeconds(10))
+        h.fleet(1, VehicleKind.COPTER, 1, SimOptions.DEFAULT.withWarmup(600))
+
+        when:
+        def result = run(HOP + '''
+            v = pick { timeout 10 }
+            execute v: watch(hop) onError { msg -> message "caught: ${msg}"; ignore() }
+        ''')
+
+        then:
+        result.outcome == ScriptResult.Outcome.COMPLETED
+        messages.any { it.startsWith('caught: mission hop on vehicle 1: vehicle 1 refused to arm for 10 s: PreArm: Need Position Estimate') }
+    }
+
+    def "one mission object flies on two vehicles at once (E-3)"() {
+        given:
+        def fleet = h.fleet(2)
+
+        when:
+        def result = run(HOP + '''
+            v1 = pick { timeout 10 }
+            v2 = pick { timeout 10 }
+            execute v1: hop, v2: hop
+        ''')
+
+        then:
+        result.outcome == ScriptResult.Outcome.COMPLETED
+        messages.contains('mission hop on vehicle 1: done')
+        messages.contains('mission hop on vehicle 2: done')
+        fleet.vehicles().every { !it.armed() && it.mission().size() == 4 }
+    }
+}
