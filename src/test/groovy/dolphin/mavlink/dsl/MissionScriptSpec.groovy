@@ -265,12 +265,9 @@ class MissionScriptSpec extends Specification {
         twice.allocate(h.platform.connectedNodes, b)
         b.allNodes()*.id == ['1', '2']
 
-        when: 'flying is the next issue'
-        m1.executor
-
-        then:
-        def e = thrown(EnvironmentException)
-        e.message.contains('cannot fly yet')
+        and: 'each occurrence gets its own executor, which flies the mission'
+        m1.executor instanceof dolphin.mavlink.mission.MissionExecutor
+        !m1.executor.is(m1.executor)
     }
 
     def "every command of C.6 rows 1 to 30 is a builder method, has its forms for errors and is documented"() {
