@@ -59,6 +59,9 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     private int reported;
     private boolean active;
     private boolean sawAuto;
+    /** A jump sent and not yet seen on the vehicle (MISSION_CURRENT back at or before its item); null when none. */
+    private JumpToItem jumping;
+    private long resendJump;
 
     public MissionExecutor(Mission mission) {
         super(mission);
@@ -72,7 +75,10 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     /** The report's consume(MISSION_ITEM_REACHED), on the communications thread: "reached at least seq". */
     public void consume(msg_mission_item_reached message) {
         synchronized (this) {
-            reached = Math.max(reached, message.seq);
+            // Until the vehicle shows it jumped, a MISSION_ITEM_REACHED may be from before the jump.
+            if (jumping == null) {
+                reached = Math.max(reached, message.seq);
+            }
         }
     }
 
@@ -251,6 +257,9 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             active = true;
         }
         int last = items.size() - 1;
+        if (!jumpSeen(s)) {
+            return CompletionState.IN_PROGRESS;
+        }
         int r = reached;
         if (active && s.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE) {
             r = Math.max(r, s.missionSeq() - 1);
@@ -282,8 +291,34 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         return CompletionState.IN_PROGRESS;
     }
 
+    /**
+     * After a jump, MISSION_CURRENT and MISSION_ITEM_REACHED from before it (items past the jump's key)
+     * still arrive: they are ignored until MISSION_CURRENT is back at or before the jump's item. The jump's
+     * MISSION_SET_CURRENT is sent again each second until then, in case it was lost.
+     */
+    private boolean jumpSeen(VehicleState s) {
+        synchronized (this) {
+            if (jumping == null) {
+                return true;
+            }
+            if (s.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE && s.missionSeq() >= 0 && s.missionSeq() <= jumping.item()) {
+                jumping = null;
+                return true;
+            }
+        }
+        long now = clock().nanoTime();
+        if (now >= resendJump) {
+            jumping.toMavLinkMessage(node).forEach(node::send);
+            resendJump = now + Duration.ofSeconds(1).toNanos();
+        }
+        return false;
+    }
+
     /** Sends the non-mission commands keyed by the items reached; a jump goes back and runs them again. */
     private void sendKeyedCommands(int r) {
+        if (r <= sentUpTo) {
+            return;
+        }
         for (Map.Entry<Integer, List<DroneCommand>> e : keyed.subMap(sentUpTo, false, r, true).entrySet()) {
             for (DroneCommand c : e.getValue()) {
                 if (c instanceof JumpToItem jump) {
@@ -294,7 +329,9 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                         progress("jump to item " + jump.item());
                         synchronized (this) {
                             reached = jump.item() - 1;
+                            jumping = jump;
                         }
+                        resendJump = clock().nanoTime() + Duration.ofSeconds(1).toNanos();
                         sentUpTo = jump.item() - 1;
                         reported = sentUpTo;
                         return;

@@ -63,7 +63,7 @@ class MissionExecutorFaultsSpec extends Specification {
         Thread t = Thread.start {
             long end = System.nanoTime() + 60_000_000_000L
             try {
-                while (!messages.any(wanted)) {
+                while (!seen(wanted)) {
                     if (System.nanoTime() > end) {
                         throw new AssertionError("no awaited message within 60 s; messages: ${messages}")
                     }
@@ -75,6 +75,13 @@ class MissionExecutorFaultsSpec extends Specification {
             }
         }
         t
+    }
+
+    /** Iterating a synchronized list needs its lock: the script thread adds messages meanwhile. */
+    boolean seen(Closure<Boolean> wanted) {
+        synchronized (messages) {
+            messages.any(wanted)
+        }
     }
 
     static List<String> diffs(List<MissionItem> intended, List<MissionItem> stored) {
