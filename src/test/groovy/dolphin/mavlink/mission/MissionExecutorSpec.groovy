@@ -114,4 +114,27 @@ class MissionExecutorSpec extends Specification {
         messages.contains('mission hop on vehicle 2: done')
         fleet.vehicles().every { !it.armed() && it.mission().size() == 4 }
     }
+
+    def "a battery threshold cuts the mission of the right vehicle, which flies home; the other vehicle finishes"() {
+        given: 'two copters; batteries drain 14 % per minute while armed'
+        def fleet = h.fleet(2)
+
+        when:
+        def result = run(HOP + '''
+            back = mission { name 'back'; home location(40.444233, -7.375234, 820); returnHomeAndLand() }
+            v1 = pick { id '1'; timeout 10 }
+            v2 = pick { id '2'; timeout 10 }
+            execute v1: (hop / { battery(v1) < 0.97 }) >> back, v2: hop
+            message "batteries: ${battery(v1)}, ${battery(v2)}"
+        ''')
+
+        then:
+        result.outcome == ScriptResult.Outcome.COMPLETED
+        messages.contains('mission hop on vehicle 1: cut short: RTL')
+        !messages.contains('mission hop on vehicle 2: cut short: RTL')
+        messages.contains('mission back on vehicle 1: done')
+        messages.contains('mission hop on vehicle 2: done')
+        fleet.vehicles().every { !it.armed() }
+        fleet.vehicle(1).position().distanceTo(dolphin.core.Position.fromDegrees(40.444233, -7.375234, 820)) < 2
+    }
 }
