@@ -1,0 +1,220 @@
+package dolphin.examples
+
+import dolphin.cli.Main
+import dolphin.core.Position
+import java.util.concurrent.TimeUnit
+import spock.lang.Shared
+import spock.lang.Specification
+import spock.lang.Timeout
+
+/**
+ * Every script in dsl-examples/ runs to completion against the in-process simulated fleet, as
+ * `dolphin run SCRIPT --sim N --speedup X` with the command line its comment gives, and its outcome
+ * is checked from the printed lines: the MissionExecutor's progress ("mission X on vehicle N: ...")
+ * and the script's own messages.
+ */
+class ExamplesSpec extends Specification {
+
+    static final Position HOME = Position.fromDegrees(40.444233, -7.375234, 820)
+    static final String DIR = 'dsl-examples'
+
+    /** Examples this spec runs; the first feature checks that it is every file in dsl-examples/. */
+    static final List<String> COVERED = [
+            'two-drones-survey', 'listing2-single-vehicle', 'listing3-two-vehicles', 'listing4-keep-two-airborne',
+            'operators', 'loiters', 'survey', 'camera', 'watch-onerror', 'first-flight', 'battery-and-position']
+
+    @Shared
+    Map<String, String> commandLines = [:]
+
+    /** Runs the example with the `./dolphin run ...` line of its own comment; a deadline of 90 s. */
+    Map run(String example) {
+        File file = new File(DIR, "${example}.dolphin")
+        def m = file.text =~ /(?m)^\/\/\s+\.\/dolphin run (\S+)((?: --\S+ \S+)*)\s*$/
+        assert m.find(): "${file}: no './dolphin run ${file} --sim N ...' line in its comment"
+        assert m.group(1) == file.path
+        List<String> args = ['run', file.path] + m.group(2).trim().split(/\s+/).toList()
+        assert args.contains('--sim')
+        def out = new StringWriter()
+        def err = new StringWriter()
+        def code = new java.util.concurrent.CompletableFuture<Integer>()
+        def thread = Thread.start("example ${example}") {
+            try {
+                code.complete(Main.commandLine(new PrintWriter(out), new PrintWriter(err)).execute(args as String[]))
+            } catch (Throwable t) {
+                code.completeExceptionally(t)
+            }
+        }
+        Integer exit
+        try {
+            exit = code.get(90, TimeUnit.SECONDS)
+        } catch (java.util.concurrent.TimeoutException e) {
+            thread.interrupt()
+            assert false: "${example} did not end within 90 s; output so far:\n${out}\n${err}"
+        }
+        List<String> lines = out.toString().readLines().collect { it.replaceFirst(/^\[\s*[\d.]+ s\] /, '') }
+        [code: exit, out: out.toString(), err: err.toString(), lines: lines]
+    }
+
+    /**
+     * The index of the first line equal to {@code line} (or starting with it, when it ends with '*'),
+     * after {@code from}; fails with the output if there is none.
+     */
+    static int after(List<String> lines, int from, String line) {
+        int i = lines.findIndexOf(from + 1) { line.endsWith('*') ? it.startsWith(line[0..-2]) : it == line }
+        assert i > from: "no line '${line}' after line ${from}:\n${lines.join('\n')}"
+        i
+    }
+
+    /** Each line appears, in this order; fails with the output if one does not. */
+    static boolean inOrder(List<String> lines, String... expected) {
+        int i = -1
+        expected.each { i = after(lines, i, it) }
+        true
+    }
+
+    static Position parsePosition(String text) {
+        def m = text =~ /\((-?[\d.]+)°, (-?[\d.]+)°, (-?[\d.]+)\)/
+        assert m.find(): "no position in '${text}'"
+        Position.fromDegrees(m.group(1) as double, m.group(2) as double, m.group(3) as double)
+    }
+
+    def "every file in dsl-examples/ is run by this spec"() {
+        expect:
+        new File(DIR).listFiles().findAll { it.name.endsWith('.dolphin') }*.name*.replace('.dolphin', '').sort() == COVERED.sort()
+    }
+
+    @Timeout(100)
+    def "the recorded two-vehicle scenario: take off, survey, cut at 70 %, return mission, land and disarm at home, exit 0"() {
+        when:
+        def r = run('two-drones-survey')
+        List<String> lines = r.lines
+
+        then:
+        r.code == 0
+        [[1, 'Survey Area 1', 'Return to base 1', 1], [2, 'Survey Area 2', 'Return to base 2', -1]].every { n, survey, back, northward ->
+            int i = after(lines, -1, "mission ${survey} on vehicle ${n}: uploading 45 items")
+            i = after(lines, i, "mission ${survey} on vehicle ${n}: armed")
+            i = after(lines, i, "mission ${survey} on vehicle ${n}: started")
+            i = after(lines, i, "mission ${survey} on vehicle ${n}: item 1 of 44 reached")   // the take-off
+            i = after(lines, i, "mission ${survey} on vehicle ${n}: cut short: RTL")
+            // cut at the threshold, on its own survey leg (north for vehicle 1, south for 2), at 920 m
+            int cut = lines.findIndexOf(i) { it.startsWith("vehicle { ${n} } cut short at battery ") }
+            assert cut > i
+            assert (lines[cut] =~ /battery (\d+) %/)[0][1].toInteger() in 60..69
+            Position p = parsePosition(lines[cut])
+            assert (p.latitudeDegrees() - HOME.latitudeDegrees()) * northward * 111_000 > 500
+            assert Math.abs(p.hae() - 920) < 5
+            i = after(lines, cut, "mission ${back} on vehicle ${n}: uploading 2 items")
+            i = after(lines, i, "mission ${back} on vehicle ${n}: started")
+            i = after(lines, i, "mission ${back} on vehicle ${n}: done")   // landed and disarmed
+            assert !lines.any { it.contains("mission ${survey} on vehicle ${n}: done") }
+            int landed = lines.findIndexOf(i) { it.startsWith("vehicle { ${n} } landed at ") }
+            assert landed > i
+            assert parsePosition(lines[landed]).distanceTo(HOME) < 5
+            true
+        }
+        lines.contains('both vehicles back: DONE')
+        lines.last() == 'dsl-examples/two-drones-survey.dolphin: completed'
+        !r.out.contains('ERROR')
+    }
+
+    @Timeout(100)
+    def "Listing 2: one vehicle flies until 30 %, is sent home, flies the return mission and lands"() {
+        when:
+        def r = run('listing2-single-vehicle')
+
+        then:
+        r.code == 0
+        inOrder(r.lines, 'mission Survey Area on vehicle 1: started', 'mission Survey Area on vehicle 1: cut short: RTL',
+                'mission Return to base on vehicle 1: started', 'mission Return to base on vehicle 1: done')
+        r.lines.find { it.startsWith('vehicle { 1 } is back home: battery ') }
+        r.lines.last() == 'dsl-examples/listing2-single-vehicle.dolphin: completed'
+    }
+
+    @Timeout(100)
+    def "Listing 3: two vehicles survey concurrently, each is cut at 30 % and flies the one return mission on itself"() {
+        when:
+        def r = run('listing3-two-vehicles')
+
+        then:
+        r.code == 0
+        [[1, 'Survey Area 1'], [2, 'Survey Area 2']].every { n, survey ->
+            int i = after(r.lines, -1, "mission ${survey} on vehicle ${n}: started")
+            i = after(r.lines, i, "mission ${survey} on vehicle ${n}: cut short: RTL")
+            i = after(r.lines, i, "mission Return to base on vehicle ${n}: started")
+            after(r.lines, i, "mission Return to base on vehicle ${n}: done") > 0
+        }
+        r.lines.contains('vehicles { 1 } and { 2 } are back home')
+        r.lines.last() == 'dsl-examples/listing3-two-vehicles.dolphin: completed'
+    }
+
+    @Timeout(100)
+    def "Listing 4: two rounds keep two vehicles flying and swap in fresh ones: four distinct vehicles flown"() {
+        when:
+        def r = run('listing4-keep-two-airborne')
+        def flown = r.lines.findAll { it ==~ /mission Survey Area \d on vehicle \d+: started/ }
+                .collect { (it =~ /vehicle (\d+)/)[0][1].toInteger() }
+
+        then:
+        r.code == 0
+        flown.sort() == [1, 2, 3, 4]
+        (1..4).every { n ->
+            int i = after(r.lines, -1, "mission Return to base on vehicle ${n}: started")
+            after(r.lines, i, "mission Return to base on vehicle ${n}: done") > 0
+        }
+        int round1 = after(r.lines, -1, 'round done: vehicles { 1 } and { 2 } are back home')
+        // the fresh vehicles are picked while 1 and 2 are still bound, and fly after them
+        after(r.lines, round1, 'picked { 3 } from the free vehicles { 3 4 }') > round1
+        after(r.lines, round1, 'mission Survey Area 1 on vehicle 3: started') > round1
+        after(r.lines, round1, 'round done: vehicles { 3 } and { 4 } are back home') > round1
+        r.lines.last() == 'dsl-examples/listing4-keep-two-airborne.dolphin: completed'
+    }
+
+    @Timeout(100)
+    def "operators: sequence, concurrency, a condition, during and explicit vehicles in one execute"() {
+        when:
+        def r = run('operators')
+
+        then:
+        r.code == 0
+        inOrder(r.lines, 'mission hop on vehicle 1: done', 'task hover north started on vehicle 1',
+                'mission hover north on vehicle 1: cut short: RTL', 'mission back on vehicle 1: done')
+        inOrder(r.lines, 'mission hover on vehicle 2: cut short: RTL', 'mission back on vehicle 2: done')
+        r.lines.find { it ==~ /operators: DONE; battery \d+ % and \d+ %/ }
+    }
+
+    @Timeout(100)
+    def "#example: #expected"() {
+        when:
+        def r = run(example)
+
+        then:
+        r.code == 0
+        inOrder(r.lines, *expected)
+        r.lines.last() == "dsl-examples/${example}.dolphin: completed".toString()
+
+        where:
+        example                | expected
+        'loiters'              | ['mission loiters on vehicle 1: item 5 of 5 reached', 'mission loiters on vehicle 1: done', 'loiters: DONE']
+        'camera'               | ['mission photos on vehicle 1: uploading 11 items', 'mission photos on vehicle 1: done', 'camera: DONE']
+        'survey'               | ['mission survey on vehicle 1: cut short: RTL', 'mission return home on vehicle 1: done']
+        'first-flight'         | ['mission first flight on vehicle 1: done', 'the flight ended DONE, battery *']
+        'battery-and-position' | ['vehicle { 1 }: battery 100 %, position (40.444233°, -7.375234°, 820.000)',
+                                  'vehicle { 2 }: battery 100 %, position (40.444233°, -7.375116°, 820.000)']
+    }
+
+    @Timeout(100)
+    def "watch/onError: the refused upload reaches the handler, which ignores it, and the next survey flies"() {
+        when:
+        def r = run('watch-onerror')
+
+        then:
+        r.code == 0
+        r.lines.findIndexOf { it.startsWith('the fine survey failed: ') && it.contains('MAV_MISSION_NO_SPACE') } >
+                r.lines.indexOf('mission fine survey on vehicle 1: uploading 1005 items')
+        r.lines.indexOf('mission coarse survey on vehicle 1: done') >
+                r.lines.findIndexOf { it.startsWith('the fine survey failed: ') }
+        r.lines.contains('watch: DONE')
+        !r.lines.any { it.contains('mission fine survey on vehicle 1: started') }
+    }
+}
