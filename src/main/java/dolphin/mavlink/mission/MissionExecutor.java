@@ -23,6 +23,7 @@ import java.util.Map;
 import java.util.OptionalLong;
 import java.util.TreeMap;
 import java.util.concurrent.CompletableFuture;
+import java.util.function.Predicate;
 import java.util.function.Supplier;
 
 /**
@@ -35,8 +36,11 @@ public final class MissionExecutor extends PlatformTaskExecutor {
 
     public enum State { PREPARE, UPLOAD, VERIFY, ARM, START, RUNNING, DONE, ERROR }
 
-    /** A command of PREPARE or START: what it is (for errors) and how to send it. */
-    private record Step(String what, Supplier<CompletableFuture<CommandResult>> send) {
+    /**
+     * A command of PREPARE or START: what it is (for errors), how to send it, and how the vehicle's
+     * state shows it took effect (for when every COMMAND_ACK was lost on the way back).
+     */
+    private record Step(String what, Supplier<CompletableFuture<CommandResult>> send, Predicate<VehicleState> effect) {
     }
 
     private final Mission mission;
@@ -109,12 +113,13 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         VehicleState s = node.state();
         if (s.armed() && isMode(s, "AUTO")) {
             String hold = holdMode();
-            steps.add(new Step("leaving AUTO for " + hold + " before the new mission", () -> setMode(hold)));
+            steps.add(new Step("leaving AUTO for " + hold + " before the new mission", () -> setMode(hold), st -> isMode(st, hold)));
         }
         if (mission.getHome() != null) {
             var h = mission.getHome();
             steps.add(new Step("DO_SET_HOME", () -> comms.command(node, MAV_CMD.MAV_CMD_DO_SET_HOME, 0, 0, 0, 0,
-                    (float) h.latitudeDegrees(), (float) h.longitudeDegrees(), (float) h.hae())));
+                    (float) h.latitudeDegrees(), (float) h.longitudeDegrees(), (float) h.hae()),
+                    st -> st.home() != null && st.home().distanceTo(h) < 1));
         }
         enter(State.PREPARE, config.prepare());
     }
@@ -207,7 +212,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             if (r == null) {
                 return CompletionState.IN_PROGRESS;
             }
-            if (!r.accepted()) {
+            if (!tookEffect(r, st -> isMode(st, "GUIDED"))) {
                 return fail("vehicle " + node.getId() + " refused GUIDED: " + r.resultName());
             }
             armModeSet = true;
@@ -222,13 +227,14 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         if (r == null) {
             return CompletionState.IN_PROGRESS;
         }
-        if (r.accepted()) {
+        if (tookEffect(r, VehicleState::armed)) {
             progress("armed");
             if (getFamily() == VehicleFamily.COPTER) {
-                steps.add(new Step("AUTO", () -> setMode("AUTO")));
-                steps.add(new Step("MAV_CMD_MISSION_START", () -> comms.command(node, MAV_CMD.MAV_CMD_MISSION_START, 0, 0)));
+                steps.add(new Step("AUTO", () -> setMode("AUTO"), st -> isMode(st, "AUTO")));
+                steps.add(new Step("MAV_CMD_MISSION_START", () -> comms.command(node, MAV_CMD.MAV_CMD_MISSION_START, 0, 0),
+                        st -> st.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE));
             } else {
-                steps.add(new Step("AUTO", () -> setMode("AUTO")));
+                steps.add(new Step("AUTO", () -> setMode("AUTO"), st -> isMode(st, "AUTO")));
             }
             enter(State.START, config.start());
             return CompletionState.IN_PROGRESS;
@@ -364,7 +370,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 return false;
             }
             Step step = steps.poll();
-            if (!r.accepted()) {
+            if (!tookEffect(r, step.effect())) {
                 failure = "vehicle " + node.getId() + " refused " + step.what() + ": " + r.resultName();
                 return false;
             }
@@ -394,6 +400,14 @@ public final class MissionExecutor extends PlatformTaskExecutor {
 
     private static boolean isMode(VehicleState s, String name) {
         return s.heartbeat() != null && s.family().modeNumber(name).orElse(-1) == s.customMode();
+    }
+
+    /**
+     * Accepted, or unanswered while the vehicle's state shows the command took effect: on a lossy
+     * link every COMMAND_ACK may be lost although the command arrived.
+     */
+    private boolean tookEffect(CommandResult r, Predicate<VehicleState> effect) {
+        return r.accepted() || (r.result() == CommandResult.NO_ACK && effect.test(node.state()));
     }
 
     private CommandResult commandDone() {
