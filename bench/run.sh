@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# Codec throughput benchmark: dolphin.mavlink.codec (JMH, one thread) against pymavlink's parser
-# on the same bytes, in one run. See bench/README.md.
+# The benchmarks (bench/README.md): the codec throughput benchmark (dolphin.mavlink.codec, JMH, one
+# thread, against pymavlink's parser on the same bytes), then the mission upload benchmark
+# (bench/upload.sh: dolphin's uploader against the protocol floor and a pymavlink uploader).
 #
 #   bench/run.sh [--no-build] [JMH options...]
+#   BENCH=codec bench/run.sh ...     # only the codec benchmark; BENCH=upload: only the upload benchmark
 #
 # Builds the main project (its jar, runtime classpath and .venv with the pinned pymavlink) and
 # this benchmark project, writes the mixed stream to bench/target/results/stream.bin, runs the
@@ -10,12 +12,14 @@
 # otherwise, e.g. `bench/run.sh -wi 5 -i 10`), runs pymavlink_parse.py on the same file with the
 # project's venv Python, and prints the summary (also in bench/target/results/summary.txt).
 # DOLPHIN_JAR=path/to/dolphin.jar measures that jar instead of target/dolphin.jar (before/after).
-# Takes about 1.5 minutes on 2 cores once Maven's cache is warm.
+# Takes about 1.5 minutes on 2 cores once Maven's cache is warm, plus about 2 minutes for the upload
+# benchmark.
 set -euo pipefail
 bench="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(dirname "$bench")"
 out="$bench/target/results"
 frames=10000   # CodecBenchmark.FRAMES
+which="${BENCH:-all}"
 
 build=1
 if [ "${1:-}" = "--no-build" ]; then
@@ -28,6 +32,9 @@ if [ "$build" = 1 ]; then
   (cd "$root" && mvn -B -q -ntp -DskipTests package)
   echo "== building the benchmarks" >&2
   (cd "$bench" && mvn -B -q -ntp package)
+fi
+if [ "$which" = upload ]; then
+  exec "$bench/upload.sh" --no-build
 fi
 for f in "${DOLPHIN_JAR:-$root/target/dolphin.jar}" "$root/.venv/bin/python" "$bench/target/classes/META-INF/BenchmarkList"; do
   [ -e "$f" ] || { echo "bench/run.sh: missing $f (run without --no-build)" >&2; exit 1; }
@@ -97,3 +104,8 @@ targets = [("framing, stream >= 3 M frames/s", java("framingStream")[0] >= 3e6),
 for label, met in targets:
     print(f"target {label:42s} {'met' if met else 'MISSED'}")
 PY
+
+if [ "$which" = all ]; then
+  echo >&2
+  "$bench/upload.sh" --no-build
+fi

@@ -1,0 +1,563 @@
+package dolphin.bench;
+
+import com.MAVLink.enums.MAV_CMD;
+import com.MAVLink.enums.MAV_RESULT;
+import dolphin.core.Position;
+import dolphin.core.SystemClock;
+import dolphin.mavlink.CommandResult;
+import dolphin.mavlink.MAVLinkCommunications;
+import dolphin.mavlink.MAVLinkConfig;
+import dolphin.mavlink.MAVLinkNode;
+import dolphin.mavlink.mission.MissionItem;
+import dolphin.mavlink.mission.MissionTransferConfig;
+import dolphin.mavlink.mission.MissionVerification;
+import dolphin.mavlink.mission.TransferProgress;
+import dolphin.mavlink.mission.TransferResult;
+import dolphin.sim.FaultModel;
+import dolphin.sim.SimFleet;
+import dolphin.sim.VehicleKind;
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.net.InetSocketAddress;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+import java.util.function.BooleanSupplier;
+
+/**
+ * End-to-end mission upload times over loopback UDP against a simulated copter (dolphin.sim) on a
+ * real-time clock, compared in the same run with the protocol floor (N + 2 COMMAND_LONG /
+ * COMMAND_ACK round trips on the same link) and with a pymavlink uploader (bench/pymavlink_upload.py)
+ * against the same kind of simulated vehicle; then 50 uploads with 10% and 30% loss both ways.
+ * Not JMH: these are wall-clock times of whole transfers, in ms. See bench/README.md.
+ *
+ * <pre>UploadBench OUT_DIR PYTHON PYMAVLINK_SCRIPT [--quick]</pre>
+ *
+ * Writes OUT_DIR/upload.json (every sample) and prints a summary (also OUT_DIR/upload-summary.txt).
+ */
+public final class UploadBench {
+
+    static final int[] SIZES = {10, 100, 500};
+    static final int LOSSY_SIZE = 10;
+    static final int LOSSY_UPLOADS_EACH = 25;   // of LOSSY_SIZE items at 10% and at 30%: 50 in all
+    /** The floor command: MAV_CMD_REQUEST_MESSAGE for HEARTBEAT, which the simulator does not send on request: one COMMAND_ACK (FAILED) back, no other message. */
+    static final int FLOOR_COMMAND = MAV_CMD.MAV_CMD_REQUEST_MESSAGE;
+
+    private final Path out;
+    private final String python;
+    private final String script;
+    private final boolean quick;
+    private final StringBuilder summary = new StringBuilder();
+    private final Map<String, Object> json = new LinkedHashMap<>();
+
+    UploadBench(Path out, String python, String script, boolean quick) {
+        this.out = out;
+        this.python = python;
+        this.script = script;
+        this.quick = quick;
+    }
+
+    public static void main(String[] args) throws Exception {
+        if (args.length < 3) {
+            System.err.println("usage: UploadBench OUT_DIR PYTHON PYMAVLINK_SCRIPT [--quick]");
+            System.exit(2);
+        }
+        Path out = Path.of(args[0]);
+        Files.createDirectories(out);
+        boolean quick = args.length > 3 && args[3].equals("--quick");
+        int failures = new UploadBench(out, args[1], args[2], quick).run();
+        System.exit(failures == 0 ? 0 : 1);
+    }
+
+    /** Home, then NAV_WAYPOINTs on a zig-zag north of it, 20-70 m above home: a valid mission of {@code n} items. */
+    static List<MissionItem> mission(Position home, int n) {
+        List<MissionItem> items = new ArrayList<>(n);
+        items.add(MissionItem.at(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, home, 0, 0, 0, 0));
+        for (int i = 1; i < n; i++) {
+            Position p = Position.fromDegrees(home.latitudeDegrees() + i * 2e-5, home.longitudeDegrees() + (i % 2) * 3e-5,
+                    home.hae() + 20 + i % 50);
+            items.add(MissionItem.at(i, MAV_CMD.MAV_CMD_NAV_WAYPOINT, p, 0, 2, 0, Float.NaN));
+        }
+        return items;
+    }
+
+    int run() throws Exception {
+        int failures = 0;
+        String date = java.time.LocalDate.now().toString();
+        line("mission upload benchmark, %s, %d cores, Java %s; loopback UDP, simulated copter on a real-time clock",
+                date, Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"));
+        json.put("date", date);
+        int reps = quick ? 3 : 21;
+
+        // ---- (3) pymavlink: its own process, fleet (a lossless copter, sysid 1) and port; it uploads
+        // when told to, between our measurements, so both see the same conditions
+        Position home = SimFleet.Config.of(1, VehicleKind.COPTER, new InetSocketAddress("127.0.0.1", 1)).home();
+        List<String> cmd = new ArrayList<>(List.of(python, script, "--port-file", out.resolve("pymavlink.port").toString(),
+                "--warmup", quick ? "2" : "10"));
+        for (int n : SIZES) {
+            Path f = out.resolve("items-" + n + ".json");
+            Files.writeString(f, itemsJson(mission(home, n)));
+            cmd.add(f.toString());
+        }
+        Files.deleteIfExists(out.resolve("pymavlink.port"));
+        Process proc = new ProcessBuilder(cmd).redirectError(ProcessBuilder.Redirect.INHERIT).start();
+        BufferedReader pyIn = new BufferedReader(new InputStreamReader(proc.getInputStream(), StandardCharsets.UTF_8));
+        java.io.Writer pyOutW = new java.io.OutputStreamWriter(proc.getOutputStream(), StandardCharsets.UTF_8);
+        waitFor(() -> Files.exists(out.resolve("pymavlink.port")), 20, "pymavlink_upload.py's port file");
+        SimFleet pyFleet = fleet(Integer.parseInt(Files.readString(out.resolve("pymavlink.port")).trim()), 1, FaultModel.NONE);
+        Map<Integer, double[]> py = new LinkedHashMap<>();
+        String pj = null;
+
+        // ---- (1)+(2) floor and our uploads, lossless --------------------------------------------
+        Map<Integer, double[]> floor = new LinkedHashMap<>();
+        Map<Integer, double[]> ours = new LinkedHashMap<>();
+        Map<Integer, double[]> oursDownload = new LinkedHashMap<>();
+        try (MAVLinkCommunications comms = new MAVLinkCommunications(MAVLinkConfig.of("udpin:127.0.0.1:0"), SystemClock.REAL)) {
+            comms.start();
+            int port = comms.links().get(0).localPort();
+            List<SimFleet> fleets = new ArrayList<>();
+            try {
+                SimFleet lossless = fleet(port, 1, FaultModel.NONE);
+                fleets.add(lossless);
+                MAVLinkNode node = awaitNode(comms, "1");
+                MissionTransferConfig config = MissionTransferConfig.DEFAULT;
+                String ready = pyIn.readLine();
+                if (!"ready".equals(ready)) {
+                    throw new IllegalStateException("pymavlink_upload.py: " + ready);
+                }
+
+                // warm-up (JIT of both sides): not measured
+                for (int i = 0; i < (quick ? 2 : 10); i++) {
+                    floorMs(comms, node, 102);
+                    uploadMs(node, mission(node.getHome(), 100), config, lossless, 1, null);
+                }
+                for (int n : SIZES) {
+                    List<MissionItem> items = mission(node.getHome(), n);
+                    double[] f = new double[reps];
+                    double[] u = new double[reps];
+                    double[] d = new double[reps];
+                    double[] q = new double[reps];
+                    for (int r = 0; r < reps; r++) {          // floor, ours and pymavlink alternate: same conditions
+                        f[r] = floorMs(comms, node, n + 2);
+                        double[] ud = uploadMs(node, items, config, lossless, 1, null);
+                        if (ud == null) {
+                            failures++;
+                            u[r] = Double.NaN;
+                        } else {
+                            u[r] = ud[0];
+                            d[r] = ud[1];
+                        }
+                        pyOutW.write(n + "\n");
+                        pyOutW.flush();
+                        String answer = pyIn.readLine();
+                        if (answer == null || answer.startsWith("fail")) {
+                            line("pymavlink upload of %d items: %s", n, answer);
+                            failures++;
+                            q[r] = Double.NaN;
+                        } else {
+                            q[r] = Double.parseDouble(answer);
+                        }
+                    }
+                    py.put(n, q);
+                    floor.put(n, f);
+                    ours.put(n, u);
+                    oursDownload.put(n, d);
+                }
+
+                pyOutW.write("quit\n");
+                pyOutW.flush();
+                pj = pyIn.readLine();
+                if (!proc.waitFor(10, TimeUnit.SECONDS)) {
+                    proc.destroy();
+                }
+                // the last pymavlink upload was the 500-item mission: the vehicle must hold it
+                String diff = MissionVerification.firstDifference(mission(home, SIZES[SIZES.length - 1]),
+                        pyFleet.vehicle(1).mission()).orElse(null);
+                if (diff != null) {
+                    line("pymavlink: the vehicle's mission differs: %s", diff);
+                    failures++;
+                }
+                pyFleet.close();
+                Files.writeString(out.resolve("pymavlink-upload.json"), pj == null ? "" : pj + "\n");
+
+                // ---- (4) lossy: 25 uploads at 10% (one vehicle) and 25 at 30% (three vehicles, 9 + 8 + 8), in parallel.
+                // Each vehicle has its own fleet, seeded fault model (both ways) and thread; the uploads
+                // wait on timeouts, not on the CPU, so running them side by side changes no time.
+                // Timeout 250 ms. Tries: "sends of one message without progress" must outlast the vehicle's
+                // re-request period (1 s, as ArduPilot): when a MISSION_REQUEST is lost, resending the item
+                // before it only draws INVALID_SEQUENCE, and only the vehicle's next re-request gets through.
+                // 24 tries (6 s, 5 re-requests) at 10%; 32 (8 s, the vehicle's own upload timeout) at 30%.
+                int lossyEach = quick ? 4 : LOSSY_UPLOADS_EACH;
+                MissionTransferConfig c10 = new MissionTransferConfig(Duration.ofMillis(250), 24);
+                MissionTransferConfig c30 = new MissionTransferConfig(Duration.ofMillis(250), 32);
+                List<Lossy> lossy = new ArrayList<>();
+                // {loss, items, sysid, seed, config, uploads}; besides the 50 uploads of 10 items, 3 of 100 items at 10%
+                Object[][] plan = {{"10%", 10, 2, 0.10, 10L, c10, lossyEach},
+                        {"30%", 10, 3, 0.30, 30L, c30, lossyEach - 2 * (lossyEach / 3)},
+                        {"30%", 10, 4, 0.30, 31L, c30, lossyEach / 3}, {"30%", 10, 5, 0.30, 32L, c30, lossyEach / 3},
+                        {"10%", 100, 6, 0.10, 60L, c10, quick ? 1 : 3}};
+                for (Object[] v : plan) {
+                    SimFleet f = fleet(port, (Integer) v[2], FaultModel.loss((Double) v[3], (Long) v[4]));
+                    fleets.add(f);
+                    lossy.add(new Lossy((String) v[0], (Integer) v[1], awaitNode(comms, String.valueOf(v[2])), f, (Integer) v[2],
+                            (MissionTransferConfig) v[5], (Integer) v[6]));
+                }
+                List<Thread> threads = new ArrayList<>();
+                for (Lossy l : lossy) {
+                    Thread t = new Thread(l, "lossy-" + l.sysid);
+                    t.start();
+                    threads.add(t);
+                }
+                for (Thread t : threads) {
+                    t.join();
+                }
+
+                // ---- report ours ------------------------------------------------------------------
+                line("");
+                line("lossless, %d runs each (after warm-up); ms, median / p90", reps);
+                line("%-6s %18s %18s %18s %10s %12s", "items", "floor (N+2 RTT)", "dolphin upload", "(download)", "up/floor", "RTT median");
+                Map<String, Object> lossless0 = new LinkedHashMap<>();
+                for (int n : SIZES) {
+                    double[] f = floor.get(n);
+                    double[] u = ours.get(n);
+                    line("%-6d %8.1f / %7.1f %8.1f / %7.1f %8.1f / %7.1f %9.2fx %9.3f ms", n, median(f), p90(f), median(u), p90(u),
+                            median(oursDownload.get(n)), p90(oursDownload.get(n)), median(u) / median(f), median(f) / (n + 2));
+                    lossless0.put(String.valueOf(n), Map.of("floor_ms", list(f), "upload_ms", list(u), "download_ms", list(oursDownload.get(n))));
+                }
+                json.put("lossless", lossless0);
+                line("");
+                line("lossy, loss both ways (seeded), each upload verified by download; ms");
+                for (String[] group : new String[][] {{"10%", "10"}, {"30%", "10"}, {"10%", "100"}}) {
+                    String name = group[0];
+                    int size = Integer.parseInt(group[1]);
+                    double base = median(ours.get(size));
+                    List<Lossy> ls = lossy.stream().filter(l -> l.name.equals(name) && l.size == size).toList();
+                    double[] times = ls.stream().flatMap(l -> l.times.stream()).mapToDouble(Double::doubleValue).toArray();
+                    double[] resends = ls.stream().flatMap(l -> l.resends.stream()).mapToDouble(Double::doubleValue).toArray();
+                    int rounds = ls.stream().mapToInt(l -> l.rounds).sum();
+                    int verified = ls.stream().mapToInt(l -> l.verified).sum();
+                    int ackLost = ls.stream().mapToInt(l -> l.ackLost).sum();
+                    int failed = ls.stream().mapToInt(l -> l.failed).sum();
+                    List<String> errors = ls.stream().flatMap(l -> l.errors.stream().map(e -> "vehicle " + l.sysid + ", " + e)).toList();
+                    MissionTransferConfig c = ls.get(0).config;
+                    failures += failed;
+                    lossyFailed += failed;
+                    lossyTotal += rounds;
+                    line("%s loss, %d items: %d/%d uploads complete and verify (%d of them ACK-lost, then verified by download;"
+                            + " %d failed); %d vehicle(s); timeout %d ms x %d tries", name, size, verified, rounds, ackLost, failed, ls.size(),
+                            c.timeout().toMillis(), c.tries());
+                    line("   upload median %.0f / p90 %.0f / max %.0f ms = %.0f x the lossless %d-item median (%.2f ms); resends median %.0f",
+                            median(times), p90(times), max(times), median(times) / base, size, base, median(resends));
+                    json.put("lossy_" + name + "_" + size, Map.of("upload_ms", list(times), "resends", list(resends), "ack_lost", ackLost,
+                            "failed", failed, "verified", verified, "errors", errors));
+                    for (String e : errors) {
+                        line("   error: %s", e);
+                    }
+                }
+            } finally {
+                fleets.forEach(SimFleet::close);
+                pyFleet.close();
+                if (proc.isAlive()) {
+                    proc.destroy();
+                }
+            }
+        }
+
+        String pyInfo = pj == null ? "?" : jsonString(pj, "pymavlink") + ", Python " + jsonString(pj, "python");
+        if (pj == null || !pj.contains("\"errors\": []")) {
+            line("pymavlink errors: %s", pj == null ? "no report" : pj.substring(pj.indexOf("\"errors\"")));
+            failures++;
+        }
+        line("");
+        line("pymavlink uploader (pymavlink %s, MAVWPLoader + MISSION_ITEM_INT per request, as MAVProxy), %d runs each; ms", pyInfo, reps);
+        line("%-6s %18s %18s %12s %12s", "items", "pymavlink upload", "dolphin upload", "dolphin/py", "py/floor");
+        Map<String, Object> pyJson = new LinkedHashMap<>();
+        for (int n : SIZES) {
+            double[] q = py.get(n);
+            line("%-6d %8.1f / %7.1f %8.1f / %7.1f %11.2fx %11.2fx", n, median(q), p90(q), median(ours.get(n)), p90(ours.get(n)),
+                    median(ours.get(n)) / median(q), median(q) / median(floor.get(n)));
+            pyJson.put(String.valueOf(n), list(q));
+        }
+        json.put("pymavlink", pyJson);
+
+        // ---- targets -----------------------------------------------------------------------------
+        line("");
+        for (int n : SIZES) {
+            double r = median(ours.get(n)) / median(floor.get(n));
+            line("target %-52s %s (%.2fx)", "lossless " + n + " items <= 1.3 x floor", r <= 1.3 ? "met" : "MISSED", r);
+        }
+        for (int n : SIZES) {
+            double r = median(ours.get(n)) / median(py.get(n));
+            line("target %-52s %s (%.2fx its time)", "lossless " + n + " items faster than pymavlink", r < 1 ? "met" : "MISSED", r);
+        }
+        line("target %-52s %s (%d failed)", "all " + lossyTotal + " lossy uploads complete and verify", lossyFailed == 0 ? "met" : "MISSED",
+                lossyFailed);
+        @SuppressWarnings("unchecked")
+        double r10 = median(((List<Double>) ((Map<String, Object>) json.get("lossy_10%_" + LOSSY_SIZE)).get("upload_ms")).stream()
+                .mapToDouble(Double::doubleValue).toArray()) / median(ours.get(LOSSY_SIZE));
+        line("target %-52s %s (%.0fx)", "10% loss <= 3 x lossless (" + LOSSY_SIZE + " items)", r10 <= 3 ? "met" : "MISSED", r10);
+
+        Files.writeString(out.resolve("upload-summary.txt"), summary);
+        Files.writeString(out.resolve("upload.json"), toJson(json));
+        return failures;
+    }
+
+    /** 25 uploads of 10 items to one lossy vehicle, each verified by download. */
+    final class Lossy implements Runnable {
+        final String name;
+        final MAVLinkNode node;
+        final SimFleet fleet;
+        final int sysid;
+        final MissionTransferConfig config;
+        final int rounds;
+        final List<Double> times = new ArrayList<>();
+        final List<Double> resends = new ArrayList<>();
+        final List<String> errors = new ArrayList<>();
+        int verified;
+        int ackLost;
+        int failed;
+
+        final int size;
+
+        Lossy(String name, int size, MAVLinkNode node, SimFleet fleet, int sysid, MissionTransferConfig config, int rounds) {
+            this.name = name;
+            this.size = size;
+            this.node = node;
+            this.fleet = fleet;
+            this.sysid = sysid;
+            this.config = config;
+            this.rounds = rounds;
+        }
+
+        @Override
+        public void run() {
+            for (int round = 0; round < rounds; round++) {
+                final int r = round;
+                try {
+                    // a different mission each round, so a stale vehicle mission cannot pass verification
+                    List<MissionItem> items = mission(node.getHome(), size).stream()
+                            .map(i -> i.seq() == 0 ? i : new MissionItem(i.seq(), i.command(), i.frame(), i.param1(), i.param2(),
+                                    i.param3(), i.param4(), i.x(), i.y(), i.z() + sysid * 100 + r, i.autocontinue()))
+                            .toList();
+                    int[] counts = new int[2];
+                    double[] t = uploadMs(node, items, config, fleet, sysid, counts);
+                    if (t == null) {
+                        failed++;
+                        errors.add("round " + r + ": " + lastError);
+                        continue;
+                    }
+                    times.add(t[0]);
+                    resends.add((double) counts[0]);
+                    ackLost += counts[1];
+                    verified++;
+                } catch (Exception e) {
+                    failed++;
+                    errors.add("round " + r + ": " + e);
+                }
+            }
+        }
+
+        double[] times() {
+            return times.stream().mapToDouble(Double::doubleValue).toArray();
+        }
+
+        double[] resends() {
+            return resends.stream().mapToDouble(Double::doubleValue).toArray();
+        }
+    }
+
+    private volatile String lastError;
+    private int lossyFailed;
+    private int lossyTotal;
+
+    /**
+     * Uploads and then downloads to verify; returns {upload ms, download ms}, or null if it failed
+     * or did not verify. An upload that fails only because the final MISSION_ACK was lost (the
+     * vehicle holds the mission but our uploader cannot know) counts as complete when the download
+     * verifies; its time is that until the failure was reported; counts[1] = 1 then.
+     */
+    double[] uploadMs(MAVLinkNode node, List<MissionItem> items, MissionTransferConfig config, SimFleet fleet, int sysid,
+                      int[] counts) throws Exception {
+        long t0 = System.nanoTime();
+        TransferResult up = node.getUploadProtocol().upload(items, config, TransferProgress.NONE).get(120, TimeUnit.SECONDS);
+        long t1 = System.nanoTime();
+        boolean ackLost = false;
+        if (!up.success()) {
+            if (counts == null || !up.error().contains("its ACK was lost")) {
+                lastError = up.error();
+                return null;
+            }
+            ackLost = true;
+        }
+        if (counts != null) {
+            counts[0] = up.resends();
+            counts[1] = ackLost ? 1 : 0;
+        }
+        long t2 = System.nanoTime();
+        TransferResult down = null;
+        for (int attempt = 0; attempt < 3 && (down == null || !down.success()); attempt++) {
+            down = node.getDownloadProtocol().download(config, TransferProgress.NONE).get(120, TimeUnit.SECONDS);
+        }
+        long t3 = System.nanoTime();
+        if (!down.success()) {
+            lastError = "download: " + down.error();
+            return null;
+        }
+        String diff = MissionVerification.firstDifference(items, down.items()).orElse(null);
+        if (diff == null) {
+            diff = MissionVerification.firstDifference(items, fleet.vehicle(sysid).mission()).orElse(null);
+        }
+        if (diff != null) {
+            lastError = "verification: " + diff;
+            return null;
+        }
+        return new double[] {(t1 - t0) / 1e6, (t3 - t2) / 1e6};
+    }
+
+    /**
+     * {@code n} COMMAND_LONG / COMMAND_ACK round trips, one after the other, on the same link; ms.
+     * Each command is sent from the completion of the one before, on the communications thread,
+     * as the upload's state machine sends each item from the handling of its request.
+     */
+    static double floorMs(MAVLinkCommunications comms, MAVLinkNode node, int n) throws Exception {
+        CompletableFuture<Void> done = new CompletableFuture<>();
+        long t0 = System.nanoTime();
+        chain(comms, node, n, done);
+        done.get(30, TimeUnit.SECONDS);
+        return (System.nanoTime() - t0) / 1e6;
+    }
+
+    private static void chain(MAVLinkCommunications comms, MAVLinkNode node, int left, CompletableFuture<Void> done) {
+        if (left == 0) {
+            done.complete(null);
+            return;
+        }
+        comms.command(node, FLOOR_COMMAND, 0).whenComplete((r, e) -> {
+            if (e != null) {
+                done.completeExceptionally(e);
+            } else if (r.result() != MAV_RESULT.MAV_RESULT_FAILED || r.attempts() != 1) {
+                done.completeExceptionally(new IllegalStateException("floor round trip: unexpected " + r));
+            } else {
+                chain(comms, node, left - 1, done);
+            }
+        });
+    }
+
+    static SimFleet fleet(int gcsPort, int sysid, FaultModel faults) throws IOException {
+        SimFleet f = new SimFleet(SimFleet.Config.of(1, VehicleKind.COPTER, new InetSocketAddress("127.0.0.1", gcsPort))
+                .withFirstSysid(sysid).withFaults(faults), SystemClock.REAL);
+        f.start();
+        return f;
+    }
+
+    static MAVLinkNode awaitNode(MAVLinkCommunications comms, String id) throws InterruptedException {
+        waitFor(() -> comms.node(id) != null && comms.node(id).getHome() != null, 30, "vehicle " + id + " and its home");
+        return comms.node(id);
+    }
+
+    static void waitFor(BooleanSupplier condition, double seconds, String what) throws InterruptedException {
+        long end = System.nanoTime() + (long) (seconds * 1e9);
+        while (!condition.getAsBoolean()) {
+            if (System.nanoTime() > end) {
+                throw new IllegalStateException("timed out after " + seconds + " s waiting for " + what);
+            }
+            Thread.sleep(10);
+        }
+    }
+
+    // ---- statistics and output ----------------------------------------------------------------------
+
+    static double median(double[] v) {
+        return quantile(v, 0.5);
+    }
+
+    /** The 90th percentile, nearest rank. */
+    static double p90(double[] v) {
+        return quantile(v, 0.9);
+    }
+
+    static double quantile(double[] v, double q) {
+        double[] s = Arrays.stream(v).filter(x -> !Double.isNaN(x)).sorted().toArray();
+        if (s.length == 0) {
+            return Double.NaN;
+        }
+        if (q == 0.5 && s.length % 2 == 0) {
+            return (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+        }
+        return s[Math.min(s.length - 1, (int) Math.ceil(q * s.length) - 1)];
+    }
+
+    static double max(double[] v) {
+        return Arrays.stream(v).max().orElse(Double.NaN);
+    }
+
+    static List<Double> list(double[] v) {
+        return Arrays.stream(v).map(x -> Math.round(x * 1000) / 1000.0).boxed().toList();
+    }
+
+    void line(String format, Object... args) {
+        String s = String.format(Locale.ROOT, format, args);
+        System.out.println(s);
+        summary.append(s).append('\n');
+    }
+
+    static String itemsJson(List<MissionItem> items) {
+        StringBuilder b = new StringBuilder("[\n");
+        for (MissionItem i : items) {
+            b.append(String.format(Locale.ROOT, "[%d, %d, %d, %s, %s, %s, %s, %d, %d, %s, %d]", i.seq(), i.command(), i.frame(),
+                    f(i.param1()), f(i.param2()), f(i.param3()), f(i.param4()), i.x(), i.y(), f(i.z()), i.autocontinue() ? 1 : 0));
+            b.append(i.seq() == items.size() - 1 ? "\n" : ",\n");
+        }
+        return b.append("]\n").toString();
+    }
+
+    private static String f(float v) {
+        return Float.isNaN(v) ? "\"nan\"" : Float.toString(v);
+    }
+
+    static double[] jsonArray(String json, String key) {
+        int i = json.indexOf(key);
+        if (i < 0) {
+            throw new IllegalStateException("no " + key + " in pymavlink_upload.py's output: " + json);
+        }
+        int start = i + key.length();
+        String body = json.substring(start, json.indexOf(']', start));
+        return Arrays.stream(body.split(",")).map(String::trim).filter(s -> !s.isEmpty()).mapToDouble(Double::parseDouble).toArray();
+    }
+
+    static String jsonString(String json, String key) {
+        int i = json.indexOf("\"" + key + "\": \"");
+        if (i < 0) {
+            return "?";
+        }
+        int start = i + key.length() + 5;
+        return json.substring(start, json.indexOf('"', start));
+    }
+
+    static String toJson(Object o) {
+        if (o instanceof Map<?, ?> m) {
+            StringBuilder b = new StringBuilder("{");
+            m.forEach((k, v) -> b.append(b.length() > 1 ? ", " : "").append('"').append(k).append("\": ").append(toJson(v)));
+            return b.append('}').toString();
+        }
+        if (o instanceof List<?> l) {
+            StringBuilder b = new StringBuilder("[");
+            l.forEach(v -> b.append(b.length() > 1 ? ", " : "").append(toJson(v)));
+            return b.append(']').toString();
+        }
+        if (o instanceof String s) {
+            return '"' + s.replace("\\", "\\\\").replace("\"", "\\\"") + '"';
+        }
+        return String.valueOf(o);
+    }
+}
