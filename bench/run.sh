@@ -28,10 +28,7 @@ if [ "${1:-}" = "--no-build" ]; then
 fi
 
 if [ "$build" = 1 ]; then
-  echo "== building the main project (jar, runtime classpath, .venv with pymavlink)" >&2
-  (cd "$root" && mvn -B -q -ntp -DskipTests package)
-  echo "== building the benchmarks" >&2
-  (cd "$bench" && mvn -B -q -ntp package)
+  "$bench/build.sh"
 fi
 if [ "$which" = upload ]; then
   exec "$bench/upload.sh" --no-build

@@ -22,10 +22,7 @@ if [ "${1:-}" = "--no-build" ]; then
   shift
 fi
 if [ "$build" = 1 ]; then
-  echo "== building the main project (jar, runtime classpath, .venv with pymavlink)" >&2
-  (cd "$root" && mvn -B -q -ntp -DskipTests package)
-  echo "== building the benchmarks" >&2
-  (cd "$bench" && mvn -B -q -ntp package)
+  "$bench/build.sh"
 fi
 jar="${DOLPHIN_JAR:-$root/target/dolphin.jar}"
 for f in "$jar" "$root/.venv/bin/python" "$bench/target/classes/dolphin/bench/UploadBench.class"; do
