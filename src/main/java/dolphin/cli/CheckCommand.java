@@ -3,10 +3,7 @@ package dolphin.cli;
 import dolphin.dsl.Engine;
 import dolphin.dsl.ScriptError;
 import dolphin.mavlink.MAVLinkLanguage;
-import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -35,14 +32,8 @@ final class CheckCommand implements Callable<Integer> {
         engine.addExtension(new MAVLinkLanguage());
         int code = 0;
         for (Path script : scripts) {
-            String source;
-            try {
-                source = Files.readString(script);
-            } catch (NoSuchFileException e) {
-                err.println("dolphin check: cannot read " + script + ": no such file");
-                return Main.USAGE;
-            } catch (IOException e) {
-                err.println("dolphin check: cannot read " + script + ": " + e.getMessage());
+            String source = Main.readScript("check", script, err);
+            if (source == null) {
                 return Main.USAGE;
             }
             List<ScriptError> errors = engine.check(source, script.toString());

@@ -51,6 +51,19 @@ public final class Main implements Runnable {
         return cl;
     }
 
+    /** The script's text, or null after telling why it cannot be read (a usage error). */
+    static String readScript(String command, java.nio.file.Path script, PrintWriter err) {
+        try {
+            return java.nio.file.Files.readString(script, java.nio.charset.StandardCharsets.UTF_8);
+        } catch (java.nio.file.NoSuchFileException e) {
+            err.println("dolphin " + command + ": cannot read " + script + ": no such file");
+        } catch (java.io.IOException e) {
+            err.println("dolphin " + command + ": cannot read " + script + ": " + e.getMessage());
+        }
+        err.flush();
+        return null;
+    }
+
     /** Rejects a speed-up that is not a positive, finite number: a usage error. */
     static void checkSpeedup(CommandSpec spec, double speedup) {
         if (!(speedup > 0) || Double.isInfinite(speedup)) {

@@ -77,11 +77,8 @@ final class MissionCommand implements Callable<Integer> {
         if (out != null && format == null) {
             throw new ParameterException(spec.commandLine(), "--out needs --export: without it the missions are printed");
         }
-        String source;
-        try {
-            source = Files.readString(script, StandardCharsets.UTF_8);
-        } catch (IOException e) {
-            err.println("dolphin mission: cannot read " + script + ": " + (Files.exists(script) ? e.getMessage() : "no such file"));
+        String source = Main.readScript("mission", script, err);
+        if (source == null) {
             return Main.USAGE;
         }
         Path dir = null;

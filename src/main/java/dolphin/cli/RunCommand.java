@@ -16,12 +16,9 @@ import dolphin.sim.VehicleKind;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.net.InetSocketAddress;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Set;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -74,17 +71,13 @@ final class RunCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         validate();
-        String source;
-        try {
-            source = Files.readString(script);
-        } catch (IOException e) {
-            err.println("dolphin run: cannot read " + script + ": " + (Files.exists(script) ? e.getMessage() : "no such file"));
+        String source = Main.readScript("run", script, err);
+        if (source == null) {
             return Main.USAGE;
         }
         Clock clock = sim > 0 ? new SystemClock(speedup) : SystemClock.REAL;
         List<LinkUrl> urls = !links.isEmpty() ? links : List.of(LinkUrl.parse(sim > 0 ? "udpin:127.0.0.1:0" : MAVLinkConfig.DEFAULT_LINK));
-        MAVLinkConfig config = new MAVLinkConfig(sysid, MAVLinkConfig.DEFAULT_COMPID, urls, key, Set.of(), 4,
-                Duration.ofSeconds(1), Duration.ofSeconds(1), 5, tlog);
+        MAVLinkConfig config = MAVLinkConfig.of(urls).withSysid(sysid).withSigningKey(key).withTlog(tlog);
         MAVLinkCommunications comms = new MAVLinkCommunications(config, clock);
         try {
             comms.start();

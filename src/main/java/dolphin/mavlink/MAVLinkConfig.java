@@ -34,8 +34,18 @@ public record MAVLinkConfig(int sysid, int compid, List<LinkUrl> links, SigningK
     }
 
     public static MAVLinkConfig of(String... links) {
-        return new MAVLinkConfig(DEFAULT_SYSID, DEFAULT_COMPID, java.util.Arrays.stream(links).map(LinkUrl::parse).toList(),
-                null, Set.of(), 4, Duration.ofSeconds(1), Duration.ofMillis(1000), 5, null);
+        return of(java.util.Arrays.stream(links).map(LinkUrl::parse).toList());
+    }
+
+    /** The defaults: sysid 208, compid 190, telemetry at 4 Hz, 1 s heartbeats, commands tried 5 times 1 s apart. */
+    public static MAVLinkConfig of(List<LinkUrl> links) {
+        return new MAVLinkConfig(DEFAULT_SYSID, DEFAULT_COMPID, links, null, Set.of(), 4, Duration.ofSeconds(1),
+                Duration.ofMillis(1000), 5, null);
+    }
+
+    public MAVLinkConfig withSysid(int id) {
+        return new MAVLinkConfig(id, compid, links, signingKey, allowedSysids, telemetryHz, heartbeatPeriod, commandTimeout,
+                commandAttempts, tlog);
     }
 
     public MAVLinkConfig withSigningKey(SigningKey key) {

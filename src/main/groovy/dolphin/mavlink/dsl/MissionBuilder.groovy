@@ -164,46 +164,40 @@ class MissionBuilder {
     void moveAndLoiterPos(Number north, Number east, Number up, Number radius = LoiterPoint.DEFAULT_RADIUS) {
         String w = 'moveAndLoiterPos'
         Position p = relative(w, lastPosition(w), north, east, up)
-        add(new LoiterPoint(w, p, Args.radius(w, radius)))
-        register(p)
+        addRegistered(new LoiterPoint(w, p, Args.radius(w, radius)))
     }
 
     void moveAndLoiterTurns(Number north, Number east, Number up, Number turns = LoiterTurnsPoint.DEFAULT_TURNS,
                             Number radius = LoiterPoint.DEFAULT_RADIUS) {
         String w = 'moveAndLoiterTurns'
         Position p = relative(w, lastPosition(w), north, east, up)
-        add(new LoiterTurnsPoint(w, p, turnCount(w, turns), Args.radius(w, radius)))
-        register(p)
+        addRegistered(new LoiterTurnsPoint(w, p, turnCount(w, turns), Args.radius(w, radius)))
     }
 
     void moveAndLoiterTime(Number north, Number east, Number up, Number seconds, Number radius = LoiterPoint.DEFAULT_RADIUS) {
         String w = 'moveAndLoiterTime'
         Position p = relative(w, lastPosition(w), north, east, up)
-        add(new LoiterTimePoint(w, p, loiterSeconds(w, seconds), Args.radius(w, radius)))
-        register(p)
+        addRegistered(new LoiterTimePoint(w, p, loiterSeconds(w, seconds), Args.radius(w, radius)))
     }
 
     void moveAndLoiterFromHome(Number north, Number east, Number up, Number radius = LoiterPoint.DEFAULT_RADIUS) {
         String w = 'moveAndLoiterFromHome'
         Position p = relative(w, homeFor(w), north, east, up)
-        add(new LoiterPoint(w, p, Args.radius(w, radius)))
-        register(p)
+        addRegistered(new LoiterPoint(w, p, Args.radius(w, radius)))
     }
 
     void moveAndLoiterTurnsFromHome(Number north, Number east, Number up, Number turns = LoiterTurnsPoint.DEFAULT_TURNS,
                                     Number radius = LoiterPoint.DEFAULT_RADIUS) {
         String w = 'moveAndLoiterTurnsFromHome'
         Position p = relative(w, homeFor(w), north, east, up)
-        add(new LoiterTurnsPoint(w, p, turnCount(w, turns), Args.radius(w, radius)))
-        register(p)
+        addRegistered(new LoiterTurnsPoint(w, p, turnCount(w, turns), Args.radius(w, radius)))
     }
 
     void moveAndLoiterTimeFromHome(Number north, Number east, Number up, Number seconds,
                                    Number radius = LoiterPoint.DEFAULT_RADIUS) {
         String w = 'moveAndLoiterTimeFromHome'
         Position p = relative(w, homeFor(w), north, east, up)
-        add(new LoiterTimePoint(w, p, loiterSeconds(w, seconds), Args.radius(w, radius)))
-        register(p)
+        addRegistered(new LoiterTimePoint(w, p, loiterSeconds(w, seconds), Args.radius(w, radius)))
     }
 
     // ---- loitering and landing at a given position (none of these registers it)
@@ -392,8 +386,13 @@ class MissionBuilder {
     // ---- position tracking
 
     private void waypoint(String word, Position p) {
-        add(new GoToPoint(word, p))
-        register(p)
+        addRegistered(new GoToPoint(word, p))
+    }
+
+    /** Adds a point and makes its position the one later relative commands start from. */
+    private void addRegistered(MissionPoint point) {
+        add(point)
+        register(point.position)
     }
 
     private void add(DroneCommand c) {
