@@ -525,8 +525,8 @@ public final class SimVehicle {
             }
             case msg_global_position_int.MAVLINK_MSG_ID_GLOBAL_POSITION_INT -> {
                 msg_global_position_int p = new msg_global_position_int();
-                p.lat = (int) Math.round(position.latitudeDegrees() * 1e7);
-                p.lon = (int) Math.round(position.longitudeDegrees() * 1e7);
+                p.lat = MissionItem.degE7(position.latitudeDegrees());
+                p.lon = MissionItem.degE7(position.longitudeDegrees());
                 p.alt = (int) Math.round(position.hae() * 1000);
                 p.relative_alt = (int) Math.round((position.hae() - home.hae()) * 1000);
                 p.hdg = 65535;
@@ -534,8 +534,8 @@ public final class SimVehicle {
             }
             case msg_home_position.MAVLINK_MSG_ID_HOME_POSITION -> {
                 msg_home_position h = new msg_home_position();
-                h.latitude = (int) Math.round(home.latitudeDegrees() * 1e7);
-                h.longitude = (int) Math.round(home.longitudeDegrees() * 1e7);
+                h.latitude = MissionItem.degE7(home.latitudeDegrees());
+                h.longitude = MissionItem.degE7(home.longitudeDegrees());
                 h.altitude = (int) Math.round(home.hae() * 1000);
                 h.q = new float[] {1, 0, 0, 0};
                 yield h;
