@@ -2,10 +2,9 @@ package dolphin.cli;
 
 import dolphin.core.Clock;
 import dolphin.core.SystemClock;
-import dolphin.core.TaskEvent;
 import dolphin.dsl.Engine;
-import dolphin.dsl.EngineListener;
 import dolphin.dsl.ScriptResult;
+import dolphin.mavlink.Forwarder;
 import dolphin.mavlink.MAVLinkCommunications;
 import dolphin.mavlink.MAVLinkConfig;
 import dolphin.mavlink.MAVLinkPlatform;
@@ -18,6 +17,7 @@ import java.io.PrintWriter;
 import java.net.InetSocketAddress;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -66,6 +66,22 @@ final class RunCommand implements Callable<Integer> {
             description = "Sign frames and accept only signed ones: a file with 64 hex digits or a passphrase.")
     private SigningKey key;
 
+    @Option(names = "--forward", paramLabel = "URL", converter = Converters.Link.class,
+            description = "Relay the vehicles' traffic to a viewer (QGroundControl, MAVProxy) and its commands back, "
+                    + "e.g. udpout:127.0.0.1:14550. Repeatable.")
+    private List<LinkUrl> forwards = new ArrayList<>();
+
+    /** How the vehicles' status is shown. */
+    enum StatusMode { auto, live, plain }
+
+    @Option(names = "--status", paramLabel = "MODE", defaultValue = "auto",
+            description = "live: a table of the vehicles redrawn in place; plain: timestamped lines, one more for a vehicle "
+                    + "when its mode, arming or task changes; auto: live on a terminal, else plain (default: ${DEFAULT-VALUE}).")
+    private StatusMode status;
+
+    /** Rows of the live table before the rest of the fleet is summed up in one row. */
+    static final int LIVE_ROWS = 20;
+
     @Override
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
@@ -76,33 +92,53 @@ final class RunCommand implements Callable<Integer> {
             return Main.USAGE;
         }
         Clock clock = sim > 0 ? new SystemClock(speedup) : SystemClock.REAL;
-        List<LinkUrl> urls = !links.isEmpty() ? links : List.of(LinkUrl.parse(sim > 0 ? "udpin:127.0.0.1:0" : MAVLinkConfig.DEFAULT_LINK));
-        MAVLinkConfig config = MAVLinkConfig.of(urls).withSysid(sysid).withSigningKey(key).withTlog(tlog);
+        MAVLinkConfig config = MAVLinkConfig.of(links.isEmpty() ? defaultLinks() : links)
+                .withSysid(sysid).withSigningKey(key).withTlog(tlog);
         MAVLinkCommunications comms = new MAVLinkCommunications(config, clock);
+        Forwarder forwarder = new Forwarder(comms, forwards);
         try {
             comms.start();
+            forwarder.start();
         } catch (IOException e) {
+            comms.close();
             err.println("dolphin run: " + e.getMessage());
             return Main.USAGE;
         }
         SimFleet fleet = null;
-        try (comms) {
+        try (comms; forwarder) {
             if (sim > 0) {
                 fleet = startFleet(comms, clock);
             }
             Engine engine = new Engine(new MAVLinkPlatform(comms), clock);
-            engine.addListener(new Console(out, clock));
-            ScriptResult result = engine.run(source, script.toString()).await();
-            if (result.error() != null) {
-                err.println(result.error());
+            try (RunConsole console = new RunConsole(screen(out, clock), comms::nodes, SystemClock.REAL)) {
+                engine.addListener(console);
+                console.start();
+                ScriptResult result = engine.run(source, script.toString()).await();
+                if (result.error() != null) {
+                    err.println(result.error());
+                }
+                out.flush();
+                return result.exitCode();
             }
-            out.flush();
-            return result.exitCode();
         } finally {
             if (fleet != null) {
                 fleet.close();
             }
         }
+    }
+
+    /** One listening port for a real fleet; private loopback ports for the simulated one, 255 vehicles each. */
+    private List<LinkUrl> defaultLinks() {
+        if (sim == 0) {
+            return List.of(LinkUrl.parse(MAVLinkConfig.DEFAULT_LINK));
+        }
+        return Collections.nCopies((sim + 254) / 255, LinkUrl.parse("udpin:127.0.0.1:0"));
+    }
+
+    private Screen screen(PrintWriter out, Clock clock) {
+        boolean live = status == StatusMode.live || status == StatusMode.auto && System.console() != null
+                && System.getenv("TERM") != null && !"dumb".equals(System.getenv("TERM"));
+        return live ? new LiveScreen(out, RunConsole.stamp(clock), LIVE_ROWS) : new PlainScreen(out, RunConsole.stamp(clock));
     }
 
     private void validate() {
@@ -118,52 +154,23 @@ final class RunCommand implements Callable<Integer> {
         }
     }
 
+    /** The simulated fleet sends to every listening link, split over them in blocks. */
     private SimFleet startFleet(MAVLinkCommunications comms, Clock clock) throws IOException {
-        int port = comms.links().get(0).localPort();
-        if (port <= 0) {
-            throw new ParameterException(spec.commandLine(), "--sim needs the first --link to be a udpin link");
+        List<InetSocketAddress> ports = comms.links().stream().filter(l -> l.url().kind() == LinkUrl.Kind.UDPIN)
+                .map(l -> new InetSocketAddress("127.0.0.1", l.localPort())).toList();
+        if (ports.isEmpty()) {
+            throw new ParameterException(spec.commandLine(), "--sim needs a udpin link for the simulated vehicles to send to");
         }
-        SimFleet.Config config = SimFleet.Config.of(sim, simType, new InetSocketAddress("127.0.0.1", port)).withSigningKey(key);
+        SimFleet.Config base = SimFleet.Config.of(1, simType, ports.get(0));
+        SimFleet.Config config;
+        try {
+            config = new SimFleet.Config(sim, simType, base.home(), base.spacingMetres(), 1, ports, base.options(), key,
+                    base.faults());
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), "--sim " + sim + ": " + e.getMessage());
+        }
         SimFleet fleet = new SimFleet(config, clock);
         fleet.start();
         return fleet;
-    }
-
-    /** Plain timestamped lines: program messages and the platform tasks' events. */
-    private static final class Console implements EngineListener {
-        private final PrintWriter out;
-        private final Clock clock;
-        private final double start;
-
-        Console(PrintWriter out, Clock clock) {
-            this.out = out;
-            this.clock = clock;
-            this.start = clock.seconds();
-        }
-
-        @Override
-        public void message(String text) {
-            line(text);
-        }
-
-        @Override
-        public void taskEvent(TaskEvent event) {
-            if (event.isPlatformTask()) {
-                line("task " + event.task().getId() + " " + event.kind().name().toLowerCase(java.util.Locale.ROOT)
-                        + (event.vehicles().isEmpty() ? "" : " on vehicle " + String.join(",", event.vehicles()))
-                        + (event.kind() == TaskEvent.Kind.COMPLETED ? ": " + event.state() : ""));
-            }
-        }
-
-        @Override
-        public void scriptFinished(String name, ScriptResult result) {
-            line(name + ": " + result.outcome().name().toLowerCase(java.util.Locale.ROOT)
-                    + (result.message() == null ? "" : " (" + result.message() + ")"));
-        }
-
-        private synchronized void line(String text) {
-            out.printf(java.util.Locale.ROOT, "[%8.1f s] %s%n", clock.seconds() - start, text);
-            out.flush();
-        }
     }
 }

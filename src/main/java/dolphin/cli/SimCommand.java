@@ -32,7 +32,7 @@ final class SimCommand implements Callable<Integer> {
     private int count;
 
     @Option(names = "--link", paramLabel = "URL", converter = Converters.Link.class,
-            description = "Where the vehicles send: udpout:HOST:PORT, repeatable (vehicles are spread over the links). "
+            description = "Where the vehicles send: udpout:HOST:PORT, repeatable (vehicles are split over the links in blocks; over 255 vehicles need several links, and system ids start again on each). "
                     + "Default: udpout:127.0.0.1:14559.")
     private List<LinkUrl> links = new ArrayList<>();
 
@@ -90,8 +90,9 @@ final class SimCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         try (SimFleet fleet = new SimFleet(config, clock)) {
             fleet.start();
-            out.printf("simulating %d %s(s), system ids %d..%d, sending to %s%s%n", count, type.name().toLowerCase(java.util.Locale.ROOT),
-                    firstSysid, firstSysid + count - 1, gcs, speedup != 1 ? " at " + speedup + "x" : "");
+            out.printf("simulating %d %s(s), system ids %d..%d%s, sending to %s%s%n", count, type.name().toLowerCase(java.util.Locale.ROOT),
+                    firstSysid, config.highestSysid(),
+                    gcs.size() > 1 ? " (" + config.perLink() + " per link)" : "", gcs, speedup != 1 ? " at " + speedup + "x" : "");
             out.flush();
             Runtime.getRuntime().addShutdownHook(new Thread(fleet::close));
             if (duration == null) {

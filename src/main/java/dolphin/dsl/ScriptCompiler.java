@@ -76,17 +76,16 @@ final class ScriptCompiler {
         return new GroovyClassLoader(getClass().getClassLoader(), configuration());
     }
 
-    /** The class file name Groovy sees; stack frames carry it, so errors can be mapped back to the script. */
+    /**
+     * The class file name Groovy sees; stack frames carry it, so errors can be mapped back to the
+     * script. Groovy names the script class after the file, and a script cannot assign a variable
+     * of its class's name (fleet.dolphin could not say {@code fleet = pick ...}), nor be named like
+     * a primitive type (long.dolphin): the prefix keeps both apart from what users write.
+     */
     static String codeName(String file) {
         String base = file.replace('\\', '/');
-        base = base.substring(base.lastIndexOf('/') + 1);
-        // Groovy names the script class after the file; a primitive type's name (long.dolphin) cannot be one
-        int dot = base.lastIndexOf('.');
-        return PRIMITIVES.contains(dot < 0 ? base : base.substring(0, dot)) ? "_" + base : base;
+        return "dolphin_script_" + base.substring(base.lastIndexOf('/') + 1);
     }
-
-    private static final java.util.Set<String> PRIMITIVES =
-            java.util.Set.of("boolean", "byte", "char", "short", "int", "long", "float", "double", "void");
 
     private static GroovyCodeSource codeSource(String source, String file) {
         GroovyCodeSource cs = new GroovyCodeSource(source, codeName(file), "/groovy/script");

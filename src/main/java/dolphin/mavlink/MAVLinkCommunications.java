@@ -252,6 +252,17 @@ public final class MAVLinkCommunications implements AutoCloseable {
         transmit(node.getLink(), message, node.getAddress());
     }
 
+    /** Sends a frame as it is (relayed from a viewer) to a vehicle; on the communications thread. */
+    void sendRawOnCommsThread(MAVLinkNode node, byte[] frame) {
+        try {
+            node.getLink().send(frame, node.getAddress());
+            framesOut.incrementAndGet();
+            log(frame);
+        } catch (IOException e) {
+            LOG.warn("relaying a frame to vehicle {} failed: {}", node.getId(), e.getMessage());
+        }
+    }
+
     private void transmit(Link link, MAVLinkMessage message, SocketAddress to) {
         byte[] frame = writers.get(link).write(message);
         try {
@@ -359,8 +370,10 @@ public final class MAVLinkCommunications implements AutoCloseable {
         if (type == null) {
             return null;
         }
+        // The plain system id while it is unique; a later vehicle with the same id on another link
+        // is SYSID@LINK, LINK counting the links from 1 in the order they were given.
         String plain = String.valueOf(frame.sysid());
-        String id = nodesById.containsKey(plain) ? plain + "@" + link.url() : plain;
+        String id = nodesById.containsKey(plain) ? plain + "@" + (link.index() + 1) : plain;
         VehicleFamily family = VehicleFamily.of(hb.type, hb.autopilot);
         MAVLinkNode node = new MAVLinkNode(id, type, this, link, peer, frame.sysid(), frame.compid(), family, clock);
         nodesByKey.put(link.index() + "/" + frame.sysid(), node);
@@ -385,7 +398,12 @@ public final class MAVLinkCommunications implements AutoCloseable {
             LOG.info("vehicle {}: {}", n.getId(), text);
             changed(n, s -> s.withStatusText(text));
         });
-        handler.on(msg_command_ack.class, (n, m) -> commands.onAck(n, m, clock.nanoTime()));
+        handler.on(msg_command_ack.class, (n, m) -> {
+            // Acknowledgements of another ground station's commands (a viewer's, relayed) are not ours.
+            if (m.target_system == 0 || m.target_system == config.sysid()) {
+                commands.onAck(n, m, clock.nanoTime());
+            }
+        });
         handler.on(msg_mission_item_reached.class, (n, m) -> {
             MissionExecutor executor = n.getExecutor();
             if (executor != null) {

@@ -34,7 +34,11 @@ public final class SimFleet implements AutoCloseable {
     private static final long TICK = 50_000_000L;
 
     /**
-     * @param gcs ground-station addresses; vehicle i talks to {@code gcs[i % gcs.size()]}
+     * @param gcs ground-station addresses, one per link; the vehicles are split over them in
+     *     contiguous blocks of {@link #perLink()}, like SITL instances sent to several ports
+     * @param firstSysid system id of the first vehicle; ids count up from it across the fleet
+     *     while they fit in 1..255, and start again from it on each link when they do not
+     *     (MAVLink allows 255 systems per network; a ground station tells the links apart)
      * @param spacingMetres vehicles start this far apart, in a line to the east of {@code home}
      */
     public record Config(int count, VehicleKind kind, Position home, double spacingMetres, int firstSysid,
@@ -45,12 +49,41 @@ public final class SimFleet implements AutoCloseable {
             if (count < 1) {
                 throw new IllegalArgumentException("the fleet needs at least one vehicle, got " + count);
             }
-            if (firstSysid < 1 || firstSysid + Math.min(count, 255) - 1 > 255) {
-                throw new IllegalArgumentException("system ids must lie in 1..255: first " + firstSysid + ", count " + count);
-            }
             if (gcs.isEmpty()) {
                 throw new IllegalArgumentException("the fleet needs a ground-station address");
             }
+            if (firstSysid < 1 || firstSysid > 255) {
+                throw new IllegalArgumentException("the first system id must lie in 1..255, got " + firstSysid);
+            }
+            int perLink = (count + gcs.size() - 1) / gcs.size();
+            if (firstSysid + count - 1 > 255 && firstSysid + perLink - 1 > 255) {
+                int ids = 256 - firstSysid;
+                throw new IllegalArgumentException(count + " vehicles from system id " + firstSysid + " need at least "
+                        + (count + ids - 1) / ids + " links (" + ids + " system ids per link), got " + gcs.size());
+            }
+        }
+
+        /** How many vehicles share one ground-station address (the last one may have fewer). */
+        public int perLink() {
+            return (count + gcs.size() - 1) / gcs.size();
+        }
+
+        /** Index into {@link #gcs()} of the i-th vehicle. */
+        public int linkOf(int i) {
+            return i / perLink();
+        }
+
+        /** System id of the i-th vehicle: unique in the fleet when ids allow, else unique per link. */
+        public int sysidOf(int i) {
+            return uniqueSysids() ? firstSysid + i : firstSysid + i % perLink();
+        }
+
+        public int highestSysid() {
+            return uniqueSysids() ? firstSysid + count - 1 : firstSysid + perLink() - 1;
+        }
+
+        private boolean uniqueSysids() {
+            return firstSysid + count - 1 <= 255;
         }
 
         public static Config of(int count, VehicleKind kind, InetSocketAddress gcs) {
@@ -123,11 +156,11 @@ public final class SimFleet implements AutoCloseable {
         long now = clock.nanoTime();
         for (int i = 0; i < config.count(); i++) {
             Position home = config.home().displace(0, i * config.spacingMetres(), 0);
-            SimVehicle v = new SimVehicle(config.firstSysid() + i % 255, config.kind(), home, config.options(), now);
+            SimVehicle v = new SimVehicle(config.sysidOf(i), config.kind(), home, config.options(), now);
             DatagramChannel ch = DatagramChannel.open();
             ch.bind(new InetSocketAddress(0));
             ch.configureBlocking(false);
-            Member m = new Member(v, ch, config.gcs().get(i % config.gcs().size()));
+            Member m = new Member(v, ch, config.gcs().get(config.linkOf(i)));
             ch.register(selector, SelectionKey.OP_READ, m);
             v.connect(msg -> emit(m, msg));
             members.add(m);
@@ -143,19 +176,19 @@ public final class SimFleet implements AutoCloseable {
         return members.stream().map(m -> m.vehicle).toList();
     }
 
+    /** The vehicle with this system id; the first one when ids repeat over several links. */
     public SimVehicle vehicle(int sysid) {
-        return members.stream().map(m -> m.vehicle).filter(v -> v.sysid() == sysid).findFirst()
-                .orElseThrow(() -> new IllegalArgumentException("no simulated vehicle with system id " + sysid));
+        return member(sysid).vehicle;
     }
 
-    /** The local UDP port a vehicle sends from. */
+    /** The local UDP port a vehicle sends from; the first one's when ids repeat over several links. */
     public int port(int sysid) throws IOException {
-        for (Member m : members) {
-            if (m.vehicle.sysid() == sysid) {
-                return ((InetSocketAddress) m.channel.getLocalAddress()).getPort();
-            }
-        }
-        throw new IllegalArgumentException("no simulated vehicle with system id " + sysid);
+        return ((InetSocketAddress) member(sysid).channel.getLocalAddress()).getPort();
+    }
+
+    private Member member(int sysid) {
+        return members.stream().filter(m -> m.vehicle.sysid() == sysid).findFirst()
+                .orElseThrow(() -> new IllegalArgumentException("no simulated vehicle with system id " + sysid));
     }
 
     /** What the vehicles' readers dropped (bad signatures, unsigned frames when signing, ...). */

@@ -108,7 +108,7 @@ class ScriptErrorSpec extends Specification {
         h.engine.check("v1 = pick { }\np = position(v1 + v1 + nosuch)", FILE).isEmpty()
     }
 
-    def "the script's file name may be a bare name, a path or a Windows path: line numbers are found for each"() {
+    def "the script's file name may be a bare name, a path, a Windows path or a variable's name: line numbers are found for each"() {
         when:
         def r = h.run("x = 1\ny = nosuch\n", file)
 
@@ -117,7 +117,7 @@ class ScriptErrorSpec extends Specification {
         r.error.line == 2
 
         where:
-        file << ['patrol.dolphin', '/abs/dir/patrol.dolphin', 'C:\\missions\\patrol.dolphin', 'no-extension', 'long.dolphin']
+        file << ['patrol.dolphin', '/abs/dir/patrol.dolphin', 'C:\\missions\\patrol.dolphin', 'no-extension', 'long.dolphin', 'x.dolphin']
     }
 
     def "ScriptResult and ScriptError read as file:line: message"() {

@@ -125,7 +125,7 @@ class LinkSpec extends Specification {
 
         expect:
         h.eventually {
-            assert h.comms.nodes()*.id == ['1', "1@udpin:127.0.0.1:0"]
+            assert h.comms.nodes()*.id == ['1', '1@2']
         }
         h.comms.nodes()*.family == [VehicleFamily.COPTER, VehicleFamily.PLANE]
 

@@ -1,0 +1,48 @@
+package dolphin.cli;
+
+import dolphin.mavlink.MAVLinkNode;
+import dolphin.mavlink.VehicleState;
+import java.util.Locale;
+
+/**
+ * What the status display shows of one vehicle at one moment: its mode, whether it is armed, its
+ * battery and height above home, the mission item it flies, and the state of the script's task on it.
+ *
+ * @param battery percent, -1 when unknown
+ * @param item the current mission item, 0 or less when none
+ * @param task the last platform task on the vehicle and its state, or "" before the first
+ */
+record VehicleStatus(String id, boolean connected, String mode, boolean armed, int battery, double altitude,
+                     int item, int total, String task) {
+
+    static VehicleStatus of(MAVLinkNode node, String task) {
+        VehicleState s = node.state();
+        return new VehicleStatus(node.getId(), node.isConnected(), s.modeName(), s.armed(), s.batteryPercent(),
+                s.relativeAlt(), s.missionSeq(), s.missionTotal(), task);
+    }
+
+    /** The changes worth a line of their own in a log: everything but the battery, height and item. */
+    boolean sameEvent(VehicleStatus o) {
+        return o != null && connected == o.connected && mode.equals(o.mode) && armed == o.armed && task.equals(o.task);
+    }
+
+    /** One line of prose, for logs. */
+    String sentence() {
+        return String.format(Locale.ROOT, "vehicle %s: %s%s, %s, battery %s, altitude %.1f m%s%s", id,
+                connected ? "" : "LOST, last seen ", mode, armed ? "armed" : "disarmed", batteryText(), altitude,
+                item > 0 && total > 0 ? ", item " + item + " of " + total : "", task.isEmpty() ? "" : ", task " + task);
+    }
+
+    static final String HEADER = String.format(Locale.ROOT, "%-8s %-10s %-8s %7s %9s %-9s %s",
+            "vehicle", "mode", "armed", "battery", "altitude", "item", "task");
+
+    /** One row of the live table, under {@link #HEADER}. */
+    String row() {
+        return String.format(Locale.ROOT, "%-8s %-10s %-8s %7s %7.1f m %-9s %s", id, connected ? mode : "LOST",
+                armed ? "armed" : "disarmed", batteryText(), altitude, item > 0 && total > 0 ? item + "/" + total : "-", task);
+    }
+
+    private String batteryText() {
+        return battery < 0 ? "?" : battery + " %";
+    }
+}

@@ -1,0 +1,73 @@
+package dolphin.cli
+
+import spock.lang.Specification
+
+/** The vehicles' status: plain lines on change for logs, a table redrawn in place on a terminal. */
+class StatusScreenSpec extends Specification {
+
+    static VehicleStatus status(Map m = [:]) {
+        new VehicleStatus(m.id ?: '1', m.containsKey('connected') ? m.connected : true, m.mode ?: 'GUIDED', m.armed ?: false, m.battery ?: 100,
+                m.alt ?: 0.0d, m.item ?: 0, m.total ?: 0, m.task ?: '')
+    }
+
+    def "a status reads as a sentence, with the mission item and the task when there are any"() {
+        expect:
+        status().sentence() == 'vehicle 1: GUIDED, disarmed, battery 100 %, altitude 0.0 m'
+        status(mode: 'AUTO', armed: true, battery: 82, alt: 45.25d, item: 3, total: 44, task: 'survey running').sentence() ==
+                'vehicle 1: AUTO, armed, battery 82 %, altitude 45.3 m, item 3 of 44, task survey running'
+        status(connected: false, battery: -1).sentence() == 'vehicle 1: LOST, last seen GUIDED, disarmed, battery ?, altitude 0.0 m'
+    }
+
+    def "plain: a line when mode, arming, connection or task change; not for battery, height or item alone"() {
+        given:
+        def out = new StringWriter()
+        def screen = new PlainScreen(new PrintWriter(out), { '[t] ' })
+
+        when:
+        screen.refresh([status(), status(id: '2')])
+        screen.refresh([status(battery: 90, alt: 12d, item: 2, total: 5), status(id: '2')])
+        screen.refresh([status(armed: true), status(id: '2', task: 'hop running')])
+        screen.line('a message')
+        screen.refresh([status(armed: true), status(id: '2', task: 'hop running', connected: false)])
+
+        then:
+        out.toString().readLines() == [
+                '[t] vehicle 1: GUIDED, disarmed, battery 100 %, altitude 0.0 m',
+                '[t] vehicle 2: GUIDED, disarmed, battery 100 %, altitude 0.0 m',
+                '[t] vehicle 1: GUIDED, armed, battery 100 %, altitude 0.0 m',
+                '[t] vehicle 2: GUIDED, disarmed, battery 100 %, altitude 0.0 m, task hop running',
+                '[t] a message',
+                '[t] vehicle 2: LOST, last seen GUIDED, disarmed, battery 100 %, altitude 0.0 m, task hop running']
+    }
+
+    def "live: lines scroll above a table that is erased and redrawn in place"() {
+        given:
+        def out = new StringWriter()
+        def screen = new LiveScreen(new PrintWriter(out), { '[t] ' }, 20)
+
+        when:
+        screen.refresh([status(), status(id: '2', mode: 'AUTO', armed: true, item: 1, total: 4, task: 'hop running')])
+        screen.line('a message')
+
+        then:
+        def table = [VehicleStatus.HEADER,
+                     '1        GUIDED     disarmed   100 %     0.0 m -         ',
+                     '2        AUTO       armed      100 %     0.0 m 1/4       hop running']
+        out.toString() == (table + ["\033[3F\033[J[t] a message"] + table).join('\n') + '\n'
+    }
+
+    def "live: a large fleet shows its first rows and sums up the others by mode"() {
+        given:
+        def screen = new LiveScreen(new PrintWriter(new StringWriter()), { '' }, 3)
+        def fleet = (1..10).collect { status(id: "$it", mode: it % 2 ? 'AUTO' : 'RTL', connected: it != 10) }
+
+        when:
+        def rows = screen.table(fleet)
+
+        then:
+        rows.size() == 5
+        rows[1].startsWith('1 ')
+        rows[3].startsWith('3 ')
+        rows[4] == '... and 7 more: 3 AUTO, 1 LOST, 3 RTL'
+    }
+}
