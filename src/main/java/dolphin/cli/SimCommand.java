@@ -78,7 +78,7 @@ final class SimCommand implements Callable<Integer> {
             }
             gcs.add(url.address());
         }
-        SimFleet.Config base = SimFleet.Config.of(count, type, gcs.get(0));
+        SimFleet.Config base = SimFleet.Config.of(1, type, gcs.get(0));
         SimFleet.Config config;
         try {
             config = new SimFleet.Config(count, type, home != null ? home : base.home(), base.spacingMetres(), firstSysid, gcs,

@@ -49,6 +49,31 @@ class RunCommandSpec extends Specification {
         sim?.interrupt()
     }
 
+    def "--status plain: a line per vehicle when its mode, arming or task changes"() {
+        when:
+        def r = dolphin('run', 'dsl-examples/first-flight.dolphin', '--sim', '1', '--speedup', '10', '--status', 'plain')
+
+        then:
+        r.code == 0
+        def lines = r.out.readLines()
+        lines.findIndexOf { it ==~ /\[ *[\d.]+ s\] vehicle 1: AUTO, armed, battery \d+ %, altitude [\d.]+ m, item \d of 4, task first flight running/ } >
+                lines.findIndexOf { it ==~ /\[ *[\d.]+ s\] vehicle 1: STABILIZE, disarmed, battery 100 %, altitude 0.0 m/ }
+        lines.find { it ==~ /.*vehicle 1: \w+, disarmed, .*task first flight done/ }
+        !r.out.contains('\033[')
+    }
+
+    def "--status live: a table of the vehicles redrawn in place below the lines"() {
+        when:
+        def r = dolphin('run', EXAMPLE, '--sim', '2', '--speedup', '5', '--status', 'live')
+
+        then:
+        r.code == 0
+        r.out.contains(VehicleStatus.HEADER)
+        r.out.contains('\033[3F\033[J')
+        r.out.readLines().any { it ==~ /2 +\w+ +disarmed +100 % +0\.0 m -.*/ }
+        r.out.contains("${EXAMPLE}: completed")
+    }
+
     def "a script error is reported with file:line and exit 1"() {
         given:
         def script = File.createTempFile('bad', '.dolphin')
@@ -83,7 +108,11 @@ class RunCommandSpec extends Specification {
         ['run', EXAMPLE, '--link', 'udpin:0.0.0.0:99999']          | 'the port must be between 0 and 65535'
         ['run', EXAMPLE, '--speedup', '10']                        | '--speedup needs --sim'
         ['run', EXAMPLE, '--sim', '1', '--sim-type', 'submarine']  | "unknown vehicle type 'submarine'"
+        ['run', EXAMPLE, '--sim', '600', '--link', 'udpin:127.0.0.1:0'] | '--sim 600: 600 vehicles from system id 1 need at least 3 links'
+        ['run', EXAMPLE, '--status', 'fancy']                      | "Invalid value for option '--status'"
+        ['run', EXAMPLE, '--forward', 'udpout:nowhere']            | "bad connection string 'udpout:nowhere': expected HOST:PORT"
         ['sim', '--count', '0']                                    | '--count must be at least 1'
+        ['sim', '--count', '300']                                  | '300 vehicles from system id 1 need at least 2 links'
         ['sim', '--link', 'udpin:0.0.0.0:14559']                   | '--link for sim must be udpout:HOST:PORT'
         ['sim', '--home', '95,0,0']                                | 'latitude must be in [-90, 90]'
     }

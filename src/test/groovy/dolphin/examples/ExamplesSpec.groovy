@@ -21,7 +21,7 @@ class ExamplesSpec extends Specification {
     /** Examples this spec runs; the first feature checks that it is every file in dsl-examples/. */
     static final List<String> COVERED = [
             'two-drones-survey', 'listing2-single-vehicle', 'listing3-two-vehicles', 'listing4-keep-two-airborne',
-            'operators', 'loiters', 'survey', 'camera', 'watch-onerror', 'first-flight', 'battery-and-position']
+            'operators', 'loiters', 'survey', 'camera', 'watch-onerror', 'first-flight', 'battery-and-position', 'fleet']
 
     @Shared
     Map<String, String> commandLines = [:]
@@ -216,5 +216,22 @@ class ExamplesSpec extends Specification {
                 r.lines.findIndexOf { it.startsWith('the fine survey failed: ') }
         r.lines.contains('watch: DONE')
         !r.lines.any { it.contains('mission fine survey on vehicle 1: started') }
+    }
+
+    @Timeout(100)
+    def "a fleet of 300 over two links: every vehicle flies, is cut at 90 % on its own guard, lands; ids stay apart"() {
+        when:
+        def r = run('fleet')
+
+        then:
+        r.code == 0
+        r.lines.contains('picked 300 vehicles')
+        def cut = r.lines.findAll { it.startsWith('task patrol stopped on vehicle ') }*.substring('task patrol stopped on vehicle '.length())
+        cut.size() == 300
+        cut.toSet().size() == 300
+        // the first of two vehicles with one id to be heard keeps the plain id, the other is ID@LINK
+        (1..150).every { id -> cut.contains("$id".toString()) && cut.count { it ==~ /$id@[12]/ } == 1 }
+        inOrder(r.lines, 'all 300 patrols cut short at 90 %: DONE', 'all 300 vehicles landed', 'dsl-examples/fleet.dolphin: completed')
+        r.lines.findAll { it ==~ /vehicle \S+: RTL, armed, .*task patrol stopped/ }.size() == 300
     }
 }

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Fleet-scale benchmark: one `dolphin sim` process with 50, 250 and 1000 vehicles (250 per link,
+# so four links for 1000) streaming at 4 Hz, and the runtime in the benchmark's process flying
+# bench/fleet.dolphin on every vehicle, each cut at 90 % battery by its own guard. Plain Java main
+# (dolphin.bench.FleetBench), real time. See bench/README.md.
+#
+#   bench/fleet.sh [--no-build] [SIZE...]      # default sizes: 50 250 1000
+#
+# Prints the summary, also in bench/target/results/fleet-summary.txt; every reaction time is in
+# fleet.json there. Exit status 1 if a run did not complete or a vehicle was not cut.
+# Takes about 3 minutes on 2 cores.
+set -euo pipefail
+bench="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(dirname "$bench")"
+out="$bench/target/results"
+
+build=1
+if [ "${1:-}" = "--no-build" ]; then
+  build=0
+  shift
+fi
+if [ "$build" = 1 ]; then
+  "$bench/build.sh"
+fi
+sizes=("$@")
+[ ${#sizes[@]} -gt 0 ] || sizes=(50 250 1000)
+jar="${DOLPHIN_JAR:-$root/target/dolphin.jar}"
+for f in "$jar" "$bench/target/classes/dolphin/bench/FleetBench.class"; do
+  [ -e "$f" ] || { echo "bench/fleet.sh: missing $f (run without --no-build)" >&2; exit 1; }
+done
+mkdir -p "$out"
+echo "== fleet scale: ${sizes[*]} vehicles" >&2
+java -Dorg.slf4j.simpleLogger.defaultLogLevel=warn -cp "$bench/target/classes:$bench/target/lib/*:$jar:$root/target/lib/*" \
+  dolphin.bench.FleetBench "$out" "$bench/fleet.dolphin" "$(command -v java)" "$jar:$root/target/lib/*" "${sizes[@]}"

@@ -1,0 +1,244 @@
+package dolphin.bench;
+
+import com.MAVLink.common.msg_command_long;
+import com.MAVLink.common.msg_sys_status;
+import com.MAVLink.enums.MAV_CMD;
+import dolphin.core.SystemClock;
+import dolphin.dsl.Engine;
+import dolphin.dsl.ScriptResult;
+import dolphin.mavlink.MAVLinkCommunications;
+import dolphin.mavlink.MAVLinkConfig;
+import dolphin.mavlink.MAVLinkNode;
+import dolphin.mavlink.MAVLinkPlatform;
+import dolphin.mavlink.codec.Frame;
+import dolphin.mavlink.link.Link;
+import java.lang.management.ManagementFactory;
+import java.lang.management.MemoryMXBean;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.BooleanSupplier;
+
+/**
+ * Fleet scale: one `dolphin sim` process with N vehicles streaming at 4 Hz over N/250 links, and
+ * this process as the runtime (MAVLinkCommunications, the engine, bench/fleet.dolphin) flying a
+ * mission on every vehicle, each cut by its own battery guard. Measures the runtime's CPU and heap
+ * per vehicle, and the reaction latency from the SYS_STATUS frame that crosses the threshold to
+ * the DO_SET_MODE (RTL) frame sent to that vehicle, both seen on the communications thread.
+ * The simulator process, which produces the same traffic, is the reference measured in the same run.
+ *
+ * <pre>FleetBench OUT_DIR SCRIPT JAVA CLASSPATH SIZE...</pre>
+ */
+public final class FleetBench {
+
+    static final int PER_LINK = 250;
+    static final int THRESHOLD_PERCENT = 90;
+    static final double DRAIN_PERCENT_PER_MINUTE = 60;
+    static final Duration IDLE_WINDOW = Duration.ofSeconds(10);
+
+    private final Path out;
+    private final String script;
+    private final String java;
+    private final String classpath;
+    private final StringBuilder summary = new StringBuilder();
+    private final List<Map<String, Object>> results = new ArrayList<>();
+
+    FleetBench(Path out, String script, String java, String classpath) {
+        this.out = out;
+        this.script = script;
+        this.java = java;
+        this.classpath = classpath;
+    }
+
+    public static void main(String[] args) throws Exception {
+        if (args.length < 5) {
+            System.err.println("usage: FleetBench OUT_DIR SCRIPT JAVA CLASSPATH SIZE...");
+            System.exit(2);
+        }
+        Path out = Path.of(args[0]);
+        Files.createDirectories(out);
+        FleetBench bench = new FleetBench(out, Files.readString(Path.of(args[1])), args[2], args[3]);
+        int failures = 0;
+        for (int i = 4; i < args.length; i++) {
+            failures += bench.run(Integer.parseInt(args[i]));
+        }
+        bench.write();
+        System.exit(failures == 0 ? 0 : 1);
+    }
+
+    /** Latency bookkeeping, on the communications thread; keys are "link/sysid". */
+    private static final class Reactions implements MAVLinkCommunications.FrameObserver {
+        final Map<String, Long> crossed = new ConcurrentHashMap<>();
+        final Map<String, Long> reacted = new ConcurrentHashMap<>();
+
+        @Override
+        public void frame(boolean incoming, Link link, Frame frame) {
+            long now = System.nanoTime();
+            if (incoming && frame.msgid() == msg_sys_status.MAVLINK_MSG_ID_SYS_STATUS
+                    && frame.message() instanceof msg_sys_status s && s.battery_remaining >= 0 && s.battery_remaining < THRESHOLD_PERCENT) {
+                crossed.putIfAbsent(link.index() + "/" + frame.sysid(), now);
+            } else if (!incoming && frame.msgid() == msg_command_long.MAVLINK_MSG_ID_COMMAND_LONG
+                    && frame.message() instanceof msg_command_long c && c.command == MAV_CMD.MAV_CMD_DO_SET_MODE) {
+                String key = link.index() + "/" + c.target_system;
+                if (crossed.containsKey(key)) {
+                    reacted.putIfAbsent(key, now);
+                }
+            }
+        }
+
+        List<Double> latenciesMs() {
+            List<Double> ms = new ArrayList<>();
+            reacted.forEach((k, t) -> ms.add((t - crossed.get(k)) / 1e6));
+            Collections.sort(ms);
+            return ms;
+        }
+    }
+
+    int run(int n) throws Exception {
+        int links = (n + PER_LINK - 1) / PER_LINK;
+        MemoryMXBean memory = ManagementFactory.getMemoryMXBean();
+        long heapBefore = usedHeap(memory);
+        SystemClock clock = SystemClock.REAL;
+        MAVLinkCommunications comms = new MAVLinkCommunications(
+                MAVLinkConfig.of(Collections.nCopies(links, "udpin:127.0.0.1:0").toArray(String[]::new)), clock);
+        comms.start();
+        Reactions reactions = new Reactions();
+        comms.addObserver(reactions);
+        List<String> command = new ArrayList<>(List.of(java, "-cp", classpath, "-Dorg.slf4j.simpleLogger.defaultLogLevel=warn",
+                "dolphin.cli.Main", "sim", "--count", "" + n, "--drain", "" + DRAIN_PERCENT_PER_MINUTE));
+        for (Link l : comms.links()) {
+            command.add("--link");
+            command.add("udpout:127.0.0.1:" + l.localPort());
+        }
+        Process sim = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+        int failures = 0;
+        try {
+            check(waitFor(Duration.ofSeconds(120), () -> comms.nodes().size() == n
+                    && comms.nodes().stream().allMatch(v -> v.state().batteryPercent() >= 0 && v.state().position() != null)),
+                    n + " vehicles discovered with telemetry");
+            long heapVehicles = usedHeap(memory) - heapBefore;
+
+            Cpu idle = Cpu.measure(sim, comms, () -> Thread.sleep(IDLE_WINDOW.toMillis()));
+
+            Engine engine = new Engine(new MAVLinkPlatform(comms), clock);
+            engine.bind("fleetSize", n);
+            ScriptResult[] result = new ScriptResult[1];
+            Cpu flying = Cpu.measure(sim, comms, () -> result[0] = engine.run(script, "bench/fleet.dolphin").await());
+            long heapFlying = usedHeap(memory) - heapBefore;
+            List<Double> ms = reactions.latenciesMs();
+            if (result[0].outcome() != ScriptResult.Outcome.COMPLETED || ms.size() != n) {
+                System.err.println("fleet " + n + ": " + result[0] + ", " + ms.size() + " reactions of " + n);
+                failures++;
+            }
+            report(n, links, heapVehicles, heapFlying, idle, flying, ms);
+        } finally {
+            sim.destroy();
+            sim.waitFor();
+            comms.close();
+        }
+        return failures;
+    }
+
+    /** CPU of this process (the runtime) and of the simulator process over a window. */
+    record Cpu(double seconds, double runtimeCores, double simCores, double framesInPerSecond) {
+
+        interface Window {
+            void run() throws Exception;
+        }
+
+        static Cpu measure(Process sim, MAVLinkCommunications comms, Window window) throws Exception {
+            var os = (com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
+            long wall = System.nanoTime();
+            long cpu = os.getProcessCpuTime();
+            long simCpu = simCpu(sim);
+            long frames = comms.framesIn();
+            window.run();
+            double seconds = (System.nanoTime() - wall) / 1e9;
+            return new Cpu(seconds, (os.getProcessCpuTime() - cpu) / 1e9 / seconds, (simCpu(sim) - simCpu) / 1e9 / seconds,
+                    (comms.framesIn() - frames) / seconds);
+        }
+
+        private static long simCpu(Process sim) {
+            return sim.toHandle().info().totalCpuDuration().map(Duration::toNanos).orElse(0L);
+        }
+    }
+
+    private void report(int n, int links, long heapVehicles, long heapFlying, Cpu idle, Cpu flying, List<Double> ms) {
+        double p50 = percentile(ms, 50);
+        double p99 = percentile(ms, 99);
+        double max = ms.isEmpty() ? Double.NaN : ms.get(ms.size() - 1);
+        line(String.format(Locale.ROOT, "%5d vehicles, %d link(s): %,.0f frames/s in while flying", n, links, flying.framesInPerSecond()));
+        line(String.format(Locale.ROOT, "      runtime CPU: %.3f cores streaming only, %.3f cores flying (%.2f ms/s per vehicle); "
+                        + "simulator (reference, same traffic): %.3f and %.3f cores; runtime/simulator %.2f",
+                idle.runtimeCores(), flying.runtimeCores(), flying.runtimeCores() * 1000 / n, idle.simCores(), flying.simCores(),
+                flying.runtimeCores() / flying.simCores()));
+        line(String.format(Locale.ROOT, "      heap: %.1f KiB per vehicle connected, %.1f KiB per vehicle after the flights",
+                heapVehicles / 1024.0 / n, heapFlying / 1024.0 / n));
+        line(String.format(Locale.ROOT, "      reaction (SYS_STATUS < %d %% -> DO_SET_MODE RTL), %d cuts: p50 %.2f ms, p99 %.2f ms, max %.2f ms",
+                THRESHOLD_PERCENT, ms.size(), p50, p99, max));
+        Map<String, Object> r = new LinkedHashMap<>();
+        r.put("vehicles", n);
+        r.put("links", links);
+        r.put("framesInPerSecond", flying.framesInPerSecond());
+        r.put("runtimeCoresStreaming", idle.runtimeCores());
+        r.put("runtimeCoresFlying", flying.runtimeCores());
+        r.put("simCoresStreaming", idle.simCores());
+        r.put("simCoresFlying", flying.simCores());
+        r.put("heapBytesPerVehicle", heapVehicles / (double) n);
+        r.put("heapBytesPerVehicleAfterFlights", heapFlying / (double) n);
+        r.put("reactionMs", ms);
+        r.put("reactionP50Ms", p50);
+        r.put("reactionP99Ms", p99);
+        results.add(r);
+    }
+
+    static double percentile(List<Double> sorted, int p) {
+        if (sorted.isEmpty()) {
+            return Double.NaN;
+        }
+        int i = (int) Math.ceil(p / 100.0 * sorted.size()) - 1;
+        return sorted.get(Math.max(0, Math.min(sorted.size() - 1, i)));
+    }
+
+    private static long usedHeap(MemoryMXBean memory) throws InterruptedException {
+        for (int i = 0; i < 3; i++) {
+            System.gc();
+            Thread.sleep(100);
+        }
+        return memory.getHeapMemoryUsage().getUsed();
+    }
+
+    private static boolean waitFor(Duration limit, BooleanSupplier condition) throws InterruptedException {
+        long end = System.nanoTime() + limit.toNanos();
+        while (System.nanoTime() < end) {
+            if (condition.getAsBoolean()) {
+                return true;
+            }
+            Thread.sleep(50);
+        }
+        return condition.getAsBoolean();
+    }
+
+    private static void check(boolean ok, String what) {
+        if (!ok) {
+            throw new IllegalStateException("timed out waiting for " + what);
+        }
+    }
+
+    private void line(String text) {
+        System.out.println(text);
+        summary.append(text).append('\n');
+    }
+
+    private void write() throws Exception {
+        Files.writeString(out.resolve("fleet-summary.txt"), summary.toString());
+        Files.writeString(out.resolve("fleet.json"), UploadBench.toJson(results));
+    }
+}
