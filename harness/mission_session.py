@@ -83,6 +83,16 @@ def fields(m):
     return {f: getattr(m, f) for f in FIELDS}
 
 
+def as_reported(item):
+    """An uploaded item as ArduPilot reports it on download: the frame reduced to its altitude
+    reference (GLOBAL, GLOBAL_RELATIVE_ALT or GLOBAL_TERRAIN_ALT), as AP_Mission stores it."""
+    reference = {mavlink.MAV_FRAME_GLOBAL_RELATIVE_ALT: mavlink.MAV_FRAME_GLOBAL_RELATIVE_ALT,
+                 mavlink.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT: mavlink.MAV_FRAME_GLOBAL_RELATIVE_ALT,
+                 mavlink.MAV_FRAME_GLOBAL_TERRAIN_ALT: mavlink.MAV_FRAME_GLOBAL_TERRAIN_ALT,
+                 mavlink.MAV_FRAME_GLOBAL_TERRAIN_ALT_INT: mavlink.MAV_FRAME_GLOBAL_TERRAIN_ALT}
+    return dict(item, frame=reference.get(item["frame"], mavlink.MAV_FRAME_GLOBAL))
+
+
 def upload(gs, sysid, loader, report):
     start = len(gs.log)
     gs.send(sysid, gs.master.mav.mission_count_encode(sysid, mavlink.MAV_COMP_ID_AUTOPILOT1, loader.count(),
@@ -138,7 +148,7 @@ def download(gs, sysid, loader, report):
         items.append(fields(got[0]))
     gs.send(sysid, gs.master.mav.mission_ack_encode(sysid, mavlink.MAV_COMP_ID_AUTOPILOT1,
                                                     mavlink.MAV_MISSION_ACCEPTED, mavlink.MAV_MISSION_TYPE_MISSION))
-    uploaded = [fields(loader.wp(i)) for i in range(loader.count())]
+    uploaded = [as_reported(fields(loader.wp(i))) for i in range(loader.count())]
     report["download"] = {"count": count, "items": items,
                           "equal_except_home": items[1:] == uploaded[1:],
                           "differences": [[u, d] for u, d in zip(uploaded[1:], items[1:]) if u != d]}

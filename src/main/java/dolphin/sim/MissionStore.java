@@ -1,6 +1,7 @@
 package dolphin.sim;
 
 import com.MAVLink.enums.MAV_CMD;
+import com.MAVLink.enums.MAV_FRAME;
 import dolphin.core.Position;
 import dolphin.mavlink.mission.MissionItem;
 import java.util.ArrayList;
@@ -59,6 +60,23 @@ final class MissionStore {
         }
     }
 
+    /**
+     * An item as a download reports it: ArduPilot keeps a location's altitude reference, not the
+     * frame it was sent in, and reports MAV_FRAME_GLOBAL or GLOBAL_RELATIVE_ALT (or TERRAIN_ALT)
+     * even in MISSION_ITEM_INT; items without a position come back in MAV_FRAME_GLOBAL too
+     * (AP_Mission::mission_cmd_to_mavlink_int).
+     */
+    MissionItem reported(int seq) {
+        MissionItem i = get(seq);
+        int frame = switch (i.frame()) {
+            case MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT, MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT -> MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT;
+            case MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT_INT, MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT -> MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT;
+            default -> MAV_FRAME.MAV_FRAME_GLOBAL;
+        };
+        return new MissionItem(i.seq(), i.command(), frame, i.param1(), i.param2(), i.param3(), i.param4(), i.x(), i.y(), i.z(),
+                i.autocontinue());
+    }
+
     void clear() {
         truncate(1);
     }
@@ -74,7 +92,7 @@ final class MissionStore {
 
     private MissionItem homeItem() {
         Position h = home.get();
-        return new MissionItem(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, com.MAVLink.enums.MAV_FRAME.MAV_FRAME_GLOBAL, 0, 0, 0, 0,
+        return new MissionItem(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_FRAME.MAV_FRAME_GLOBAL, 0, 0, 0, 0,
                 MissionItem.degE7(h.latitudeDegrees()), MissionItem.degE7(h.longitudeDegrees()), (float) h.hae(), true);
     }
 }

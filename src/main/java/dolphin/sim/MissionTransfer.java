@@ -85,11 +85,11 @@ final class MissionTransfer {
             host.send(c);
         } else if (m instanceof msg_mission_request_int r) {
             if (!refuseDownload(r.sysid, r.compid, r.mission_type) && inRange(r.sysid, r.compid, r.seq)) {
-                host.send(store.get(r.seq).toMessage(r.sysid, r.compid));
+                host.send(store.reported(r.seq).toMessage(r.sysid, r.compid));
             }
         } else if (m instanceof msg_mission_request r) {
             if (!refuseDownload(r.sysid, r.compid, r.mission_type) && inRange(r.sysid, r.compid, r.seq)) {
-                host.send(toFloat(store.get(r.seq), r.sysid, r.compid));
+                host.send(toFloat(store.reported(r.seq), r.sysid, r.compid));
             }
         } else if (m instanceof msg_mission_clear_all c) {
             clear(c);

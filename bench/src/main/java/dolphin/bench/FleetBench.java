@@ -19,12 +19,15 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.TreeMap;
 import java.util.function.BooleanSupplier;
+import java.util.stream.Collectors;
 
 /**
  * Fleet scale: one `dolphin sim` process with N vehicles streaming at 4 Hz over N/250 links, and
@@ -40,8 +43,11 @@ public final class FleetBench {
 
     static final int PER_LINK = 250;
     static final int THRESHOLD_PERCENT = 90;
-    static final double DRAIN_PERCENT_PER_MINUTE = 60;
+    /** Battery use while armed: the 90 % threshold comes about 25 s after arming. */
+    static final double DRAIN_PERCENT_PER_MINUTE = 24;
     static final Duration IDLE_WINDOW = Duration.ofSeconds(10);
+    /** CPU is measured while every vehicle flies with its guard armed, before any cut. */
+    static final Duration GUARDED_WINDOW = Duration.ofSeconds(8);
 
     private final Path out;
     private final String script;
@@ -129,15 +135,21 @@ public final class FleetBench {
 
             Engine engine = new Engine(new MAVLinkPlatform(comms), clock);
             engine.bind("fleetSize", n);
-            ScriptResult[] result = new ScriptResult[1];
-            Cpu flying = Cpu.measure(sim, comms, () -> result[0] = engine.run(script, "bench/fleet.dolphin").await());
+            var run = engine.run(script, "bench/fleet.dolphin");
+            check(waitFor(Duration.ofSeconds(300), () -> comms.nodes().stream().allMatch(
+                    v -> v.isArmed() && v.getModeName().equals("AUTO") && v.state().relativeAlt() > 5)),
+                    "every vehicle flying its mission");
+            Cpu guarded = Cpu.measure(sim, comms, () -> Thread.sleep(GUARDED_WINDOW.toMillis()));
+            boolean early = !reactions.crossed.isEmpty();
+            ScriptResult result = run.await();
             long heapFlying = usedHeap(memory) - heapBefore;
             List<Double> ms = reactions.latenciesMs();
-            if (result[0].outcome() != ScriptResult.Outcome.COMPLETED || ms.size() != n) {
-                System.err.println("fleet " + n + ": " + result[0] + ", " + ms.size() + " reactions of " + n);
+            if (result.outcome() != ScriptResult.Outcome.COMPLETED || ms.size() != n || early) {
+                System.err.println("fleet " + n + ": " + result + ", " + ms.size() + " reactions of " + n
+                        + (early ? ", a cut came during the measuring window" : ""));
                 failures++;
             }
-            report(n, links, heapVehicles, heapFlying, idle, flying, ms);
+            report(n, links, heapVehicles, heapFlying, idle, guarded, ms);
         } finally {
             sim.destroy();
             sim.waitFor();
@@ -147,7 +159,7 @@ public final class FleetBench {
     }
 
     /** CPU of this process (the runtime) and of the simulator process over a window. */
-    record Cpu(double seconds, double runtimeCores, double simCores, double framesInPerSecond) {
+    record Cpu(double seconds, double runtimeCores, double simCores, double framesInPerSecond, Map<String, Double> threadCores) {
 
         interface Window {
             void run() throws Exception;
@@ -159,10 +171,28 @@ public final class FleetBench {
             long cpu = os.getProcessCpuTime();
             long simCpu = simCpu(sim);
             long frames = comms.framesIn();
+            Map<Long, Long> threads = threadCpu();
             window.run();
             double seconds = (System.nanoTime() - wall) / 1e9;
+            Map<String, Double> byThread = new TreeMap<>();
+            var mx = ManagementFactory.getThreadMXBean();
+            threadCpu().forEach((id, t) -> {
+                var info = mx.getThreadInfo(id);
+                String name = info == null ? "ended" : info.getThreadName().replaceAll("mavlink-link-\\d+.*", "mavlink-link readers");
+                byThread.merge(name, (t - threads.getOrDefault(id, 0L)) / 1e9 / seconds, Double::sum);
+            });
+            byThread.values().removeIf(c -> c < 0.005);
             return new Cpu(seconds, (os.getProcessCpuTime() - cpu) / 1e9 / seconds, (simCpu(sim) - simCpu) / 1e9 / seconds,
-                    (comms.framesIn() - frames) / seconds);
+                    (comms.framesIn() - frames) / seconds, byThread);
+        }
+
+        private static Map<Long, Long> threadCpu() {
+            var mx = ManagementFactory.getThreadMXBean();
+            Map<Long, Long> cpu = new HashMap<>();
+            for (long id : mx.getAllThreadIds()) {
+                cpu.put(id, mx.getThreadCpuTime(id));
+            }
+            return cpu;
         }
 
         private static long simCpu(Process sim) {
@@ -174,11 +204,13 @@ public final class FleetBench {
         double p50 = percentile(ms, 50);
         double p99 = percentile(ms, 99);
         double max = ms.isEmpty() ? Double.NaN : ms.get(ms.size() - 1);
-        line(String.format(Locale.ROOT, "%5d vehicles, %d link(s): %,.0f frames/s in while flying", n, links, flying.framesInPerSecond()));
-        line(String.format(Locale.ROOT, "      runtime CPU: %.3f cores streaming only, %.3f cores flying (%.2f ms/s per vehicle); "
+        line(String.format(Locale.ROOT, "%5d vehicles, %d link(s): %,.0f frames/s in while flying with guards", n, links, flying.framesInPerSecond()));
+        line(String.format(Locale.ROOT, "      runtime CPU: %.3f cores streaming only, %.3f cores flying with guards (%.3f ms/s per vehicle); "
                         + "simulator (reference, same traffic): %.3f and %.3f cores; runtime/simulator %.2f",
                 idle.runtimeCores(), flying.runtimeCores(), flying.runtimeCores() * 1000 / n, idle.simCores(), flying.simCores(),
                 flying.runtimeCores() / flying.simCores()));
+        line(String.format(Locale.ROOT, "      runtime threads flying with guards (cores): %s", flying.threadCores().entrySet().stream()
+                .map(e -> String.format(Locale.ROOT, "%s %.3f", e.getKey(), e.getValue())).collect(Collectors.joining(", "))));
         line(String.format(Locale.ROOT, "      heap: %.1f KiB per vehicle connected, %.1f KiB per vehicle after the flights",
                 heapVehicles / 1024.0 / n, heapFlying / 1024.0 / n));
         line(String.format(Locale.ROOT, "      reaction (SYS_STATUS < %d %% -> DO_SET_MODE RTL), %d cuts: p50 %.2f ms, p99 %.2f ms, max %.2f ms",
@@ -191,6 +223,7 @@ public final class FleetBench {
         r.put("runtimeCoresFlying", flying.runtimeCores());
         r.put("simCoresStreaming", idle.simCores());
         r.put("simCoresFlying", flying.simCores());
+        r.put("runtimeThreadCoresFlying", flying.threadCores());
         r.put("heapBytesPerVehicle", heapVehicles / (double) n);
         r.put("heapBytesPerVehicleAfterFlights", heapFlying / (double) n);
         r.put("reactionMs", ms);

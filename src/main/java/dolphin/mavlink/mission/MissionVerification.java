@@ -1,12 +1,16 @@
 package dolphin.mavlink.mission;
 
+import com.MAVLink.enums.MAV_FRAME;
 import java.util.List;
 import java.util.Optional;
 
 /**
  * Compares the items sent with those downloaded back, skipping item 0 (ArduPilot replaces it with
- * its home), as ArduPilot's autotest does (check_mission_upload_download): command, frame and
- * autocontinue equal, params equal with NaN equal to NaN, x and y exactly (degE7), z within 1 cm.
+ * its home), as ArduPilot's autotest does (check_mission_upload_download): the command, param1
+ * (NaN equal to NaN), x and y exactly (degE7) and z within 1 cm. ArduPilot stores only what each
+ * command uses, so params 2 to 4 may come back 0; it keeps a location's altitude reference but not
+ * its frame, so a GLOBAL_INT item comes back GLOBAL: frames are compared by altitude reference,
+ * for items with a position only.
  */
 public final class MissionVerification {
 
@@ -36,15 +40,11 @@ public final class MissionVerification {
         if (s.command() != d.command()) {
             return "command sent " + s.commandName() + ", vehicle has " + d.commandName();
         }
-        if (s.frame() != d.frame()) {
+        if (s.frame() != MAV_FRAME.MAV_FRAME_MISSION && altitudeReference(s.frame()) != altitudeReference(d.frame())) {
             return "frame sent " + s.frameName() + ", vehicle has " + d.frameName();
         }
-        float[] sp = {s.param1(), s.param2(), s.param3(), s.param4()};
-        float[] dp = {d.param1(), d.param2(), d.param3(), d.param4()};
-        for (int p = 0; p < 4; p++) {
-            if (Float.compare(sp[p], dp[p]) != 0 && !(sp[p] == dp[p])) {
-                return "param" + (p + 1) + " sent " + sp[p] + ", vehicle has " + dp[p];
-            }
+        if (Float.compare(s.param1(), d.param1()) != 0 && !(s.param1() == d.param1())) {
+            return "param1 sent " + s.param1() + ", vehicle has " + d.param1();
         }
         if (s.x() != d.x()) {
             return "x sent " + s.x() + ", vehicle has " + d.x();
@@ -56,9 +56,16 @@ public final class MissionVerification {
         if (!bothNaN && !(Math.abs(s.z() - d.z()) <= Z_TOLERANCE)) {
             return "z sent " + s.z() + ", vehicle has " + d.z();
         }
-        if (s.autocontinue() != d.autocontinue()) {
-            return "autocontinue sent " + s.autocontinue() + ", vehicle has " + d.autocontinue();
-        }
         return null;
+    }
+
+    /** What z is measured from: the frame without its _INT variant. */
+    private static int altitudeReference(int frame) {
+        return switch (frame) {
+            case MAV_FRAME.MAV_FRAME_GLOBAL_INT -> MAV_FRAME.MAV_FRAME_GLOBAL;
+            case MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT -> MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT;
+            case MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT_INT -> MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT;
+            default -> frame;
+        };
     }
 }

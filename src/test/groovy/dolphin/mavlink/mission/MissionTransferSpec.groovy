@@ -231,6 +231,26 @@ class MissionTransferSpec extends Specification {
                 "item 2 (NAV_WAYPOINT): x sent ${sent[2].x()}, vehicle has ${sent[2].x() + 1}"
     }
 
+    def "verify accepts what ArduPilot reports back: GLOBAL for GLOBAL_INT, params 2 to 4 not stored; not another altitude reference"() {
+        given:
+        def sent = intended()
+        def asArduPilot = [sent[0]] + sent.drop(1).collect {
+            new MissionItem(it.seq(), it.command(), it.frame() == 6 ? 3 : 0, it.param1(), 0, 0, 0, it.x(), it.y(), it.z(), true)
+        }
+        def relative = asArduPilot.collect {
+            it.seq() == 2 ? new MissionItem(it.seq(), it.command(), 3, it.param1(), 0, 0, 0, it.x(), it.y(), it.z(), true) : it
+        }
+        def otherP1 = asArduPilot.collect {
+            it.seq() == 1 ? new MissionItem(it.seq(), it.command(), it.frame(), 7, 0, 0, 0, it.x(), it.y(), it.z(), true) : it
+        }
+
+        expect:
+        sent.drop(1).every { it.frame() in [2, 5] }
+        !MissionVerification.firstDifference(sent, asArduPilot).present
+        MissionVerification.firstDifference(sent, relative).get() == 'item 2 (NAV_WAYPOINT): frame sent GLOBAL_INT, vehicle has GLOBAL_RELATIVE_ALT'
+        MissionVerification.firstDifference(sent, otherP1).get() == "item 1 (${sent[1].commandName()}): param1 sent ${sent[1].param1()}, vehicle has 7.0"
+    }
+
     static MissionItem withZ(MissionItem i, float z) {
         new MissionItem(i.seq(), i.command(), i.frame(), i.param1(), i.param2(), i.param3(), i.param4(), i.x(), i.y(), z, i.autocontinue())
     }
