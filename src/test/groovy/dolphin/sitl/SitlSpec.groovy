@@ -126,7 +126,7 @@ class SitlSpec extends Specification {
 
         then:
         r.result.outcome() == ScriptResult.Outcome.COMPLETED
-        inOrder(lines, "mission every command on vehicle ${n}: uploading 24 items", "mission every command on vehicle ${n}: armed",
+        inOrder(lines, "mission every command on vehicle ${n}: uploading 23 items", "mission every command on vehicle ${n}: armed",
                 "mission every command on vehicle ${n}: done", 'every command: DONE',
                 "mission holds on vehicle ${n}: started", "mission holds on vehicle ${n}: cut short: RTL", 'holds: DONE')
 

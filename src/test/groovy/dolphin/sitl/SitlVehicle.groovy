@@ -11,7 +11,8 @@ import java.util.concurrent.TimeUnit
  * eeprom.bin and logs go there), with an instance number (-I i: TCP ports 5760 + 10 i and up, so
  * instances never clash), a system id (--sysid N, which sets MAV_SYSID on current ArduPilot and
  * SYSID_THISMAV on older releases), a home, the vehicle's default parameter file, and SERIAL0 sending
- * UDP to our ground station's udpin port. Its output goes to sitl.log in the working directory.
+ * UDP to our ground station's udpin port. Its output goes to sitl.log in the working directory;
+ * failures quote its last lines.
  */
 class SitlVehicle implements AutoCloseable {
 
@@ -52,7 +53,10 @@ class SitlVehicle implements AutoCloseable {
         Files.exists(log) ? log.readLines().takeRight(lines).join('\n') : '(no output)'
     }
 
-    /** Ends the process and every process it started (a wrapper script's java, say), forcibly after 5 s. */
+    /**
+     * Ends the process and every process it started (a wrapper script's java, say), forcibly after
+     * 5 s, and deletes the working directory (SITL's dataflash logs grow by megabytes a minute).
+     */
     @Override
     void close() {
         List<ProcessHandle> tree = process.descendants().toList() + [process.toHandle()]
@@ -64,6 +68,7 @@ class SitlVehicle implements AutoCloseable {
                 h.destroyForcibly()
             }
         }
+        dir.toFile().deleteDir()
     }
 
     @Override
