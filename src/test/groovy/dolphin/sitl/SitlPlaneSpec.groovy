@@ -55,7 +55,7 @@ class SitlPlaneSpec extends Specification {
 
         then:
         r.result.outcome() == ScriptResult.Outcome.COMPLETED
-        SitlSpec.inOrder(r.lines, 'mission circuit on vehicle 11: uploading 6 items', 'mission circuit on vehicle 11: armed',
+        ScriptLines.inOrder(r.lines, 'mission circuit on vehicle 11: uploading 6 items', 'mission circuit on vehicle 11: armed',
                 'mission circuit on vehicle 11: started', 'mission circuit on vehicle 11: done', 'circuit: DONE')
         SitlMissions.difference(r.engine.variable('circuit').items(node.home), sitl.download(node)) == null
     }
