@@ -1,0 +1,148 @@
+package dolphin.sitl
+
+import com.MAVLink.enums.MAV_SYS_STATUS_SENSOR
+import dolphin.core.Position
+import dolphin.core.SystemClock
+import dolphin.core.TaskEvent
+import dolphin.dsl.Engine
+import dolphin.dsl.EngineListener
+import dolphin.dsl.ScriptResult
+import dolphin.mavlink.CommandResult
+import dolphin.mavlink.MAVLinkCommunications
+import dolphin.mavlink.MAVLinkConfig
+import dolphin.mavlink.MAVLinkNode
+import dolphin.mavlink.MAVLinkPlatform
+import dolphin.mavlink.mission.MissionExecutorConfig
+import dolphin.mavlink.mission.MissionItem
+import dolphin.mavlink.mission.TransferResult
+import java.time.Duration
+import java.util.concurrent.TimeUnit
+import spock.util.concurrent.PollingConditions
+
+/**
+ * Our ground station (MAVLinkCommunications on udpin 127.0.0.1, a private port, real time, as
+ * `dolphin run` has it) and the SITL processes that send to it. Configured from the environment:
+ * ARDUPILOT_SITL_BIN (arducopter), ARDUPILOT_SITL_PLANE_BIN (arduplane), ARDUPILOT_SITL_DEFAULTS and
+ * ARDUPILOT_SITL_PLANE_DEFAULTS (their parameter files; by default ArduPilot's
+ * Tools/autotest/default_params/copter.parm or plane.parm found from a binary in build/sitl/bin),
+ * ARDUPILOT_SITL_SPEEDUP (SITL's --speedup, default 1). Close it to stop every process.
+ */
+class SitlHarness implements AutoCloseable {
+
+    static final double SPEEDUP = (System.getenv('ARDUPILOT_SITL_SPEEDUP') ?: '1') as double
+    /** ArduCopter SITL passes its pre-arm checks about 24 s after boot and accepts arming in GUIDED at about 42 s. */
+    static final double READY_SECONDS = 120
+
+    final MAVLinkCommunications comms
+    final List<SitlVehicle> vehicles = []
+    /** The program's messages and the platform tasks' events, as `dolphin run` prints them (without times). */
+    final List<String> lines = Collections.synchronizedList([])
+
+    SitlHarness() {
+        comms = new MAVLinkCommunications(MAVLinkConfig.of('udpin:127.0.0.1:0'), SystemClock.REAL)
+        // ArduPilot keeps items in its own compact form and sends them back in MAV_FRAME_GLOBAL with
+        // only the parameters it stores (AP_Mission::mission_cmd_to_mavlink_int), so the executor's
+        // exact comparison is off here; every mission is compared by SitlMissions.difference instead.
+        comms.setMissionExecutorConfig(MissionExecutorConfig.DEFAULT.withVerify(false))
+        comms.start()
+    }
+
+    /**
+     * Starts a vehicle: binary from the environment variable {@code binaryVariable}, parameter file
+     * from {@code defaultsVariable} or {@code parmFile} next to ArduPilot's build.
+     */
+    SitlVehicle start(String binaryVariable, String defaultsVariable, String parmFile, String model, int sysid, int instance, Position home) {
+        String binary = new File(System.getenv(binaryVariable)).absolutePath
+        assert new File(binary).canExecute(): "${binaryVariable}=${binary} is not an executable file"
+        def v = new SitlVehicle(binary, model, sysid, instance, home, defaults(binary, defaultsVariable, parmFile), SPEEDUP,
+                comms.links()[0].localPort())
+        vehicles << v
+        v
+    }
+
+    /** The parameter file: named by the variable, else ArduPilot's own, from build/sitl/bin/BINARY up to the source tree. */
+    static String defaults(String binary, String variable, String parmFile) {
+        String named = System.getenv(variable)
+        if (named) {
+            assert new File(named).isFile(): "${variable}=${named} is not a file"
+            return new File(named).absolutePath
+        }
+        def guess = new File(binary).parentFile?.parentFile?.parentFile?.parentFile
+        def parm = guess == null ? null : new File(guess, "Tools/autotest/default_params/${parmFile}")
+        parm?.isFile() ? parm.absolutePath : null
+    }
+
+    /**
+     * Waits until the vehicle is discovered, knows its position and home (ArduPilot sends
+     * HOME_POSITION once its EKF has an origin) and, when its SYS_STATUS carries the pre-arm bit,
+     * passes its pre-arm checks. Arming itself may still be refused for a while (GUIDED needs a
+     * position estimate): the MissionExecutor retries it until its deadline.
+     */
+    MAVLinkNode waitReady(SitlVehicle v) {
+        MAVLinkNode node = null
+        new PollingConditions(timeout: READY_SECONDS, delay: 0.2).eventually {
+            assert v.alive: "${v} exited:\n${v.logTail()}"
+            node = comms.node("${v.sysid}")
+            assert node != null: "vehicle ${v.sysid} not discovered; ${v}"
+            assert node.home != null && node.position != null
+            assert node.position.latitudeDegrees() != 0
+            def status = node.lastSystemStatus
+            assert status != null
+            long prearm = MAV_SYS_STATUS_SENSOR.MAV_SYS_STATUS_PREARM_CHECK
+            assert (status.onboard_control_sensors_present & prearm) == 0 || (status.onboard_control_sensors_health & prearm) != 0
+        }
+        node
+    }
+
+    /** Runs a script with a new Engine on this ground station; its result, or a failure after {@code deadline}. */
+    Map run(String source, String name, Duration deadline) {
+        lines.clear()
+        def engine = new Engine(new MAVLinkPlatform(comms), SystemClock.REAL)
+        engine.addListener(new EngineListener() {
+            @Override
+            void message(String text) { lines << text }
+
+            @Override
+            void taskEvent(TaskEvent event) {
+                if (event.platformTask) {
+                    lines << "task ${event.task().id} ${event.kind().name().toLowerCase(Locale.ROOT)} on vehicle ${event.vehicles().join(',')}".toString()
+                }
+            }
+        })
+        try {
+            def run = engine.run(source, name)
+            ScriptResult result = run.await(deadline)
+            if (result == null) {
+                run.stop()
+                assert false: "${name} did not end within ${deadline}; lines so far:\n${lines.join('\n')}"
+            }
+            [result: result, engine: engine, lines: List.copyOf(lines)]
+        } finally {
+            engine.close()
+        }
+    }
+
+    /** Sends a COMMAND_LONG and waits for its COMMAND_ACK (the sender retries on its own). */
+    CommandResult command(MAVLinkNode node, int command, float... params) {
+        comms.command(node, command, params).get(30, TimeUnit.SECONDS)
+    }
+
+    TransferResult upload(MAVLinkNode node, List<MissionItem> items) {
+        node.uploadProtocol.upload(items).get(120, TimeUnit.SECONDS)
+    }
+
+    List<MissionItem> download(MAVLinkNode node) {
+        node.downloadProtocol.download().get(120, TimeUnit.SECONDS).orThrow()
+    }
+
+    /** Waits up to {@code seconds} (real time) for the condition, a closure with assertions. */
+    static void within(double seconds, Closure condition) {
+        new PollingConditions(timeout: seconds, delay: 0.2).eventually(condition)
+    }
+
+    @Override
+    void close() {
+        vehicles.each { it.close() }
+        comms.close()
+    }
+}

@@ -1,0 +1,62 @@
+package dolphin.sitl
+
+import dolphin.core.Position
+import dolphin.dsl.ScriptResult
+import dolphin.mavlink.MAVLinkNode
+import dolphin.mavlink.VehicleFamily
+import java.time.Duration
+import java.util.concurrent.TimeUnit
+import spock.lang.AutoCleanup
+import spock.lang.Requires
+import spock.lang.Shared
+import spock.lang.Specification
+import spock.lang.Stepwise
+import spock.lang.Timeout
+
+/**
+ * Dolphin against ArduPlane SITL: one plane (system id 11, instance 2, so its ports never clash with
+ * SitlSpec's copters). Runs only when ARDUPILOT_SITL_PLANE_BIN names an arduplane binary; otherwise
+ * every feature is skipped.
+ */
+@Requires({ env.ARDUPILOT_SITL_PLANE_BIN })
+@Stepwise
+@Timeout(value = 15, unit = TimeUnit.MINUTES)
+class SitlPlaneSpec extends Specification {
+
+    static final Position HOME = Position.fromDegrees(40.444233, -7.375234, 820)
+
+    @Shared
+    @AutoCleanup
+    SitlHarness sitl
+    @Shared
+    MAVLinkNode node
+
+    def setupSpec() {
+        sitl = new SitlHarness()
+        sitl.start('ARDUPILOT_SITL_PLANE_BIN', 'ARDUPILOT_SITL_PLANE_DEFAULTS', 'plane.parm', 'plane', 11, 2, HOME)
+    }
+
+    def "a plane with system id 11 is discovered and passes its pre-arm checks"() {
+        when:
+        node = sitl.waitReady(sitl.vehicles[0])
+
+        then:
+        node.mavLinkId == 11
+        node.family == VehicleFamily.PLANE
+        node.home.distanceTo(HOME) < 20
+    }
+
+    def "the plane takes off, flies two waypoints and a loiter turn back to home, and the mission completes; it comes back as built"() {
+        given:
+        String script = 'src/test/resources/sitl/plane.dolphin'
+
+        when:
+        def r = sitl.run(new File(script).text, script, Duration.ofMinutes(10))
+
+        then:
+        r.result.outcome() == ScriptResult.Outcome.COMPLETED
+        ScriptLines.inOrder(r.lines, 'mission circuit on vehicle 11: uploading 6 items', 'mission circuit on vehicle 11: armed',
+                'mission circuit on vehicle 11: started', 'mission circuit on vehicle 11: done', 'circuit: DONE')
+        SitlMissions.difference(r.engine.variable('circuit').items(node.home), sitl.download(node)) == null
+    }
+}

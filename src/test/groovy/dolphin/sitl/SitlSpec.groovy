@@ -1,0 +1,155 @@
+package dolphin.sitl
+
+import com.MAVLink.enums.MAV_CMD
+import dolphin.core.Position
+import dolphin.dsl.ScriptResult
+import dolphin.mavlink.CommandResult
+import dolphin.mavlink.MAVLinkNode
+import dolphin.mavlink.VehicleFamily
+import dolphin.mavlink.mission.Mission
+import java.time.Duration
+import java.util.concurrent.ConcurrentHashMap
+import java.util.concurrent.TimeUnit
+import spock.lang.AutoCleanup
+import spock.lang.Requires
+import spock.lang.Shared
+import spock.lang.Specification
+import spock.lang.Stepwise
+import spock.lang.Timeout
+
+import static dolphin.sitl.ScriptLines.after
+import static dolphin.sitl.ScriptLines.inOrder
+import static dolphin.sitl.ScriptLines.parsePosition
+import static dolphin.sitl.ScriptLines.vehicleOf
+
+/**
+ * Dolphin against ArduCopter SITL: two copters on loopback (see README, "Against ArduPilot SITL").
+ * Runs only when ARDUPILOT_SITL_BIN names an arducopter binary; otherwise every feature is skipped.
+ * The features build on each other (the vehicles fly one after the other) and follow ArduPilot's own
+ * autotest: every wait has a deadline, and every mission is checked by downloading it back.
+ */
+@Requires({ env.ARDUPILOT_SITL_BIN })
+@Stepwise
+@Timeout(value = 20, unit = TimeUnit.MINUTES)
+class SitlSpec extends Specification {
+
+    /** The home of dsl-examples/two-drones-survey.dolphin and of every-command.dolphin. */
+    static final Position HOME = Position.fromDegrees(40.444233, -7.375234, 820)
+    /** At SITL's real time, the scenario takes about 6 minutes and the every-command flight about 5. */
+    static final Duration RUN_DEADLINE = Duration.ofMinutes(15)
+    /** The survey is cut below 70 %: the battery is set just above it once the survey has begun. */
+    static final float CUT_BATTERY = 72
+
+    @Shared
+    @AutoCleanup
+    SitlHarness sitl
+    @Shared
+    List<MAVLinkNode> nodes
+    @Shared
+    Map scenario
+
+    def setupSpec() {
+        sitl = new SitlHarness()
+        // ten metres apart, as the simulated fleet places them; instances 0 and 1: TCP 5760 and 5770 and up
+        [1, 2].each { n ->
+            sitl.start('ARDUPILOT_SITL_BIN', 'ARDUPILOT_SITL_DEFAULTS', 'copter.parm', 'quad', n, n - 1, HOME.displace(0, 10 * (n - 1), 0))
+        }
+    }
+
+    def "two copters with system ids 1 and 2 are discovered on our udpin port and pass their pre-arm checks"() {
+        when:
+        nodes = sitl.vehicles.collect { sitl.waitReady(it) }
+
+        then:
+        nodes*.mavLinkId == [1, 2]
+        nodes.every { it.family == VehicleFamily.COPTER }
+        nodes.every { it.home.distanceTo(HOME) < 20 }
+    }
+
+    def "the recorded two-vehicle scenario: surveys cut below 70 % (battery set to 72 % on the survey), RTL, return missions, landed at home"() {
+        given: 'a watcher that sets each battery to 72 % once its vehicle flies the survey (item 2 on, after the take-off)'
+        Map<Integer, CommandResult> resets = new ConcurrentHashMap<>()
+        Thread watcher = Thread.start('battery reset') {
+            try {
+                while (resets.size() < nodes.size()) {
+                    nodes.findAll { !resets.containsKey(it.mavLinkId) && it.armed && it.state().missionSeq() >= 2 }.each {
+                        // param1: battery mask (the first battery, the one SYS_STATUS reports), param2: percentage
+                        resets[it.mavLinkId] = sitl.command(it, MAV_CMD.MAV_CMD_BATTERY_RESET, 1, CUT_BATTERY, 0, 0, 0, 0, 0)
+                    }
+                    Thread.sleep(100)
+                }
+            } catch (InterruptedException ignored) {
+                // the feature is over: its cleanup ends the watch
+            }
+        }
+
+        when:
+        scenario = sitl.run(new File('dsl-examples/two-drones-survey.dolphin').text, 'dsl-examples/two-drones-survey.dolphin', RUN_DEADLINE)
+        List<String> lines = scenario.lines
+
+        then:
+        scenario.result.outcome() == ScriptResult.Outcome.COMPLETED
+        resets.keySet() == [1, 2] as Set
+        resets.values().every { it.accepted() }
+        [['Survey Area 1', 'Return to base 1'], ['Survey Area 2', 'Return to base 2']].every { survey, back ->
+            int n = vehicleOf(lines, survey)
+            int i = after(lines, -1, "mission ${survey} on vehicle ${n}: started")
+            i = after(lines, i, "mission ${survey} on vehicle ${n}: cut short: RTL")
+            int cut = after(lines, i, "vehicle { ${n} } cut short at battery *")
+            assert ((lines[cut] =~ /battery (\d+) %/)[0][1] as int) in 50..70
+            i = after(lines, cut, "mission ${back} on vehicle ${n}: done")   // landed and disarmed
+            int landed = after(lines, i, "vehicle { ${n} } landed at *")
+            assert parsePosition(lines[landed]).distanceTo(HOME) < 10
+            true
+        }
+        lines.contains('both vehicles back: DONE')
+
+        cleanup:
+        watcher?.interrupt()
+    }
+
+    def "each mission of the scenario comes back from its vehicle as built: the return mission left on it, and the survey uploaded again"() {
+        expect:
+        [['Survey Area 1', 'surveyNorth', 'returnHome'], ['Survey Area 2', 'surveySouth', 'returnHome2']].every { survey, surveyVar, backVar ->
+            MAVLinkNode node = sitl.comms.node("${vehicleOf(scenario.lines, survey)}")
+            assert roundTripDifference(node, scenario.engine.variable(backVar), false) == null
+            assert roundTripDifference(node, scenario.engine.variable(surveyVar), true) == null
+            true
+        }
+    }
+
+    def "one copter flies a mission with every family of mission commands to its landing, then unlimited loiters cut short by during"() {
+        given: 'full batteries after the scenario'
+        nodes.each { assert sitl.command(it, MAV_CMD.MAV_CMD_BATTERY_RESET, 1, 100, 0, 0, 0, 0, 0).accepted() }
+        String script = 'src/test/resources/sitl/every-command.dolphin'
+
+        when:
+        def r = sitl.run(new File(script).text, script, RUN_DEADLINE)
+        List<String> lines = r.lines
+        int n = vehicleOf(lines, 'every command')
+        MAVLinkNode node = sitl.comms.node("${n}")
+
+        then:
+        r.result.outcome() == ScriptResult.Outcome.COMPLETED
+        inOrder(lines, "mission every command on vehicle ${n}: uploading 23 items", "mission every command on vehicle ${n}: armed",
+                "mission every command on vehicle ${n}: done", 'every command: DONE',
+                "mission holds on vehicle ${n}: started", "mission holds on vehicle ${n}: cut short: RTL", 'holds: DONE')
+
+        when: 'RTL has brought it home'
+        SitlHarness.within(300) { assert !node.armed }
+
+        then: 'both missions come back as built: holds as the executor left it, every command uploaded again'
+        node.position.distanceTo(HOME) < 15
+        roundTripDifference(node, r.engine.variable('holds'), false) == null
+        roundTripDifference(node, r.engine.variable('everything'), true) == null
+    }
+
+    /** Uploads the mission first when asked; then downloads the vehicle's and compares it with the items built for it. */
+    String roundTripDifference(MAVLinkNode node, Mission mission, boolean upload) {
+        def built = mission.items(node.home)
+        if (upload) {
+            assert sitl.upload(node, built).success()
+        }
+        SitlMissions.difference(built, sitl.download(node))
+    }
+}

@@ -1,0 +1,76 @@
+package dolphin.sitl
+
+import dolphin.core.Position
+import java.nio.file.Files
+import java.nio.file.Path
+import java.util.concurrent.TimeUnit
+
+/**
+ * One ArduPilot SITL process (arducopter or arduplane, run directly, without sim_vehicle.py or
+ * MAVProxy), started the way ArduPilot's docs run the binary: in its own working directory (its
+ * eeprom.bin and logs go there), with an instance number (-I i: TCP ports 5760 + 10 i and up, so
+ * instances never clash), a system id (--sysid N, which sets MAV_SYSID on current ArduPilot and
+ * SYSID_THISMAV on older releases), a home, the vehicle's default parameter file, and SERIAL0 sending
+ * UDP to our ground station's udpin port. Its output goes to sitl.log in the working directory;
+ * failures quote its last lines.
+ */
+class SitlVehicle implements AutoCloseable {
+
+    final String binary
+    final String model
+    final int sysid
+    final int instance
+    final Position home
+    final Path dir
+    private final Process process
+
+    /**
+     * @param defaults the parameter file (ArduPilot's Tools/autotest/default_params/copter.parm or
+     *        plane.parm), or null to run on the binary's built-in defaults
+     */
+    SitlVehicle(String binary, String model, int sysid, int instance, Position home, String defaults, double speedup, int gcsPort) {
+        this.binary = binary
+        this.model = model
+        this.sysid = sysid
+        this.instance = instance
+        this.home = home
+        this.dir = Files.createTempDirectory("sitl-${model}-${sysid}-")
+        List<String> cmd = [binary, '--model', model, '-I', "${instance}", '--sysid', "${sysid}",
+                            '--home', String.format(Locale.ROOT, '%.7f,%.7f,%.2f,0', home.latitudeDegrees(), home.longitudeDegrees(), home.hae()),
+                            '--speedup', String.valueOf(speedup), '--serial0', "udpclient:127.0.0.1:${gcsPort}"]*.toString()
+        if (defaults) {
+            cmd += ['--defaults', defaults]
+        }
+        process = new ProcessBuilder(cmd).directory(dir.toFile()).redirectErrorStream(true)
+                .redirectOutput(dir.resolve('sitl.log').toFile()).start()
+    }
+
+    boolean isAlive() { process.alive }
+
+    /** The last lines of the process's output, for failure messages. */
+    String logTail(int lines = 20) {
+        def log = dir.resolve('sitl.log')
+        Files.exists(log) ? log.readLines().takeRight(lines).join('\n') : '(no output)'
+    }
+
+    /**
+     * Ends the process and every process it started (a wrapper script's java, say), forcibly after
+     * 5 s, and deletes the working directory (SITL's dataflash logs grow by megabytes a minute).
+     */
+    @Override
+    void close() {
+        List<ProcessHandle> tree = process.descendants().toList() + [process.toHandle()]
+        tree.each { it.destroy() }
+        tree.each { h ->
+            try {
+                h.onExit().get(5, TimeUnit.SECONDS)
+            } catch (java.util.concurrent.TimeoutException ignored) {
+                h.destroyForcibly()
+            }
+        }
+        dir.toFile().deleteDir()
+    }
+
+    @Override
+    String toString() { "${new File(binary).name} --sysid ${sysid} -I ${instance} (output in ${dir}/sitl.log)" }
+}

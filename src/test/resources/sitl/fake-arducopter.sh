@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# TEST DOUBLE, NOT ArduPilot SITL. It lets the SITL suite (src/test/groovy/dolphin/sitl) run its own
+# code path where no ArduPilot build exists: it takes the command line the suite gives arducopter or
+# arduplane and starts one vehicle of Dolphin's own simulator (`dolphin sim`) instead:
+#
+#   --model quad|plane   -> --type copter|plane
+#   --sysid N            -> --first-sysid N
+#   --home LAT,LON,ALT,HDG -> --home LAT,LON,ALT (the heading is dropped)
+#   --serial0 udpclient:HOST:PORT -> --link udpout:HOST:PORT
+#   --speedup X          -> --speedup X
+#   -I N, --defaults FILE -> accepted and ignored (one process, no eeprom, no parameters)
+#
+# It adds --warmup 20 (simulated seconds) so that arming is refused for a while after boot, as
+# ArduPilot refuses it while its EKF settles: the suite's waits and the executor's arm retries run.
+# Use: ARDUPILOT_SITL_BIN=src/test/resources/sitl/fake-arducopter.sh mvn -B -ntp verify -P sitl
+# (after `mvn package`, which builds target/dolphin.jar and target/lib).
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../../.." && pwd)"
+args=(sim --count 1 --warmup 20)
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --model) case "$2" in
+               quad|copter|+|x) args+=(--type copter) ;;
+               plane) args+=(--type plane) ;;
+               *) echo "fake-arducopter: unsupported --model $2" >&2; exit 2 ;;
+             esac; shift 2 ;;
+    --sysid) args+=(--first-sysid "$2"); shift 2 ;;
+    --home) IFS=, read -r lat lon alt _ <<< "$2"; args+=(--home "$lat,$lon,$alt"); shift 2 ;;
+    --serial0) case "$2" in
+                 udpclient:*) args+=(--link "udpout:${2#udpclient:}") ;;
+                 *) echo "fake-arducopter: only --serial0 udpclient:HOST:PORT is supported, got $2" >&2; exit 2 ;;
+               esac; shift 2 ;;
+    --speedup) args+=(--speedup "$2"); shift 2 ;;
+    -I|--instance|--defaults) shift 2 ;;
+    *) echo "fake-arducopter: unsupported option $1" >&2; exit 2 ;;
+  esac
+done
+jar="$root/target/dolphin.jar"
+if [ ! -f "$jar" ]; then
+  echo "fake-arducopter: $jar is missing: run mvn package first" >&2
+  exit 2
+fi
+exec java -cp "$jar:$root/target/lib/*" dolphin.cli.Main "${args[@]}"
