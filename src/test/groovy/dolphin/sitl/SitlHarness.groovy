@@ -12,7 +12,6 @@ import dolphin.mavlink.MAVLinkCommunications
 import dolphin.mavlink.MAVLinkConfig
 import dolphin.mavlink.MAVLinkNode
 import dolphin.mavlink.MAVLinkPlatform
-import dolphin.mavlink.mission.MissionExecutorConfig
 import dolphin.mavlink.mission.MissionItem
 import dolphin.mavlink.mission.TransferResult
 import java.time.Duration
@@ -40,10 +39,6 @@ class SitlHarness implements AutoCloseable {
 
     SitlHarness() {
         comms = new MAVLinkCommunications(MAVLinkConfig.of('udpin:127.0.0.1:0'), SystemClock.REAL)
-        // ArduPilot keeps items in its own compact form and sends them back in MAV_FRAME_GLOBAL with
-        // only the parameters it stores (AP_Mission::mission_cmd_to_mavlink_int), so the executor's
-        // exact comparison is off here; every mission is compared by SitlMissions.difference instead.
-        comms.setMissionExecutorConfig(MissionExecutorConfig.DEFAULT.withVerify(false))
         comms.start()
     }
 

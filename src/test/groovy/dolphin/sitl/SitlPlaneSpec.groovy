@@ -4,6 +4,7 @@ import dolphin.core.Position
 import dolphin.dsl.ScriptResult
 import dolphin.mavlink.MAVLinkNode
 import dolphin.mavlink.VehicleFamily
+import dolphin.mavlink.mission.MissionVerification
 import java.time.Duration
 import java.util.concurrent.TimeUnit
 import spock.lang.AutoCleanup
@@ -57,6 +58,6 @@ class SitlPlaneSpec extends Specification {
         r.result.outcome() == ScriptResult.Outcome.COMPLETED
         ScriptLines.inOrder(r.lines, 'mission circuit on vehicle 11: uploading 6 items', 'mission circuit on vehicle 11: armed',
                 'mission circuit on vehicle 11: started', 'mission circuit on vehicle 11: done', 'circuit: DONE')
-        SitlMissions.difference(r.engine.variable('circuit').items(node.home), sitl.download(node)) == null
+        !MissionVerification.firstDifference(r.engine.variable('circuit').items(node.home), sitl.download(node)).present
     }
 }

@@ -7,6 +7,7 @@ import dolphin.mavlink.CommandResult
 import dolphin.mavlink.MAVLinkNode
 import dolphin.mavlink.VehicleFamily
 import dolphin.mavlink.mission.Mission
+import dolphin.mavlink.mission.MissionVerification
 import java.time.Duration
 import java.util.concurrent.ConcurrentHashMap
 import java.util.concurrent.TimeUnit
@@ -150,6 +151,6 @@ class SitlSpec extends Specification {
         if (upload) {
             assert sitl.upload(node, built).success()
         }
-        SitlMissions.difference(built, sitl.download(node))
+        MissionVerification.firstDifference(built, sitl.download(node)).orElse(null)
     }
 }
