@@ -2,6 +2,7 @@ package dolphin.examples
 
 import dolphin.cli.Main
 import dolphin.core.Position
+import dolphin.testing.ScriptLines
 import java.util.concurrent.TimeUnit
 import spock.lang.Shared
 import spock.lang.Specification
@@ -55,29 +56,6 @@ class ExamplesSpec extends Specification {
         [code: exit, out: out.toString(), err: err.toString(), lines: lines]
     }
 
-    /**
-     * The index of the first line equal to {@code line} (or starting with it, when it ends with '*'),
-     * after {@code from}; fails with the output if there is none.
-     */
-    static int after(List<String> lines, int from, String line) {
-        int i = lines.findIndexOf(from + 1) { line.endsWith('*') ? it.startsWith(line[0..-2]) : it == line }
-        assert i > from: "no line '${line}' after line ${from}:\n${lines.join('\n')}"
-        i
-    }
-
-    /** Each line appears, in this order; fails with the output if one does not. */
-    static boolean inOrder(List<String> lines, String... expected) {
-        int i = -1
-        expected.each { i = after(lines, i, it) }
-        true
-    }
-
-    static Position parsePosition(String text) {
-        def m = text =~ /\((-?[\d.]+)°, (-?[\d.]+)°, (-?[\d.]+)\)/
-        assert m.find(): "no position in '${text}'"
-        Position.fromDegrees(m.group(1) as double, m.group(2) as double, m.group(3) as double)
-    }
-
     def "every file in dsl-examples/ is run by this spec"() {
         expect:
         new File(DIR).listFiles().findAll { it.name.endsWith('.dolphin') }*.name*.replace('.dolphin', '').sort() == COVERED.sort()
@@ -92,25 +70,25 @@ class ExamplesSpec extends Specification {
         then:
         r.code == 0
         [[1, 'Survey Area 1', 'Return to base 1', 1], [2, 'Survey Area 2', 'Return to base 2', -1]].every { n, survey, back, northward ->
-            int i = after(lines, -1, "mission ${survey} on vehicle ${n}: uploading 45 items")
-            i = after(lines, i, "mission ${survey} on vehicle ${n}: armed")
-            i = after(lines, i, "mission ${survey} on vehicle ${n}: started")
-            i = after(lines, i, "mission ${survey} on vehicle ${n}: item 1 of 44 reached")   // the take-off
-            i = after(lines, i, "mission ${survey} on vehicle ${n}: cut short: RTL")
+            int i = ScriptLines.after(lines, -1, "mission ${survey} on vehicle ${n}: uploading 45 items")
+            i = ScriptLines.after(lines, i, "mission ${survey} on vehicle ${n}: armed")
+            i = ScriptLines.after(lines, i, "mission ${survey} on vehicle ${n}: started")
+            i = ScriptLines.after(lines, i, "mission ${survey} on vehicle ${n}: item 1 of 44 reached")   // the take-off
+            i = ScriptLines.after(lines, i, "mission ${survey} on vehicle ${n}: cut short: RTL")
             // cut at the threshold, on its own survey leg (north for vehicle 1, south for 2), at 920 m
             int cut = lines.findIndexOf(i) { it.startsWith("vehicle { ${n} } cut short at battery ") }
             assert cut > i
             assert (lines[cut] =~ /battery (\d+) %/)[0][1].toInteger() in 60..69
-            Position p = parsePosition(lines[cut])
+            Position p = ScriptLines.parsePosition(lines[cut])
             assert (p.latitudeDegrees() - HOME.latitudeDegrees()) * northward * 111_000 > 500
             assert Math.abs(p.hae() - 920) < 5
-            i = after(lines, cut, "mission ${back} on vehicle ${n}: uploading 2 items")
-            i = after(lines, i, "mission ${back} on vehicle ${n}: started")
-            i = after(lines, i, "mission ${back} on vehicle ${n}: done")   // landed and disarmed
+            i = ScriptLines.after(lines, cut, "mission ${back} on vehicle ${n}: uploading 2 items")
+            i = ScriptLines.after(lines, i, "mission ${back} on vehicle ${n}: started")
+            i = ScriptLines.after(lines, i, "mission ${back} on vehicle ${n}: done")   // landed and disarmed
             assert !lines.any { it.contains("mission ${survey} on vehicle ${n}: done") }
             int landed = lines.findIndexOf(i) { it.startsWith("vehicle { ${n} } landed at ") }
             assert landed > i
-            assert parsePosition(lines[landed]).distanceTo(HOME) < 5
+            assert ScriptLines.parsePosition(lines[landed]).distanceTo(HOME) < 5
             true
         }
         lines.contains('both vehicles back: DONE')
@@ -125,7 +103,7 @@ class ExamplesSpec extends Specification {
 
         then:
         r.code == 0
-        inOrder(r.lines, 'mission Survey Area on vehicle 1: started', 'mission Survey Area on vehicle 1: cut short: RTL',
+        ScriptLines.inOrder(r.lines, 'mission Survey Area on vehicle 1: started', 'mission Survey Area on vehicle 1: cut short: RTL',
                 'mission Return to base on vehicle 1: started', 'mission Return to base on vehicle 1: done')
         r.lines.find { it.startsWith('vehicle { 1 } is back home: battery ') }
         r.lines.last() == 'dsl-examples/listing2-single-vehicle.dolphin: completed'
@@ -139,10 +117,10 @@ class ExamplesSpec extends Specification {
         then:
         r.code == 0
         [[1, 'Survey Area 1'], [2, 'Survey Area 2']].every { n, survey ->
-            int i = after(r.lines, -1, "mission ${survey} on vehicle ${n}: started")
-            i = after(r.lines, i, "mission ${survey} on vehicle ${n}: cut short: RTL")
-            i = after(r.lines, i, "mission Return to base on vehicle ${n}: started")
-            after(r.lines, i, "mission Return to base on vehicle ${n}: done") > 0
+            int i = ScriptLines.after(r.lines, -1, "mission ${survey} on vehicle ${n}: started")
+            i = ScriptLines.after(r.lines, i, "mission ${survey} on vehicle ${n}: cut short: RTL")
+            i = ScriptLines.after(r.lines, i, "mission Return to base on vehicle ${n}: started")
+            ScriptLines.after(r.lines, i, "mission Return to base on vehicle ${n}: done") > 0
         }
         r.lines.contains('vehicles { 1 } and { 2 } are back home')
         r.lines.last() == 'dsl-examples/listing3-two-vehicles.dolphin: completed'
@@ -159,14 +137,14 @@ class ExamplesSpec extends Specification {
         r.code == 0
         flown.sort() == [1, 2, 3, 4]
         (1..4).every { n ->
-            int i = after(r.lines, -1, "mission Return to base on vehicle ${n}: started")
-            after(r.lines, i, "mission Return to base on vehicle ${n}: done") > 0
+            int i = ScriptLines.after(r.lines, -1, "mission Return to base on vehicle ${n}: started")
+            ScriptLines.after(r.lines, i, "mission Return to base on vehicle ${n}: done") > 0
         }
-        int round1 = after(r.lines, -1, 'round done: vehicles { 1 } and { 2 } are back home')
+        int round1 = ScriptLines.after(r.lines, -1, 'round done: vehicles { 1 } and { 2 } are back home')
         // the fresh vehicles are picked while 1 and 2 are still bound, and fly after them
-        after(r.lines, round1, 'picked { 3 } from the free vehicles { 3 4 }') > round1
-        after(r.lines, round1, 'mission Survey Area 1 on vehicle 3: started') > round1
-        after(r.lines, round1, 'round done: vehicles { 3 } and { 4 } are back home') > round1
+        ScriptLines.after(r.lines, round1, 'picked { 3 } from the free vehicles { 3 4 }') > round1
+        ScriptLines.after(r.lines, round1, 'mission Survey Area 1 on vehicle 3: started') > round1
+        ScriptLines.after(r.lines, round1, 'round done: vehicles { 3 } and { 4 } are back home') > round1
         r.lines.last() == 'dsl-examples/listing4-keep-two-airborne.dolphin: completed'
     }
 
@@ -177,9 +155,9 @@ class ExamplesSpec extends Specification {
 
         then:
         r.code == 0
-        inOrder(r.lines, 'mission hop on vehicle 1: done', 'task hover north started on vehicle 1',
+        ScriptLines.inOrder(r.lines, 'mission hop on vehicle 1: done', 'task hover north started on vehicle 1',
                 'mission hover north on vehicle 1: cut short: RTL', 'mission back on vehicle 1: done')
-        inOrder(r.lines, 'mission hover on vehicle 2: cut short: RTL', 'mission back on vehicle 2: done')
+        ScriptLines.inOrder(r.lines, 'mission hover on vehicle 2: cut short: RTL', 'mission back on vehicle 2: done')
         r.lines.find { it ==~ /operators: DONE; battery \d+ % and \d+ %/ }
     }
 
@@ -190,7 +168,7 @@ class ExamplesSpec extends Specification {
 
         then:
         r.code == 0
-        inOrder(r.lines, *expected)
+        ScriptLines.inOrder(r.lines, *expected)
         r.lines.last() == "dsl-examples/${example}.dolphin: completed".toString()
 
         where:
@@ -231,7 +209,7 @@ class ExamplesSpec extends Specification {
         cut.toSet().size() == 300
         // the first of two vehicles with one id to be heard keeps the plain id, the other is ID@LINK
         (1..150).every { id -> cut.contains("$id".toString()) && cut.count { it ==~ /$id@[12]/ } == 1 }
-        inOrder(r.lines, 'all 300 patrols cut short at 90 %: DONE', 'all 300 vehicles landed', 'dsl-examples/fleet.dolphin: completed')
+        ScriptLines.inOrder(r.lines, 'all 300 patrols cut short at 90 %: DONE', 'all 300 vehicles landed', 'dsl-examples/fleet.dolphin: completed')
         r.lines.findAll { it ==~ /vehicle \S+: RTL, armed, .*task patrol stopped/ }.size() == 300
     }
 }

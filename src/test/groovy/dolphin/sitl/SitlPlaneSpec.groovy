@@ -14,6 +14,8 @@ import spock.lang.Specification
 import spock.lang.Stepwise
 import spock.lang.Timeout
 
+import static dolphin.testing.ScriptLines.inOrder
+
 /**
  * Dolphin against ArduPlane SITL: one plane (system id 11, instance 2, so its ports never clash with
  * SitlSpec's copters). Runs only when ARDUPILOT_SITL_PLANE_BIN names an arduplane binary; otherwise
@@ -56,7 +58,7 @@ class SitlPlaneSpec extends Specification {
 
         then:
         r.result.outcome() == ScriptResult.Outcome.COMPLETED
-        ScriptLines.inOrder(r.lines, 'mission circuit on vehicle 11: uploading 6 items', 'mission circuit on vehicle 11: armed',
+        inOrder(r.lines, 'mission circuit on vehicle 11: uploading 6 items', 'mission circuit on vehicle 11: armed',
                 'mission circuit on vehicle 11: started', 'mission circuit on vehicle 11: done', 'circuit: DONE')
         !MissionVerification.firstDifference(r.engine.variable('circuit').items(node.home), sitl.download(node)).present
     }

@@ -18,10 +18,10 @@ import spock.lang.Specification
 import spock.lang.Stepwise
 import spock.lang.Timeout
 
-import static dolphin.sitl.ScriptLines.after
-import static dolphin.sitl.ScriptLines.inOrder
-import static dolphin.sitl.ScriptLines.parsePosition
-import static dolphin.sitl.ScriptLines.vehicleOf
+import static dolphin.testing.ScriptLines.after
+import static dolphin.testing.ScriptLines.inOrder
+import static dolphin.testing.ScriptLines.parsePosition
+import static dolphin.testing.ScriptLines.vehicleOf
 
 /**
  * Dolphin against ArduCopter SITL: two copters on loopback (see README, "Against ArduPilot SITL").

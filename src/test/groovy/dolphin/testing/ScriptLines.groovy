@@ -1,8 +1,8 @@
-package dolphin.sitl
+package dolphin.testing
 
 import dolphin.core.Position
 
-/** Reading a script run's lines (the executor's progress and the script's messages), as ExamplesSpec does. */
+/** Reading a script run's lines (the executor's progress and the script's messages), for the examples and the SITL suite. */
 final class ScriptLines {
 
     private ScriptLines() {
@@ -22,6 +22,7 @@ final class ScriptLines {
         i
     }
 
+    /** Each line appears, in this order; fails with the output if one does not. */
     static boolean inOrder(List<String> lines, String... expected) {
         int i = -1
         expected.each { i = after(lines, i, it) }
