@@ -1,6 +1,7 @@
 package dolphin.cli;
 
 import java.io.PrintWriter;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
@@ -45,7 +46,7 @@ final class LiveScreen implements Screen {
         if (statuses.isEmpty()) {
             return List.of("no vehicles yet");
         }
-        List<String> rows = new java.util.ArrayList<>();
+        List<String> rows = new ArrayList<>();
         rows.add(VehicleStatus.HEADER);
         statuses.stream().limit(maxRows).map(VehicleStatus::row).forEach(rows::add);
         if (statuses.size() > maxRows) {
