@@ -55,10 +55,10 @@ abstract class DolphinScript extends Script implements DslScript {
         c.delegate = picker
         c.resolveStrategy = Closure.DELEGATE_FIRST
         c.call()
-        NodeSet chosen = env().select(picker.filter(), picker.count, picker.timeout)
+        NodeSet chosen = env().select(picker.filter(), picker.requestedCount(), picker.requestedTimeout())
         if (chosen.is(NodeSet.EMPTY)) {
-            throw new Halt("pick: could not find ${picker.count} free vehicle(s) matching ${picker.filter()}"
-                    + " within ${picker.timeout} s; connected: ${env().platform.connectedNodes}, already picked: ${env().bound}")
+            throw new Halt("pick: could not find ${picker.requestedCount()} free vehicle(s) matching ${picker.filter()}"
+                    + " within ${picker.requestedTimeout()} s; connected: ${env().platform.connectedNodes}, already picked: ${env().bound}")
         }
         chosen
     }

@@ -6,8 +6,10 @@ import dolphin.core.Position
 
 /** The clauses of {@code pick { ... }}; a repeated clause replaces the earlier one. */
 class Picker {
-    int count = 1
-    double timeout = 0
+    private static final List<String> CLAUSES = ['count', 'timeout', 'type', 'id', 'payload', 'region']
+
+    private int requestedCount = 1
+    private double requestedTimeout = 0
     private String id
     private String type
     private List<String> payload = []
@@ -17,7 +19,7 @@ class Picker {
         if (n <= 0) {
             throw new DslException("pick: count must be positive, got ${n}")
         }
-        count = n
+        requestedCount = n
     }
 
     void type(String t) { type = t }
@@ -34,7 +36,23 @@ class Picker {
         if (seconds.doubleValue() < 0) {
             throw new DslException("pick: timeout must not be negative, got ${seconds}")
         }
-        timeout = seconds.doubleValue()
+        requestedTimeout = seconds.doubleValue()
+    }
+
+    int requestedCount() { requestedCount }
+
+    double requestedTimeout() { requestedTimeout }
+
+    /**
+     * A clause read as a value is a mistake, mostly {@code count -2}, which Groovy reads as
+     * "count minus 2"; other names go on to the script (its variables).
+     */
+    def propertyMissing(String name) {
+        if (name in CLAUSES) {
+            throw new DslException("pick: '${name}' is a clause and needs its value after it, e.g. '${name} 2';"
+                    + " a negative value needs parentheses, '${name}(-2)' (Groovy reads '${name} -2' as '${name} minus 2')")
+        }
+        throw new MissingPropertyException(name, Picker)
     }
 
     NodeFilter filter() {

@@ -130,6 +130,21 @@ public final class NodeSet implements Iterable<Node> {
         return difference(this, other);
     }
 
+    /** Anything but a vehicle set: a clear error, where Groovy would silently make {@code v + 3} a List. */
+    public NodeSet plus(Object other) {
+        throw notASet("+", other);
+    }
+
+    public NodeSet minus(Object other) {
+        throw notASet("-", other);
+    }
+
+    private static IllegalArgumentException notASet(String operator, Object other) {
+        return new IllegalArgumentException("a vehicle set " + operator + " " + (other == null ? "null"
+                : "a " + other.getClass().getSimpleName() + " (" + other + ")")
+                + ": vehicle sets combine only with vehicle sets, e.g. v1 " + operator + " v2");
+    }
+
     public NodeSet and(NodeSet other) {
         return intersection(this, other);
     }

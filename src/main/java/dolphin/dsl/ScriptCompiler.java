@@ -38,7 +38,7 @@ final class ScriptCompiler {
         extensions.forEach(e -> e.addImports(imports));
         // ThreadInterrupt makes loops and closures check for interrupts, so stop() ends any script.
         config.addCompilationCustomizers(imports, new ASTTransformationCustomizer(ThreadInterrupt.class),
-                new ExecuteKeyCheck(), new SplitInstructionCheck());
+                new ExecuteKeyCheck(), new SplitInstructionCheck(), new ExecuteOperandCheck());
         return config;
     }
 

@@ -28,6 +28,7 @@ import com.MAVLink.enums.MAV_MODE_FLAG;
 import com.MAVLink.enums.MAV_RESULT;
 import com.MAVLink.enums.MAV_SEVERITY;
 import com.MAVLink.enums.MAV_STATE;
+import com.MAVLink.enums.MAV_SYS_STATUS_SENSOR;
 import com.MAVLink.minimal.msg_heartbeat;
 import com.MAVLink.standard.msg_global_position_int;
 import dolphin.core.Position;
@@ -258,6 +259,10 @@ public final class SimVehicle {
                     && setModeIfValid((long) c.param2) ? MAV_RESULT.MAV_RESULT_ACCEPTED : MAV_RESULT.MAV_RESULT_FAILED;
             case MAV_CMD.MAV_CMD_DO_SET_HOME -> setHome(c);
             case MAV_CMD.MAV_CMD_BATTERY_RESET -> {
+                // param1 is a mask of battery instances; this vehicle has instance 0 only
+                if (((int) c.param1 & 1) == 0) {
+                    yield MAV_RESULT.MAV_RESULT_FAILED;
+                }
                 battery = Math.max(0, Math.min(100, c.param2));
                 yield MAV_RESULT.MAV_RESULT_ACCEPTED;
             }
@@ -325,7 +330,7 @@ public final class SimVehicle {
             text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, "Arm: AUTO mode not armable");
             return MAV_RESULT.MAV_RESULT_FAILED;
         }
-        if (now - bootNanos < (long) (options.warmupSeconds() * 1e9)) {
+        if (!prearmPassed(now)) {
             text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, "PreArm: Need Position Estimate");
             return MAV_RESULT.MAV_RESULT_FAILED;
         }
@@ -514,6 +519,11 @@ public final class SimVehicle {
         return hb;
     }
 
+    /** Whether the pre-arm checks pass: after the warm-up, as ArduPilot once its EKF has settled. */
+    private boolean prearmPassed(long now) {
+        return now - bootNanos >= (long) (options.warmupSeconds() * 1e9);
+    }
+
     private MAVLinkMessage telemetry(int msgid) {
         return switch (msgid) {
             case msg_sys_status.MAVLINK_MSG_ID_SYS_STATUS -> {
@@ -521,6 +531,10 @@ public final class SimVehicle {
                 s.voltage_battery = 12600;
                 s.current_battery = (short) (armed ? 2800 : 0);
                 s.battery_remaining = (byte) Math.round(battery);
+                // ArduPilot reports its pre-arm checks as a sensor: present and enabled, healthy when they pass or when armed
+                s.onboard_control_sensors_present = MAV_SYS_STATUS_SENSOR.MAV_SYS_STATUS_PREARM_CHECK;
+                s.onboard_control_sensors_enabled = MAV_SYS_STATUS_SENSOR.MAV_SYS_STATUS_PREARM_CHECK;
+                s.onboard_control_sensors_health = armed || prearmPassed(lastTick) ? MAV_SYS_STATUS_SENSOR.MAV_SYS_STATUS_PREARM_CHECK : 0;
                 yield s;
             }
             case msg_global_position_int.MAVLINK_MSG_ID_GLOBAL_POSITION_INT -> {

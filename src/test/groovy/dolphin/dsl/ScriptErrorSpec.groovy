@@ -5,6 +5,7 @@ import dolphin.testing.FlyTask
 import dolphin.testing.ScriptHarness
 import spock.lang.Specification
 
+import static dolphin.dsl.ScriptResult.Outcome.COMPLETED
 import static dolphin.dsl.ScriptResult.Outcome.SCRIPT_ERROR
 
 /**
@@ -55,6 +56,8 @@ class ScriptErrorSpec extends Specification {
         "then on a new line"  | "v1 = pick { }\nexecute v1: waitFor { true }\n    then fly('a', 1)\n"    | 'then fly'            || "Expected 'then' on the same line"
         "run on a new line"   | "v1 = pick { }\nt = until { false }\n    run fly('a', 1)\n"               | 'run fly'             || "Expected 'run' on the same line"
         "onError on new line" | "v1 = pick { }\nt = watch fly('a', 1)\n    onError { ignore() }\n"       | 'onError'             || "Expected 'onError' on the same line"
+        "execute (a) / {c}"   | "v1 = pick { }\nexecute (fly('a', 1) >> fly('b', 1)) / { false }\n"    | 'execute ('           || "'/ { condition }' would apply to execute's result after the task ran without it"
+        "execute (a) >> b"    | "v1 = pick { }\nx = 1\nexecute (fly('a', 1)) >> fly('b', 1)\n"          | 'execute ('           || "Expected the whole task inside execute's parentheses, e.g. 'execute((a >> b) >> task)'"
     }
 
     def "the def-key error also gives the column"() {
@@ -95,12 +98,23 @@ class ScriptErrorSpec extends Specification {
         'connection timeout'         | "v1 = pick { }\nsetConnectionTimeout 2\n"                                | 'setConnection'   || 'connection timeout must be between 5 and 3600 seconds, got 2.0'
         'connection timeout map'     | "v1 = pick { }\nsetConnectionTimeout v1: 2.hours\n"                      | 'setConnection'   || 'connection timeout must be between 5 and 3600 seconds, got 7200.0'
         'pick count 0'               | "v1 = pick {\n  type 'UAV'\n  count 0\n}\n"                              | 'count 0'         || 'pick: count must be positive, got 0'
+        'pick count -2'              | "v1 = pick {\n  type 'UAV'\n  count -2\n}\n"                             | 'count -2'        || "pick: 'count' is a clause and needs its value after it, e.g. 'count 2'; a negative value needs parentheses, 'count(-2)' (Groovy reads 'count -2' as 'count minus 2')"
+        'vehicle set plus a number'  | "v1 = pick { }\nv2 = v1 + 3\n"                                          | 'v1 + 3'          || 'a vehicle set + a Integer (3): vehicle sets combine only with vehicle sets, e.g. v1 + v2'
         'command used as variable'   | "v1 = pick { }\nexecute during 10 run fly('a', 1)\n"                     | 'during'          || "'during' is a command, but Groovy read it as a variable here. Expected it with its arguments"
         'wrong argument type'        | "v1 = pick { }\nexecute idle('five')\n"                                  | 'five'            || "wrong arguments for 'idle': got (String); expected (Number)"
         'operator misuse'            | "v1 = pick { }\nt = fly('a', 1) >> 5\n"                                  | '>> 5'            || "the operator '>>' does not apply to FlyTask and Integer: expected tasks with >> and |"
         'waitFor without then'       | "v1 = pick { }\nexecute v1: waitFor { true }\nmessage 'x'\n"             | 'waitFor'         || "execute: the entry 'v1: waitFor { ... }' has no 'then' part. Expected 'waitFor { ... } then ...'"
         'no vehicles for the task'   | "execute fly('a', 1)\n"                                                  | 'fly'             || "no vehicles to run task a"
         'error in a guard, later'    | "v1 = pick { }\nt = waitFor {\n  battery(v1 + nosuch) > 1\n} then fly('a', 1)\nexecute t\n" | 'nosuch' || "unknown name 'nosuch'"
+    }
+
+    def "a pick block still reads the script's variables, and a well-formed execute with parentheses runs"() {
+        when:
+        def r = h.run("n = 1\nv1 = pick { count n; timeout 0 }\nexecute((fly('a', 1) >> fly('b', 1)) / { false })\n", FILE)
+
+        then:
+        r.outcome == COMPLETED
+        h.platform.journal*.kind.count('start') == 2
     }
 
     def "check cannot see run-time mistakes"() {

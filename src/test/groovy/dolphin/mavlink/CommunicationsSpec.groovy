@@ -4,6 +4,7 @@ import com.MAVLink.common.msg_command_long
 import com.MAVLink.enums.MAV_AUTOPILOT
 import com.MAVLink.enums.MAV_CMD
 import com.MAVLink.enums.MAV_RESULT
+import com.MAVLink.enums.MAV_SYS_STATUS_SENSOR
 import com.MAVLink.enums.MAV_TYPE
 import com.MAVLink.minimal.msg_heartbeat
 import dolphin.core.Position
@@ -140,6 +141,13 @@ class CommunicationsSpec extends Specification {
         result.accepted()
         fleet.vehicle(1).battery() == 42d
         h.eventually { assert h.node('1').batteryRemaining() == 0.42d }
+
+        when: 'a mask without battery instance 0, the only one the vehicle has'
+        def other = h.comms.command(h.node('1'), MAV_CMD.MAV_CMD_BATTERY_RESET, 2, 90).get()
+
+        then:
+        other.result() == MAV_RESULT.MAV_RESULT_FAILED
+        fleet.vehicle(1).battery() == 42d
     }
 
     def "a vehicle that stops is lost after its connection timeout, and found again when it comes back"() {
@@ -165,10 +173,11 @@ class CommunicationsSpec extends Specification {
         h.eventually { assert h.node('1').connected }
     }
 
-    def "arming is refused with the vehicle's PreArm text during its warm-up, then accepted"() {
+    def "arming is refused with the vehicle's PreArm text during its warm-up, then accepted; SYS_STATUS shows the pre-arm checks"() {
         given:
+        long prearm = MAV_SYS_STATUS_SENSOR.MAV_SYS_STATUS_PREARM_CHECK
         h.fleet(1, VehicleKind.COPTER, 1, SimOptions.DEFAULT.withWarmup(30))
-        h.eventually { assert h.node('1') != null }
+        h.eventually { assert h.node('1')?.state()?.systemStatus() != null }
         def node = h.node('1')
 
         when:
@@ -178,9 +187,15 @@ class CommunicationsSpec extends Specification {
         early.result() == MAV_RESULT.MAV_RESULT_FAILED
         h.eventually { assert node.state().statusTexts().contains('PreArm: Need Position Estimate') }
         !node.armed
+        with(node.state().systemStatus()) {
+            (onboard_control_sensors_present & prearm) != 0
+            (onboard_control_sensors_enabled & prearm) != 0
+            (onboard_control_sensors_health & prearm) == 0
+        }
 
         when: 'after the warm-up (30 s of clock time)'
         h.eventually(10) { assert h.clock.seconds() > 31 }
+        h.eventually { assert (node.state().systemStatus().onboard_control_sensors_health & prearm) != 0 }
         def late = h.comms.command(node, MAV_CMD.MAV_CMD_COMPONENT_ARM_DISARM, 1).get()
 
         then:
