@@ -1,9 +1,9 @@
 package dolphin.dsl;
 
+import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
-import org.codehaus.groovy.ast.ClassCodeVisitorSupport;
 import org.codehaus.groovy.ast.ClassNode;
 import org.codehaus.groovy.ast.expr.ConstantExpression;
 import org.codehaus.groovy.ast.expr.DeclarationExpression;
@@ -13,36 +13,19 @@ import org.codehaus.groovy.ast.expr.MapExpression;
 import org.codehaus.groovy.ast.expr.MethodCallExpression;
 import org.codehaus.groovy.ast.expr.TupleExpression;
 import org.codehaus.groovy.ast.expr.VariableExpression;
-import org.codehaus.groovy.classgen.GeneratorContext;
-import org.codehaus.groovy.control.CompilePhase;
 import org.codehaus.groovy.control.SourceUnit;
-import org.codehaus.groovy.control.customizers.CompilationCustomizer;
-import org.codehaus.groovy.control.messages.SyntaxErrorMessage;
-import org.codehaus.groovy.syntax.SyntaxException;
 
 /**
  * Rejects {@code execute v: task} when {@code v} is a {@code def} variable: execute keys name
  * script (binding) variables, and a local {@code def} is invisible to them (reference A.0).
  */
-final class ExecuteKeyCheck extends CompilationCustomizer {
-
-    ExecuteKeyCheck() {
-        super(CompilePhase.CONVERSION);
-    }
+final class ExecuteKeyCheck extends ScriptCheck {
 
     @Override
-    public void call(SourceUnit source, GeneratorContext context, ClassNode classNode) {
-        if (!classNode.isScript()) {
-            return;
-        }
+    protected void check(SourceUnit source, ClassNode script) {
         Set<String> locals = new HashSet<>();
-        List<MethodCallExpression> executes = new java.util.ArrayList<>();
-        ClassCodeVisitorSupport visitor = new ClassCodeVisitorSupport() {
-            @Override
-            protected SourceUnit getSourceUnit() {
-                return source;
-            }
-
+        List<MethodCallExpression> executes = new ArrayList<>();
+        new Visitor(source) {
             @Override
             public void visitDeclarationExpression(DeclarationExpression d) {
                 if (d.getLeftExpression() instanceof VariableExpression v) {
@@ -58,16 +41,13 @@ final class ExecuteKeyCheck extends CompilationCustomizer {
                 }
                 super.visitMethodCallExpression(call);
             }
-        };
-        visitor.visitClass(classNode);
+        }.visitClass(script);
         for (MethodCallExpression call : executes) {
             for (MapEntryExpression entry : namedArguments(call.getArguments())) {
                 if (entry.getKeyExpression() instanceof ConstantExpression k && locals.contains(String.valueOf(k.getValue()))) {
                     String name = String.valueOf(k.getValue());
-                    source.getErrorCollector().addErrorAndContinue(new SyntaxErrorMessage(new SyntaxException(
-                            "execute: '" + name + "' is declared with 'def', so execute cannot see it: its keys name"
-                            + " script variables. Expected an assignment without 'def', e.g. '" + name + " = pick { ... }'",
-                            k.getLineNumber(), k.getColumnNumber()), source));
+                    error(source, "execute: '" + name + "' is declared with 'def', so execute cannot see it: its keys name"
+                            + " script variables. Expected an assignment without 'def', e.g. '" + name + " = pick { ... }'", k);
                 }
             }
         }
