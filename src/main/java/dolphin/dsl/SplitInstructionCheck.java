@@ -3,8 +3,10 @@ package dolphin.dsl;
 import java.util.Map;
 import org.codehaus.groovy.ast.ClassNode;
 import org.codehaus.groovy.ast.expr.ArgumentListExpression;
+import org.codehaus.groovy.ast.expr.Expression;
 import org.codehaus.groovy.ast.expr.MethodCallExpression;
 import org.codehaus.groovy.ast.expr.TupleExpression;
+import org.codehaus.groovy.ast.stmt.ExpressionStatement;
 import org.codehaus.groovy.control.SourceUnit;
 
 /**
@@ -23,21 +25,41 @@ final class SplitInstructionCheck extends ScriptCheck {
     @Override
     protected void check(SourceUnit source, ClassNode script) {
         new Visitor(source) {
+            private Expression statement;
+
+            @Override
+            public void visitExpressionStatement(ExpressionStatement s) {
+                statement = s.getExpression();
+                super.visitExpressionStatement(s);
+            }
+
             @Override
             public void visitMethodCallExpression(MethodCallExpression call) {
                 String word = call.getMethodAsString();
                 // Script's own run(File, String[]) takes two arguments; a split 'run task' has one
                 if (call.isImplicitThis() && SECOND_WORDS.containsKey(word)
                         && !("run".equals(word) && arguments(call) != 1)) {
-                    String opening = SECOND_WORDS.get(word);
-                    error(source, "'" + word + "' begins a new statement: Groovy ended the statement before it at the line"
-                            + " break, so the '" + opening + "' above did not get its '" + word + "' part. Expected '"
-                            + word + "' on the same line as the end of '" + opening + "', with the rest of the task on"
-                            + " the next lines if needed", call);
+                    error(source, call == statement ? split(word) : nested(word), call);
                 }
                 super.visitMethodCallExpression(call);
             }
         }.visitClass(script);
+    }
+
+    private static String split(String word) {
+        String opening = SECOND_WORDS.get(word);
+        return "'" + word + "' begins a new statement: Groovy ended the statement before it at the line"
+                + " break, so the '" + opening + "' above did not get its '" + word + "' part. Expected '"
+                + word + "' on the same line as the end of '" + opening + "', with the rest of the task on"
+                + " the next lines if needed";
+    }
+
+    /** Inside a statement, as in {@code execute v: watch t onError {...}}: Groovy chained the words differently. */
+    private static String nested(String word) {
+        String opening = SECOND_WORDS.get(word);
+        return "'" + word + "' is read here as an argument of what comes before it, not as the second word of '"
+                + opening + "' (Groovy pairs the words of a command chain two by two). Expected the task in"
+                + " parentheses, e.g. 'execute v: watch(t) onError { ... }' or 'execute v: waitFor { c } then (t)'";
     }
 
     private static int arguments(MethodCallExpression call) {

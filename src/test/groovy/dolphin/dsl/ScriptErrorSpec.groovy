@@ -56,6 +56,7 @@ class ScriptErrorSpec extends Specification {
         "then on a new line"  | "v1 = pick { }\nexecute v1: waitFor { true }\n    then fly('a', 1)\n"    | 'then fly'            || "Expected 'then' on the same line"
         "run on a new line"   | "v1 = pick { }\nt = until { false }\n    run fly('a', 1)\n"               | 'run fly'             || "Expected 'run' on the same line"
         "onError on new line" | "v1 = pick { }\nt = watch fly('a', 1)\n    onError { ignore() }\n"       | 'onError'             || "Expected 'onError' on the same line"
+        "onError as argument" | "v1 = pick { }\nt = fly('a', 1)\nexecute v1: watch t onError { ignore() }\n" | 'watch t'      || "'onError' is read here as an argument of what comes before it"
         "execute (a) / {c}"   | "v1 = pick { }\nexecute (fly('a', 1) >> fly('b', 1)) / { false }\n"    | 'execute ('           || "'/ { condition }' would apply to execute's result after the task ran without it"
         "execute (a) >> b"    | "v1 = pick { }\nx = 1\nexecute (fly('a', 1)) >> fly('b', 1)\n"          | 'execute ('           || "Expected the whole task inside execute's parentheses, e.g. 'execute((a >> b) >> task)'"
     }
