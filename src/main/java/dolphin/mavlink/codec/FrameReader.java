@@ -179,9 +179,13 @@ public final class FrameReader {
         int extra = table.crcExtra(msgid);
         if (extra < 0) {
             int next = p + frameLen;
-            if (containsKnownFrame(p + 1, next)) {
+            int inside = knownFrameInside(p + 1, next);
+            if (inside == VERIFIED) {
                 drops.add(DropCounters.Reason.UNVERIFIABLE, 1);
                 return NOT_A_FRAME;
+            }
+            if (inside == NEED_MORE) {
+                return NEED_MORE;
             }
             if (next == end) {
                 return atPacketEnd ? UNVERIFIED : NEED_MORE;
@@ -210,8 +214,13 @@ public final class FrameReader {
         return crc == ((buf[at] & 0xFF) | (buf[at + 1] & 0xFF) << 8);
     }
 
-    /** True if a complete frame of a known id with a matching checksum starts in [from, to). */
-    private boolean containsKnownFrame(int from, int to) {
+    /**
+     * VERIFIED if a complete frame of a known id with a matching checksum starts in [from, to);
+     * NEED_MORE if, on a stream, a start byte there begins a frame that has not fully arrived (it may
+     * be a real frame that the unverifiable one around it would swallow); else NOT_A_FRAME.
+     */
+    private int knownFrameInside(int from, int to) {
+        boolean undecided = false;
         for (int q = from; q < to; q++) {
             int stx = buf[q] & 0xFF;
             if (stx != STX2 && stx != STX1) {
@@ -219,19 +228,21 @@ public final class FrameReader {
             }
             int header = stx == STX2 ? 10 : 6;
             if (end - q < header) {
+                undecided = true;
                 continue;
             }
             int len = buf[q + 1] & 0xFF;
             int frameLen = header + len + 2 + (stx == STX2 && (buf[q + 2] & Frame.INCOMPAT_SIGNED) != 0 ? 13 : 0);
             if (end - q < frameLen) {
+                undecided = true;
                 continue;
             }
             int extra = table.crcExtra(msgidAt(q));
             if (extra >= 0 && crcMatches(q, header, len, extra)) {
-                return true;
+                return VERIFIED;
             }
         }
-        return false;
+        return undecided && !atPacketEnd ? NEED_MORE : NOT_A_FRAME;
     }
 
     private boolean signatureAccepted(int p, int frameLen, byte[] signature) {

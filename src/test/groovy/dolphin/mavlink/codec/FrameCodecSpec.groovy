@@ -144,6 +144,22 @@ class FrameCodecSpec extends Specification {
         r.drops().get(UNVERIFIABLE) == 1
     }
 
+    def "on a stream, an unknown id does not swallow a frame that starts inside it and has not fully arrived"() {
+        given: 'a false start whose 14 bytes end inside the heartbeat after it, on a 0xFE payload byte'
+        def w = new FrameWriter(1, 1)
+        byte[] junk = [0xFD, 2, 0, 0] as byte[]
+        byte[] frame = w.write(heartbeat(0xFFFFFFFEL))
+        def r = new FrameReader()
+
+        expect: 'the false start is an unknown id (0x010000) followed by a start byte'
+        frame[10] == (byte) 0xFE
+        (frame[3] & 0xFF | (frame[4] & 0xFF) << 8 | (frame[5] & 0xFF) << 16) == 0x010000
+
+        and: 'fed byte by byte, the heartbeat is recovered, and so is the next one'
+        trickle(r, cat(junk, frame, w.write(heartbeat(4))))*.msgid == [0, 0]
+        r.drops().get(UNVERIFIABLE) == 1
+    }
+
     def "a frame that starts inside a corrupted frame is recovered"() {
         given: 'a frame whose length byte claims more bytes than it has, swallowing the next frame'
         def w = new FrameWriter(1, 1)
