@@ -56,9 +56,13 @@ class RunCommandSpec extends Specification {
         then:
         r.code == 0
         def lines = r.out.readLines()
-        lines.findIndexOf { it ==~ /\[ *[\d.]+ s\] vehicle 1: AUTO, armed, battery \d+ %, altitude [\d.]+ m, item \d of 4, task first flight running/ } >
-                lines.findIndexOf { it ==~ /\[ *[\d.]+ s\] vehicle 1: STABILIZE, disarmed, battery 100 %, altitude 0.0 m/ }
-        lines.find { it ==~ /.*vehicle 1: \w+, disarmed, .*task first flight done/ }
+        // sampled four times a second: the first sample may precede the first SYS_STATUS, and the
+        // first AUTO sample the first MISSION_CURRENT of the flight
+        int discovered = lines.findIndexOf { it ==~ /\[ *[\d.]+ s\] vehicle 1: STABILIZE, disarmed, battery (100 %|\?), altitude 0.0 m/ }
+        int flying = lines.findIndexOf { it ==~ /\[ *[\d.]+ s\] vehicle 1: AUTO, armed, battery \d+ %, altitude [\d.]+ m(, item \d of 4)?, task first flight running/ }
+        discovered >= 0
+        flying > discovered
+        lines.findIndexOf { it ==~ /.*vehicle 1: \w+, disarmed, .*task first flight done/ } > flying
         !r.out.contains('\033[')
     }
 
