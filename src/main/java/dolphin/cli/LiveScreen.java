@@ -35,6 +35,13 @@ final class LiveScreen implements Screen {
         draw();
     }
 
+    /** A line that comes with its own timestamp (a log line), above the table. */
+    synchronized void above(String text) {
+        erase();
+        out.println(text);
+        draw();
+    }
+
     @Override
     public synchronized void refresh(List<VehicleStatus> statuses) {
         erase();

@@ -110,7 +110,9 @@ final class RunCommand implements Callable<Integer> {
                 fleet = startFleet(comms, clock);
             }
             Engine engine = new Engine(new MAVLinkPlatform(comms), clock);
-            try (RunConsole console = new RunConsole(screen(out, clock), comms::nodes, SystemClock.REAL)) {
+            Screen screen = screen(out, clock);
+            try (RunConsole console = new RunConsole(screen, comms::nodes, SystemClock.REAL);
+                 AutoCloseable logs = screen instanceof LiveScreen live ? TerminalErr.captureIfShared(live::above) : () -> { }) {
                 engine.addListener(console);
                 console.start();
                 ScriptResult result = engine.run(source, script.toString()).await();

@@ -70,4 +70,37 @@ class StatusScreenSpec extends Specification {
         rows[3].startsWith('3 ')
         rows[4] == '... and 7 more: 3 AUTO, 1 LOST, 3 RTL'
     }
+
+    def "live: a log line with its own timestamp goes above the table, which is redrawn below it"() {
+        given:
+        def out = new StringWriter()
+        def screen = new LiveScreen(new PrintWriter(out), { '[t] ' }, 20)
+        screen.refresh([status()])
+
+        when:
+        screen.above('09:00:00 [INFO] vehicle 1: Reached command #1')
+
+        then:
+        out.toString().readLines().takeRight(3) == ["\033[2F\033[J09:00:00 [INFO] vehicle 1: Reached command #1".toString(),
+                                                    VehicleStatus.HEADER, status().row()]
+    }
+
+    def "standard error's bytes become whole lines for the screen; a last unfinished line comes on close"() {
+        given:
+        def lines = []
+        def stream = new TerminalErr.Lines({ lines << it })
+
+        when:
+        stream.write('first line\r\nsecond '.bytes)
+        stream.write('line\nno newline'.bytes)
+
+        then:
+        lines == ['first line', 'second line']
+
+        when:
+        stream.close()
+
+        then:
+        lines == ['first line', 'second line', 'no newline']
+    }
 }
