@@ -68,11 +68,9 @@ final class MissionStore {
      */
     MissionItem reported(int seq) {
         MissionItem i = get(seq);
-        int frame = switch (i.frame()) {
-            case MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT, MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT -> MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT;
-            case MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT_INT, MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT -> MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT;
-            default -> MAV_FRAME.MAV_FRAME_GLOBAL;
-        };
+        int reference = MissionItem.altitudeReference(i.frame());
+        int frame = reference == MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT || reference == MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT
+                ? reference : MAV_FRAME.MAV_FRAME_GLOBAL;
         return new MissionItem(i.seq(), i.command(), frame, i.param1(), i.param2(), i.param3(), i.param4(), i.x(), i.y(), i.z(),
                 i.autocontinue());
     }

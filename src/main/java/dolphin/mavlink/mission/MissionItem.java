@@ -33,6 +33,19 @@ public record MissionItem(int seq, int command, int frame, float param1, float p
         return (int) Math.round(degrees * 1e7);
     }
 
+    /**
+     * What a frame's z is measured from: the frame without its _INT variant (GLOBAL_INT is GLOBAL).
+     * ArduPilot stores this, not the frame an item was sent in.
+     */
+    public static int altitudeReference(int frame) {
+        return switch (frame) {
+            case MAV_FRAME.MAV_FRAME_GLOBAL_INT -> MAV_FRAME.MAV_FRAME_GLOBAL;
+            case MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT -> MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT;
+            case MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT_INT -> MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT;
+            default -> frame;
+        };
+    }
+
     public MissionItem withSeq(int newSeq) {
         return new MissionItem(newSeq, command, frame, param1, param2, param3, param4, x, y, z, autocontinue);
     }

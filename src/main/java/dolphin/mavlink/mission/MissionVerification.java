@@ -40,7 +40,8 @@ public final class MissionVerification {
         if (s.command() != d.command()) {
             return "command sent " + s.commandName() + ", vehicle has " + d.commandName();
         }
-        if (s.frame() != MAV_FRAME.MAV_FRAME_MISSION && altitudeReference(s.frame()) != altitudeReference(d.frame())) {
+        if (s.frame() != MAV_FRAME.MAV_FRAME_MISSION
+                && MissionItem.altitudeReference(s.frame()) != MissionItem.altitudeReference(d.frame())) {
             return "frame sent " + s.frameName() + ", vehicle has " + d.frameName();
         }
         if (Float.compare(s.param1(), d.param1()) != 0 && !(s.param1() == d.param1())) {
@@ -57,15 +58,5 @@ public final class MissionVerification {
             return "z sent " + s.z() + ", vehicle has " + d.z();
         }
         return null;
-    }
-
-    /** What z is measured from: the frame without its _INT variant. */
-    private static int altitudeReference(int frame) {
-        return switch (frame) {
-            case MAV_FRAME.MAV_FRAME_GLOBAL_INT -> MAV_FRAME.MAV_FRAME_GLOBAL;
-            case MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT -> MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT;
-            case MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT_INT -> MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT;
-            default -> frame;
-        };
     }
 }
