@@ -14,14 +14,7 @@ bench="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(dirname "$bench")"
 out="$bench/target/results"
 
-build=1
-if [ "${1:-}" = "--no-build" ]; then
-  build=0
-  shift
-fi
-if [ "$build" = 1 ]; then
-  "$bench/build.sh"
-fi
+if [ "${1:-}" = "--no-build" ]; then shift; else "$bench/build.sh"; fi
 sizes=("$@")
 [ ${#sizes[@]} -gt 0 ] || sizes=(50 250 1000)
 jar="${DOLPHIN_JAR:-$root/target/dolphin.jar}"

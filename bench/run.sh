@@ -22,15 +22,7 @@ out="$bench/target/results"
 frames=10000   # CodecBenchmark.FRAMES
 which="${BENCH:-all}"
 
-build=1
-if [ "${1:-}" = "--no-build" ]; then
-  build=0
-  shift
-fi
-
-if [ "$build" = 1 ]; then
-  "$bench/build.sh"
-fi
+if [ "${1:-}" = "--no-build" ]; then shift; else "$bench/build.sh"; fi
 if [ "$which" = upload ] || [ "$which" = fleet ]; then
   exec "$bench/$which.sh" --no-build
 fi

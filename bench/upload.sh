@@ -16,14 +16,7 @@ bench="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(dirname "$bench")"
 out="$bench/target/results"
 
-build=1
-if [ "${1:-}" = "--no-build" ]; then
-  build=0
-  shift
-fi
-if [ "$build" = 1 ]; then
-  "$bench/build.sh"
-fi
+if [ "${1:-}" = "--no-build" ]; then shift; else "$bench/build.sh"; fi
 jar="${DOLPHIN_JAR:-$root/target/dolphin.jar}"
 for f in "$jar" "$root/.venv/bin/python" "$bench/target/classes/dolphin/bench/UploadBench.class"; do
   [ -e "$f" ] || { echo "bench/upload.sh: missing $f (run without --no-build)" >&2; exit 1; }

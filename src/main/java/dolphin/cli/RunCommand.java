@@ -163,11 +163,9 @@ final class RunCommand implements Callable<Integer> {
         if (ports.isEmpty()) {
             throw new ParameterException(spec.commandLine(), "--sim needs a udpin link for the simulated vehicles to send to");
         }
-        SimFleet.Config base = SimFleet.Config.of(1, simType, ports.get(0));
         SimFleet.Config config;
         try {
-            config = new SimFleet.Config(sim, simType, base.home(), base.spacingMetres(), 1, ports, base.options(), key,
-                    base.faults());
+            config = SimFleet.Config.of(sim, simType, ports).withSigningKey(key);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), "--sim " + sim + ": " + e.getMessage());
         }

@@ -4,6 +4,7 @@ import dolphin.core.Position;
 import dolphin.core.SystemClock;
 import dolphin.mavlink.codec.SigningKey;
 import dolphin.mavlink.link.LinkUrl;
+import dolphin.sim.FaultModel;
 import dolphin.sim.SimFleet;
 import dolphin.sim.SimOptions;
 import dolphin.sim.VehicleKind;
@@ -78,11 +79,10 @@ final class SimCommand implements Callable<Integer> {
             }
             gcs.add(url.address());
         }
-        SimFleet.Config base = SimFleet.Config.of(1, type, gcs.get(0));
         SimFleet.Config config;
         try {
-            config = new SimFleet.Config(count, type, home != null ? home : base.home(), base.spacingMetres(), firstSysid, gcs,
-                    SimOptions.DEFAULT.withWarmup(warmup).withDrain(drain), key, base.faults());
+            config = new SimFleet.Config(count, type, home != null ? home : SimFleet.Config.DEFAULT_HOME, SimFleet.Config.DEFAULT_SPACING,
+                    firstSysid, gcs, SimOptions.DEFAULT.withWarmup(warmup).withDrain(drain), key, FaultModel.NONE);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }

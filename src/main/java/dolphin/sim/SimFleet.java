@@ -44,6 +44,10 @@ public final class SimFleet implements AutoCloseable {
     public record Config(int count, VehicleKind kind, Position home, double spacingMetres, int firstSysid,
                          List<InetSocketAddress> gcs, SimOptions options, SigningKey signingKey, FaultModel faults) {
 
+        /** The Serra da Estrela base of the report's test. */
+        public static final Position DEFAULT_HOME = Position.fromDegrees(40.444233, -7.375234, 820);
+        public static final double DEFAULT_SPACING = 10;
+
         public Config {
             gcs = List.copyOf(gcs);
             if (count < 1) {
@@ -55,8 +59,7 @@ public final class SimFleet implements AutoCloseable {
             if (firstSysid < 1 || firstSysid > 255) {
                 throw new IllegalArgumentException("the first system id must lie in 1..255, got " + firstSysid);
             }
-            int perLink = (count + gcs.size() - 1) / gcs.size();
-            if (firstSysid + count - 1 > 255 && firstSysid + perLink - 1 > 255) {
+            if (!uniqueSysids(firstSysid, count) && firstSysid + perLink(count, gcs.size()) - 1 > 255) {
                 int ids = 256 - firstSysid;
                 throw new IllegalArgumentException(count + " vehicles from system id " + firstSysid + " need at least "
                         + (count + ids - 1) / ids + " links (" + ids + " system ids per link), got " + gcs.size());
@@ -65,7 +68,15 @@ public final class SimFleet implements AutoCloseable {
 
         /** How many vehicles share one ground-station address (the last one may have fewer). */
         public int perLink() {
-            return (count + gcs.size() - 1) / gcs.size();
+            return perLink(count, gcs.size());
+        }
+
+        private static int perLink(int count, int links) {
+            return (count + links - 1) / links;
+        }
+
+        private static boolean uniqueSysids(int firstSysid, int count) {
+            return firstSysid + count - 1 <= 255;
         }
 
         /** Index into {@link #gcs()} of the i-th vehicle. */
@@ -75,20 +86,20 @@ public final class SimFleet implements AutoCloseable {
 
         /** System id of the i-th vehicle: unique in the fleet when ids allow, else unique per link. */
         public int sysidOf(int i) {
-            return uniqueSysids() ? firstSysid + i : firstSysid + i % perLink();
+            return uniqueSysids(firstSysid, count) ? firstSysid + i : firstSysid + i % perLink();
         }
 
         public int highestSysid() {
-            return uniqueSysids() ? firstSysid + count - 1 : firstSysid + perLink() - 1;
-        }
-
-        private boolean uniqueSysids() {
-            return firstSysid + count - 1 <= 255;
+            return uniqueSysids(firstSysid, count) ? firstSysid + count - 1 : firstSysid + perLink() - 1;
         }
 
         public static Config of(int count, VehicleKind kind, InetSocketAddress gcs) {
-            return new Config(count, kind, Position.fromDegrees(40.444233, -7.375234, 820), 10, 1, List.of(gcs),
-                    SimOptions.DEFAULT, null, FaultModel.NONE);
+            return of(count, kind, List.of(gcs));
+        }
+
+        /** The defaults: the report's base as home, 10 m apart, system ids from 1, no signing, no faults. */
+        public static Config of(int count, VehicleKind kind, List<InetSocketAddress> gcs) {
+            return new Config(count, kind, DEFAULT_HOME, DEFAULT_SPACING, 1, gcs, SimOptions.DEFAULT, null, FaultModel.NONE);
         }
 
         public Config withOptions(SimOptions o) {

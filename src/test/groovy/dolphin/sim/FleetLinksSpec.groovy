@@ -18,8 +18,7 @@ class FleetLinksSpec extends Specification {
     }
 
     static SimFleet.Config config(int count, int links, int firstSysid = 1) {
-        new SimFleet.Config(count, VehicleKind.COPTER, SimFleet.Config.of(1, VehicleKind.COPTER, ports(1)[0]).home(), 10,
-                firstSysid, ports(links), SimOptions.DEFAULT, null, FaultModel.NONE)
+        SimFleet.Config.of(count, VehicleKind.COPTER, ports(links)).withFirstSysid(firstSysid)
     }
 
     def "#count vehicles over #links link(s) from id #first: #perLink per link, ids #ids"() {
@@ -71,8 +70,7 @@ class FleetLinksSpec extends Specification {
         def comms = new MAVLinkCommunications(MAVLinkConfig.of('udpin:127.0.0.1:0', 'udpin:127.0.0.1:0'), clock)
         comms.start()
         def gcs = comms.links().collect { new InetSocketAddress('127.0.0.1', it.localPort()) }
-        def fleet = new SimFleet(new SimFleet.Config(300, VehicleKind.COPTER, config(1, 1).home(), 10, 1, gcs,
-                SimOptions.DEFAULT, null, FaultModel.NONE), clock)
+        def fleet = new SimFleet(SimFleet.Config.of(300, VehicleKind.COPTER, gcs), clock)
         fleet.start()
 
         expect:
