@@ -35,4 +35,9 @@ final class PlainScreen implements Screen {
             }
         }
     }
+
+    @Override
+    public void taskChanged(List<VehicleStatus> statuses) {
+        refresh(statuses);
+    }
 }

@@ -25,6 +25,8 @@ final class RunConsole implements EngineListener, AutoCloseable {
     private final Clock displayClock;
     private final Thread display;
     private volatile boolean running = true;
+    /** Keeps a task's line and its vehicles' status together, without a display refresh between them. */
+    private final Object showing = new Object();
 
     RunConsole(Screen screen, Supplier<List<MAVLinkNode>> nodes, Clock displayClock) {
         this.screen = screen;
@@ -46,7 +48,9 @@ final class RunConsole implements EngineListener, AutoCloseable {
 
     /** Shows the status now (the display thread does this every period). */
     void refresh() {
-        screen.refresh(board.statuses(nodes.get()));
+        synchronized (showing) {
+            screen.refresh(board.statuses(nodes.get()));
+        }
     }
 
     private void displayLoop() {
@@ -67,11 +71,16 @@ final class RunConsole implements EngineListener, AutoCloseable {
 
     @Override
     public void taskEvent(TaskEvent event) {
-        board.taskEvent(event);
-        if (event.isPlatformTask()) {
+        if (!event.isPlatformTask()) {
+            return;
+        }
+        synchronized (showing) {
+            board.taskEvent(event);
             screen.line("task " + event.task().getId() + " " + event.kind().name().toLowerCase(Locale.ROOT)
                     + (event.vehicles().isEmpty() ? "" : " on vehicle " + String.join(",", event.vehicles()))
                     + (event.kind() == TaskEvent.Kind.COMPLETED ? ": " + event.state() : ""));
+            List<MAVLinkNode> onIt = nodes.get().stream().filter(n -> event.vehicles().contains(n.getId())).toList();
+            screen.taskChanged(board.statuses(onIt));
         }
     }
 

@@ -10,4 +10,12 @@ interface Screen {
 
     /** The vehicles' status now. */
     void refresh(List<VehicleStatus> statuses);
+
+    /**
+     * The status of the vehicles whose task just started or ended, at that moment. A log shows them
+     * now, so it never misses the state a task started from, however fast the run; a live table
+     * shows them at its next refresh.
+     */
+    default void taskChanged(List<VehicleStatus> statuses) {
+    }
 }

@@ -56,13 +56,16 @@ class RunCommandSpec extends Specification {
         then:
         r.code == 0
         def lines = r.out.readLines()
-        // sampled four times a second: the first sample may precede the first SYS_STATUS, and the
-        // first AUTO sample the first MISSION_CURRENT of the flight
-        int discovered = lines.findIndexOf { it ==~ /\[ *[\d.]+ s\] vehicle 1: STABILIZE, disarmed, battery (100 %|\?), altitude 0.0 m/ }
+        // a task's start shows its vehicle as it was then, however fast the run; the first AUTO
+        // sample may precede the first MISSION_CURRENT of the flight
+        int started = lines.findIndexOf { it ==~ /\[ *[\d.]+ s\] task first flight started on vehicle 1/ }
+        started >= 0
+        lines[started + 1] ==~ /\[ *[\d.]+ s\] vehicle 1: STABILIZE, disarmed, battery (100 %|\?), altitude 0.0 m, task first flight running/
         int flying = lines.findIndexOf { it ==~ /\[ *[\d.]+ s\] vehicle 1: AUTO, armed, battery \d+ %, altitude [\d.]+ m(, item \d of 4)?, task first flight running/ }
-        discovered >= 0
-        flying > discovered
-        lines.findIndexOf { it ==~ /.*vehicle 1: \w+, disarmed, .*task first flight done/ } > flying
+        flying > started
+        int completed = lines.findIndexOf { it ==~ /\[ *[\d.]+ s\] task first flight completed on vehicle 1: DONE/ }
+        lines[completed + 1] ==~ /\[ *[\d.]+ s\] vehicle 1: \w+, disarmed, .*task first flight done/
+        completed > flying
         !r.out.contains('\033[')
     }
 
