@@ -31,6 +31,9 @@ public record MAVLinkConfig(int sysid, int compid, List<LinkUrl> links, SigningK
         if (!(telemetryHz > 0)) {
             throw new IllegalArgumentException("the telemetry rate must be positive, got " + telemetryHz);
         }
+        if (commandAttempts < 1) {
+            throw new IllegalArgumentException("a command needs at least one attempt, got " + commandAttempts);
+        }
     }
 
     public static MAVLinkConfig of(String... links) {
@@ -56,6 +59,12 @@ public record MAVLinkConfig(int sysid, int compid, List<LinkUrl> links, SigningK
     public MAVLinkConfig withTlog(Path file) {
         return new MAVLinkConfig(sysid, compid, links, signingKey, allowedSysids, telemetryHz, heartbeatPeriod, commandTimeout,
                 commandAttempts, file);
+    }
+
+    /** Sends of a COMMAND_LONG before it ends unanswered: more for lossy radio links. */
+    public MAVLinkConfig withCommandAttempts(int attempts) {
+        return new MAVLinkConfig(sysid, compid, links, signingKey, allowedSysids, telemetryHz, heartbeatPeriod, commandTimeout,
+                attempts, tlog);
     }
 
     public MAVLinkConfig withAllowedSysids(Set<Integer> ids) {

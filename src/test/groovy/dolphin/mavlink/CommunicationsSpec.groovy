@@ -257,8 +257,10 @@ class CommunicationsSpec extends Specification {
         h.eventually { assert h.node('1').home.distanceTo(Position.fromDegrees(40.5, -7.5, 900)) < 1 }
     }
 
-    def "a command nobody answers ends with no COMMAND_ACK after its retries"() {
+    def "a command nobody answers ends with no COMMAND_ACK after its #attempts attempts"() {
         given: 'a vehicle that goes silent right after discovery'
+        h.close()
+        h = new FleetHarness(MAVLinkConfig.of('udpin:127.0.0.1:0').withCommandAttempts(attempts))
         def fleet = h.fleet(1)
         h.eventually { assert h.node('1') != null }
         fleet.vehicle(1).silent = true
@@ -269,8 +271,20 @@ class CommunicationsSpec extends Specification {
 
         then:
         r.result() == CommandResult.NO_ACK
-        r.attempts() == 5
+        r.attempts() == attempts
         fleet.vehicle(1).commandsHandled() == before
+
+        where:
+        attempts << [MAVLinkConfig.of('udpin:127.0.0.1:0').commandAttempts(), 2]
+    }
+
+    def "a command needs at least one attempt"() {
+        when:
+        MAVLinkConfig.of('udpin:127.0.0.1:0').withCommandAttempts(0)
+
+        then:
+        def e = thrown(IllegalArgumentException)
+        e.message == 'a command needs at least one attempt, got 0'
     }
 
     def "with a signing key, signed frames pass and unsigned or wrongly signed ones are dropped and counted"() {

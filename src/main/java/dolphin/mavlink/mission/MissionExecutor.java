@@ -213,7 +213,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 return CompletionState.IN_PROGRESS;
             }
             if (!tookEffect(r, st -> isMode(st, "GUIDED"))) {
-                return fail("vehicle " + node.getId() + " refused GUIDED: " + r.resultName());
+                return fail(refusal("GUIDED", r));
             }
             armModeSet = true;
         }
@@ -371,7 +371,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             }
             Step step = steps.poll();
             if (!tookEffect(r, step.effect())) {
-                failure = "vehicle " + node.getId() + " refused " + step.what() + ": " + r.resultName();
+                failure = refusal(step.what(), r);
                 return false;
             }
         }
@@ -408,6 +408,13 @@ public final class MissionExecutor extends PlatformTaskExecutor {
      */
     private boolean tookEffect(CommandResult r, Predicate<VehicleState> effect) {
         return r.accepted() || (r.result() == CommandResult.NO_ACK && effect.test(node.state()));
+    }
+
+    /** A refusal, or silence: a vehicle that never answered may not have heard the command at all. */
+    private String refusal(String what, CommandResult r) {
+        return "vehicle " + node.getId() + (r.result() == CommandResult.NO_ACK
+                ? " did not answer " + what + ": no COMMAND_ACK after " + r.attempts() + " attempt(s)"
+                : " refused " + what + ": " + r.resultName());
     }
 
     private CommandResult commandDone() {
