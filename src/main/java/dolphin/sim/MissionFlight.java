@@ -9,6 +9,8 @@ import com.MAVLink.enums.MAV_SEVERITY;
 import com.MAVLink.enums.MISSION_STATE;
 import dolphin.core.Position;
 import dolphin.mavlink.mission.MissionItem;
+import java.util.HashMap;
+import java.util.Map;
 import java.util.Set;
 
 /**
@@ -36,6 +38,8 @@ final class MissionFlight {
     static final double PLANE_LOITER_RADIUS = 60; // WP_LOITER_RAD
     static final double RTL_ALT = 15;           // RTL_ALT (copter), metres above home
     static final double DISARM_DELAY = 10;
+    /** DO_JUMP's repeat count meaning for ever (AP_MISSION_JUMP_REPEAT_FOREVER). */
+    static final int FOREVER = -1;
     static final double LANDED_HEIGHT = 0.5;
     static final int COPTER_LAND_MODE = COPTER_MODE.COPTER_MODE_LAND;
 
@@ -88,6 +92,8 @@ final class MissionFlight {
     private Phase modePhase;
     // a CONDITION_DELAY running beside the nav item
     private int conditionSeq = -1;
+    /** Jumps made by each DO_JUMP (by seq) since the mission started. */
+    private final Map<Integer, Integer> jumpsRun = new HashMap<>();
     private double conditionLeft;
     /** The last MISSION_CURRENT announced (seq/total/state); a change is sent at once, as ArduPilot does. */
     private String lastCurrent = "0/0/" + MISSION_STATE.MISSION_STATE_NO_MISSION;
@@ -155,9 +161,7 @@ final class MissionFlight {
         groundSeconds = 0;
         if (to == kind.autoMode) {
             if (complete || current >= store.count()) {
-                current = 1;
-                complete = false;
-                started = false;
+                restart();
             }
             speed = defaultSpeed();
         }
@@ -166,10 +170,7 @@ final class MissionFlight {
     /** MAV_CMD_MISSION_START: the copter's auto_armed; the mission (re)starts if it had ended. */
     void missionStart() {
         if (complete) {
-            current = 1;
-            complete = false;
-            started = false;
-            active = -1;
+            restart();
         }
         if (body.armed()) {
             autoArmed = true;
@@ -191,11 +192,17 @@ final class MissionFlight {
     /** The stored mission changed: outside a running mission, start again from the first item. */
     void missionChanged() {
         if (!flyingMission()) {
-            current = 1;
-            started = false;
-            complete = false;
-            active = -1;
+            restart();
         }
+    }
+
+    /** From the first item again, with every DO_JUMP's count at zero (AP_Mission::start). */
+    private void restart() {
+        current = 1;
+        started = false;
+        complete = false;
+        active = -1;
+        jumpsRun.clear();
     }
 
     void disarmed() {
@@ -264,6 +271,13 @@ final class MissionFlight {
                 return;
             }
             MissionItem item = store.get(current);
+            if (item.command() == MAV_CMD.MAV_CMD_DO_JUMP) {
+                if (!jump(item)) {
+                    finish();
+                    return;
+                }
+                continue;
+            }
             if (!nav(item.command())) {
                 runDo(item);
                 current++;
@@ -281,7 +295,8 @@ final class MissionFlight {
             dt = 0;
             if (!body.armed()) {
                 // landed and disarmed by the item: the mission goes on only through its DO items
-                while (current < store.count() && !nav(store.get(current).command())) {
+                while (current < store.count() && !nav(store.get(current).command())
+                        && store.get(current).command() != MAV_CMD.MAV_CMD_DO_JUMP) {
                     runDo(store.get(current));
                     current++;
                 }
@@ -302,6 +317,33 @@ final class MissionFlight {
             body.switchMode(kind.rtlMode);
             modeChanged(from, kind.rtlMode);
         }
+    }
+
+    /**
+     * AP_Mission::get_next_cmd: a DO_JUMP sends the mission back to item p1, p2 times (-1: for ever),
+     * then lets it go on; it is never "reached". A target outside the mission (0, or past the end) ends
+     * the mission there. As AP_Mission counts, the first jump is silent and later ones say
+     * "Mission: 4 Jump 2/3".
+     */
+    private boolean jump(MissionItem item) {
+        int target = (int) item.param1();
+        if (target <= 0 || target >= store.count()) {
+            return false;
+        }
+        int times = (int) item.param2();
+        int run = jumpsRun.getOrDefault(item.seq(), 0);
+        if (times == FOREVER) {
+            current = target;
+        } else if (run < times) {
+            jumpsRun.put(item.seq(), run + 1);
+            if (run > 0) {
+                body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Mission: " + item.seq() + " Jump " + (run + 1) + "/" + times);
+            }
+            current = target;
+        } else {
+            current++;
+        }
+        return true;
     }
 
     private void runDo(MissionItem item) {

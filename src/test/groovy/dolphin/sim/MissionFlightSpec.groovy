@@ -91,6 +91,60 @@ class MissionFlightSpec extends Specification {
         seconds < 90
     }
 
+    /** Takeoff, A, B, a DO_JUMP to {@code target} {@code times} times, land at home. */
+    static List<MissionItem> jumpMission(int target, int times) {
+        [MissionItem.at(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, HOME, 0, 0, 0, 0),
+         rel(1, MAV_CMD.MAV_CMD_NAV_TAKEOFF, 0, 0, 10),
+         rel(2, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 20, 0, 10),
+         rel(3, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 20, 20, 10),
+         MissionItem.command(4, MAV_CMD.MAV_CMD_DO_JUMP, target, times, 0, 0),
+         rel(5, MAV_CMD.MAV_CMD_NAV_LAND, 0, 0, 0)]
+    }
+
+    /** A copter uploaded {@code jumpMission(target, times)} and started in AUTO; the mark before its start. */
+    int flyJumps(int target, int times) {
+        gcs = new RawGroundStation(VehicleKind.COPTER, 20)
+        assert gcs.upload(jumpMission(target, times)) == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
+        int from = gcs.mark()
+        setMode(COPTER_MODE.COPTER_MODE_GUIDED)
+        arm()
+        setMode(COPTER_MODE.COPTER_MODE_AUTO)
+        assert gcs.command(MAV_CMD.MAV_CMD_MISSION_START, [0, 0]).result == MAV_RESULT.MAV_RESULT_ACCEPTED
+        from
+    }
+
+    def "DO_JUMP sends the mission back to its target p2 more times, is never reached, and announces jumps as AP_Mission does"() {
+        when:
+        int from = flyJumps(2, 2)
+        def sim = gcs.vehicle()
+        gcs.waitFor(30, 'landed and disarmed') { !sim.armed() && sim.missionState() == MISSION_STATE.MISSION_STATE_COMPLETE }
+        def reached = gcs.since(from, msg_mission_item_reached)*.seq
+
+        then: 'A and B three times (once, then two jumps), then the landing at home'
+        reached.count(2) == 3
+        reached.count(3) == 3
+        !reached.contains(4)
+        reached.last() == 5
+        horizontal(sim.position(), HOME) < 1.5
+
+        and: 'the first jump is silent, the second says which of how many'
+        def texts = gcs.since(from, msg_statustext)*.text
+        texts.contains('Mission: 4 Jump 2/2')
+        !texts.any { it.startsWith('Mission: 4 Jump 1/') }
+    }
+
+    def "a DO_JUMP to an item outside the mission ends the mission there: the copter hovers, mission COMPLETE"() {
+        when:
+        int from = flyJumps(9, 1)
+        def sim = gcs.vehicle()
+        gcs.waitFor(30, 'mission complete') { sim.missionState() == MISSION_STATE.MISSION_STATE_COMPLETE }
+
+        then:
+        sim.armed()
+        gcs.since(from, msg_mission_item_reached)*.seq.last() == 3
+        horizontal(sim.position(), HOME.displace(20, 20, 0)) < 1.5
+    }
+
     def "a copter armed in GUIDED and switched to AUTO waits for MISSION_START (p1 = p2 = 0, else DENIED)"() {
         given:
         gcs = new RawGroundStation(VehicleKind.COPTER, 20)

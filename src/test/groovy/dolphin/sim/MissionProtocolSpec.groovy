@@ -52,7 +52,7 @@ class MissionProtocolSpec extends Specification {
 
         then:
         result == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
-        gcs.since(from, msg_mission_request)*.seq == (0..5).toList()
+        gcs.since(from, msg_mission_request)*.seq.toUnique() == (0..5).toList() // re-requested once a second (50 ms here)
         gcs.since(from, msg_mission_request_int).isEmpty()
         gcs.await(from, msg_statustext) { it.text == 'Flight plan received' }
 
@@ -155,7 +155,7 @@ class MissionProtocolSpec extends Specification {
         truncated == 3
         ack.type == MAV_MISSION_RESULT.MAV_MISSION_OPERATION_CANCELLED
         (ackAt - sent) / 1e9 >= 7.9
-        (ackAt - sent) / 1e9 < 9.5
+        (ackAt - sent) / 1e9 < 10.5 // 20x: 2.5 s of clock is 125 ms of real time for ticks and delivery
         gcs.since(from, msg_mission_request).size() in 8..10
         gcs.since(from, msg_mission_request).every { it.seq == 0 }
         gcs.await(from, msg_statustext) { it.text == 'Mission upload timeout' }
@@ -173,7 +173,7 @@ class MissionProtocolSpec extends Specification {
         then:
         result == expected
         !gcs.vehicle().missionUploading()
-        gcs.since(from, msg_mission_request)*.seq == [0, 1]
+        gcs.since(from, msg_mission_request)*.seq.toUnique() == [0, 1]
 
         where:
         what                      | item                                                                                  || expected

@@ -120,7 +120,11 @@ class RawGroundStation implements AutoCloseable {
         await(from, msg_command_ack, seconds) { it.command == command }
     }
 
-    /** Uploads items (seq 0 first) answering each MISSION_REQUEST; returns the final MISSION_ACK type. */
+    /**
+     * Uploads items (seq 0 first) answering each MISSION_REQUEST; returns the final MISSION_ACK type.
+     * A request repeated because our answer was slow is answered again, and the vehicle's
+     * INVALID_SEQUENCE for the duplicate item is not final: the upload goes on.
+     */
     int upload(List<MissionItem> items, double seconds = 10) {
         int from = mark()
         send(new msg_mission_count(target_system: 1, target_component: 1, count: items.size()))
@@ -131,7 +135,7 @@ class RawGroundStation implements AutoCloseable {
                 def m = received[seen++].message
                 if (m instanceof msg_mission_request) {
                     send(items[m.seq].toMessage(1, 1))
-                } else if (m instanceof msg_mission_ack) {
+                } else if (m instanceof msg_mission_ack && m.type != MAV_MISSION_RESULT.MAV_MISSION_INVALID_SEQUENCE) {
                     return m.type
                 }
             }
