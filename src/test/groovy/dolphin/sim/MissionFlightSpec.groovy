@@ -39,6 +39,16 @@ class MissionFlightSpec extends Specification {
         assert gcs.command(MAV_CMD.MAV_CMD_COMPONENT_ARM_DISARM, [1]).result == expected
     }
 
+    /**
+     * The items reached, once the ground station has heard item {@code last} reached and the mission
+     * COMPLETE: the vehicle's own state changes before those frames have crossed the socket.
+     */
+    List<Integer> reachedThrough(int from, int last) {
+        gcs.await(from, msg_mission_item_reached) { it.seq == last }
+        gcs.await(from, msg_mission_current) { it.mission_state == MISSION_STATE.MISSION_STATE_COMPLETE }
+        gcs.since(from, msg_mission_item_reached)*.seq
+    }
+
     static final List<MissionItem> COPTER_MISSION = [
             MissionItem.at(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, HOME, 0, 0, 0, 0),
             rel(1, MAV_CMD.MAV_CMD_NAV_TAKEOFF, 0, 0, 10),
@@ -65,7 +75,7 @@ class MissionFlightSpec extends Specification {
         assert gcs.command(MAV_CMD.MAV_CMD_MISSION_START, [0, 0]).result == MAV_RESULT.MAV_RESULT_ACCEPTED
         gcs.waitFor(30, 'landed and disarmed') { !sim.armed() && sim.missionState() == MISSION_STATE.MISSION_STATE_COMPLETE }
         double seconds = (gcs.clock.nanoTime() - started) / 1e9
-        def reached = gcs.since(from, msg_mission_item_reached)*.seq
+        def reached = reachedThrough(from, 8)
         def current = gcs.since(from, msg_mission_current)
 
         then: 'landed at the landing point'
@@ -118,7 +128,7 @@ class MissionFlightSpec extends Specification {
         int from = flyJumps(2, 2)
         def sim = gcs.vehicle()
         gcs.waitFor(30, 'landed and disarmed') { !sim.armed() && sim.missionState() == MISSION_STATE.MISSION_STATE_COMPLETE }
-        def reached = gcs.since(from, msg_mission_item_reached)*.seq
+        def reached = reachedThrough(from, 5)
 
         then: 'A and B three times (once, then two jumps), then the landing at home'
         reached.count(2) == 3
@@ -141,7 +151,7 @@ class MissionFlightSpec extends Specification {
 
         then:
         sim.armed()
-        gcs.since(from, msg_mission_item_reached)*.seq.last() == 3
+        reachedThrough(from, 3).last() == 3
         horizontal(sim.position(), HOME.displace(20, 20, 0)) < 1.5
     }
 
@@ -232,7 +242,7 @@ class MissionFlightSpec extends Specification {
         then:
         gcs.await(from, msg_statustext) { it.text == 'Mission complete, changing mode to RTL' }
         sim.missionState() == MISSION_STATE.MISSION_STATE_COMPLETE
-        gcs.since(from, msg_mission_item_reached)*.seq.last() == 3
+        reachedThrough(from, 3).last() == 3
 
         when: 'it flies home and loiters over it'
         gcs.waitFor(20, 'near home') { horizontal(sim.position(), HOME) < 70 }
