@@ -92,9 +92,9 @@ final class MissionFlight {
     private Phase modePhase;
     // a CONDITION_DELAY running beside the nav item
     private int conditionSeq = -1;
+    private double conditionLeft;
     /** Jumps made by each DO_JUMP (by seq) since the mission started. */
     private final Map<Integer, Integer> jumpsRun = new HashMap<>();
-    private double conditionLeft;
     /** The last MISSION_CURRENT announced (seq/total/state); a change is sent at once, as ArduPilot does. */
     private String lastCurrent = "0/0/" + MISSION_STATE.MISSION_STATE_NO_MISSION;
 
