@@ -8,9 +8,9 @@ import com.MAVLink.enums.MAV_RESULT
 import com.MAVLink.enums.MAV_TYPE
 import com.MAVLink.minimal.msg_heartbeat
 import dolphin.mavlink.codec.Frame
-import dolphin.mavlink.codec.FrameReader
 import dolphin.mavlink.codec.FrameWriter
 import dolphin.mavlink.link.LinkUrl
+import dolphin.testing.FrameListener
 import java.util.concurrent.CopyOnWriteArrayList
 import spock.lang.Specification
 import spock.lang.Timeout
@@ -27,30 +27,11 @@ class ForwarderSpec extends Specification {
         final DatagramSocket socket = new DatagramSocket(0, InetAddress.loopbackAddress)
         final List<Frame> frames = new CopyOnWriteArrayList<>()
         final FrameWriter writer = new FrameWriter(255, 190)
-        SocketAddress relay
-        private volatile boolean running = true
-        private final Thread thread
-
-        Viewer() {
-            socket.soTimeout = 100
-            thread = Thread.start('viewer') {
-                def reader = new FrameReader()
-                byte[] buf = new byte[65535]
-                while (running) {
-                    def p = new DatagramPacket(buf, buf.length)
-                    try {
-                        socket.receive(p)
-                    } catch (SocketTimeoutException ignored) {
-                        continue
-                    } catch (IOException ignored) {
-                        return
-                    }
-                    relay = p.socketAddress
-                    reader.feed(p.data, 0, p.length) { frames << it }
-                    reader.endOfPacket { frames << it }
-                }
-            }
-        }
+        volatile SocketAddress relay
+        private final FrameListener listener = new FrameListener(socket, 'viewer', { Frame f, SocketAddress from ->
+            relay = from
+            frames << f
+        })
 
         void send(com.MAVLink.Messages.MAVLinkMessage m) {
             byte[] b = writer.write(m)
@@ -59,9 +40,7 @@ class ForwarderSpec extends Specification {
 
         @Override
         void close() {
-            running = false
-            thread.join(1000)
-            socket.close()
+            listener.close()
         }
     }
 

@@ -11,9 +11,10 @@ import com.MAVLink.common.msg_mission_request_int
 import com.MAVLink.common.msg_mission_request_list
 import com.MAVLink.enums.MAV_MISSION_RESULT
 import dolphin.core.SystemClock
-import dolphin.mavlink.codec.FrameReader
+import dolphin.mavlink.codec.Frame
 import dolphin.mavlink.codec.FrameWriter
 import dolphin.mavlink.mission.MissionItem
+import dolphin.testing.FrameListener
 
 import java.util.concurrent.CopyOnWriteArrayList
 
@@ -38,30 +39,16 @@ class RawGroundStation implements AutoCloseable {
     final DatagramSocket socket = new DatagramSocket(0, InetAddress.getLoopbackAddress())
     final List<Received> received = new CopyOnWriteArrayList<>()
     final SimFleet fleet
-    private final FrameReader reader = new FrameReader()
-    private final Thread thread
-    private volatile boolean running = true
+    private final FrameListener listener
     private final Map<Integer, FrameWriter> writers = [:]
 
     RawGroundStation(VehicleKind kind = VehicleKind.COPTER, double speedup = 20, SimOptions options = SimOptions.DEFAULT) {
         clock = new SystemClock(speedup)
-        socket.soTimeout = 100
-        thread = Thread.start('raw-gcs') {
-            byte[] buf = new byte[65535]
-            while (running) {
-                def p = new DatagramPacket(buf, buf.length)
-                try {
-                    socket.receive(p)
-                } catch (SocketTimeoutException ignored) {
-                    continue
-                } catch (IOException e) {
-                    return
-                }
-                long now = clock.nanoTime()
-                reader.feed(p.data, 0, p.length) { f -> if (f.message()) { received << new Received(now, f.message()) } }
-                reader.endOfPacket { f -> if (f.message()) { received << new Received(now, f.message()) } }
+        listener = new FrameListener(socket, 'raw-gcs', { Frame f, SocketAddress from ->
+            if (f.message()) {
+                received << new Received(clock.nanoTime(), f.message())
             }
-        }
+        })
         def config = SimFleet.Config.of(1, kind, new InetSocketAddress(InetAddress.getLoopbackAddress(), socket.localPort))
                 .withOptions(options)
         fleet = new SimFleet(config, clock)
@@ -170,9 +157,7 @@ class RawGroundStation implements AutoCloseable {
 
     @Override
     void close() {
-        running = false
         fleet.close()
-        socket.close()
-        thread.join(2000)
+        listener.close()
     }
 }
