@@ -80,7 +80,7 @@ abstract class DolphinScript extends Script implements DslScript {
 
     Position position(NodeSet vehicle) {
         def node = vehicle.single('position')
-        Position p = node.position
+        Position p = node instanceof AbstractNode ? ((AbstractNode) node).awaitPosition() : node.position
         if (p == null) {
             throw new DslException("position: vehicle ${node.id} has not reported a position yet")
         }

@@ -39,6 +39,11 @@ public abstract class AbstractNode implements Node {
         connectionTimeout = Node.validateConnectionTimeout(seconds);
     }
 
+    /** The position for a script; a node whose telemetry may not have arrived yet waits a little for it. */
+    public Position awaitPosition() {
+        return getPosition();
+    }
+
     /** Remaining battery as a fraction in [0, 1]; nodes without a battery report 1.0. */
     public double batteryRemaining() {
         return 1.0;

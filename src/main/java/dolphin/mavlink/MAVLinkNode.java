@@ -16,6 +16,7 @@ import dolphin.mavlink.mission.MissionUploadProtocol;
 import java.net.SocketAddress;
 import java.time.Duration;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.Predicate;
 import java.util.function.UnaryOperator;
 
 /**
@@ -24,8 +25,11 @@ import java.util.function.UnaryOperator;
  */
 public final class MAVLinkNode extends AbstractNode {
 
-    /** How long {@link #batteryRemaining()} waits for the first SYS_STATUS (design §7). */
-    public static final Duration BATTERY_WAIT = Duration.ofSeconds(5);
+    /**
+     * How long {@link #batteryRemaining()} and {@link #awaitPosition()} wait for the first SYS_STATUS
+     * or GLOBAL_POSITION_INT of a vehicle just discovered (design §7).
+     */
+    public static final Duration TELEMETRY_WAIT = Duration.ofSeconds(5);
 
     private final MAVLinkCommunications comms;
     private final Link link;
@@ -154,18 +158,9 @@ public final class MAVLinkNode extends AbstractNode {
      */
     @Override
     public double batteryRemaining() {
-        long deadline = clock.nanoTime() + BATTERY_WAIT.toNanos();
-        while (state.get().systemStatus() == null) {
-            if (clock.nanoTime() >= deadline) {
-                throw new EnvironmentException("battery: vehicle " + getId() + " has sent no SYS_STATUS in "
-                        + BATTERY_WAIT.toSeconds() + " s (are its telemetry streams reaching us?)");
-            }
-            try {
-                clock.sleep(Duration.ofMillis(50));
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                throw new EnvironmentException("battery: interrupted while waiting for vehicle " + getId(), e);
-            }
+        if (!awaitTelemetry("battery", s -> s.systemStatus() != null)) {
+            throw new EnvironmentException("battery: vehicle " + getId() + " has sent no SYS_STATUS in "
+                    + TELEMETRY_WAIT.toSeconds() + " s (are its telemetry streams reaching us?)");
         }
         int pct = state.get().batteryPercent();
         if (pct < 0) {
@@ -173,6 +168,30 @@ public final class MAVLinkNode extends AbstractNode {
                     + " no battery monitor configured)");
         }
         return pct / 100.0;
+    }
+
+    /** The position, after waiting up to 5 s for the first GLOBAL_POSITION_INT; null if none came. */
+    @Override
+    public Position awaitPosition() {
+        awaitTelemetry("position", s -> s.position() != null);
+        return getPosition();
+    }
+
+    /** Waits on the clock until the state shows what a vehicle just discovered has not sent yet; false at the deadline. */
+    private boolean awaitTelemetry(String what, Predicate<VehicleState> arrived) {
+        long deadline = clock.nanoTime() + TELEMETRY_WAIT.toNanos();
+        while (!arrived.test(state.get())) {
+            if (clock.nanoTime() >= deadline) {
+                return false;
+            }
+            try {
+                clock.sleep(Duration.ofMillis(50));
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new EnvironmentException(what + ": interrupted while waiting for vehicle " + getId(), e);
+            }
+        }
+        return true;
     }
 
     /** Sends a message to this vehicle, on the link and to the address it was heard at. */

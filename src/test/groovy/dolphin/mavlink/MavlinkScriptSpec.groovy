@@ -88,7 +88,7 @@ class MavlinkScriptSpec extends Specification {
         messages.contains('low: 0.4')
     }
 
-    def "battery(v) fails clearly when a vehicle sends no SYS_STATUS, or reports no battery monitor"() {
+    def "battery(v) and position(v) wait 5 s for a vehicle's first report, then fail clearly; so does a missing battery monitor"() {
         given: 'two fake vehicles: one sends heartbeats only, one reports battery_remaining -1'
         def socket = new DatagramSocket()
         def quiet = new FrameWriter(9, 1)
@@ -108,12 +108,18 @@ class MavlinkScriptSpec extends Specification {
         when:
         def noStatus = run("v = pick { id '9' }\nbattery(v)")
         def noMonitor = run("v = pick { id '10' }\nbattery(v)")
+        double before = h.clock.seconds()
+        def noPosition = run("v = pick { id '9' }\nposition(v)")
+        double waited = h.clock.seconds() - before
 
         then:
         noStatus.outcome == ScriptResult.Outcome.SCRIPT_ERROR
         noStatus.error.line == 2
         noStatus.error.message.contains('vehicle 9 has sent no SYS_STATUS in 5 s')
         noMonitor.error.message.contains('vehicle 10 reports no battery level')
+        noPosition.outcome == ScriptResult.Outcome.SCRIPT_ERROR
+        noPosition.error.message.contains('vehicle 9 has not reported a position yet')
+        waited >= 5
 
         cleanup:
         beat?.interrupt()
