@@ -1,13 +1,7 @@
 package dolphin.cli;
 
 import dolphin.core.EnvironmentException;
-import dolphin.core.ManualClock;
-import dolphin.dsl.Engine;
-import dolphin.dsl.EngineListener;
 import dolphin.dsl.ScriptResult;
-import dolphin.dsl.ScriptRun;
-import dolphin.mavlink.MAVLinkLanguage;
-import dolphin.mavlink.dsl.MissionRecorder;
 import dolphin.mavlink.mission.Mission;
 import dolphin.mavlink.mission.MissionFormat;
 import dolphin.mavlink.mission.MissionItem;
@@ -18,9 +12,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.HashSet;
-import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
@@ -36,10 +28,9 @@ import picocli.CommandLine.Spec;
  * {@code dolphin mission SCRIPT [--export FORMAT] [--out DIR]}: builds a script's missions without
  * vehicles (a dry run) and prints each as a table, or writes one file per mission.
  *
- * <p>The dry run runs the script with the MAVLink language on a platform without vehicles, on a
- * virtual clock that jumps over waits (a {@code pick { timeout 30 }} takes no real time), and records
- * every Mission that a {@code mission { }} block builds. With no vehicles, the script ends at its
- * first {@code pick} (it halts there): the missions it defines before are the ones shown, which suits
+ * <p>The dry run ({@link DryRun}) runs the script on a platform without vehicles and a clock that
+ * jumps over waits (a {@code pick { timeout 30 }} takes no real time). With no vehicles, the script
+ * ends at its first {@code pick}: the missions it defines before are the ones shown, which suits
  * scripts that define their missions first and fly them afterwards. Item 0 is the mission's home,
  * or its first position when it names none (there is no vehicle home).
  */
@@ -160,44 +151,18 @@ final class MissionCommand implements Callable<Integer> {
      * null after printing the script's error (file:line).
      */
     private List<Mission> dryRun(String source, PrintWriter err) throws InterruptedException {
-        Set<Mission> seen = Collections.newSetFromMap(new IdentityHashMap<>());
-        List<Mission> missions = Collections.synchronizedList(new ArrayList<>());
-        Engine engine = new Engine(new DryRunPlatform(), ManualClock.autoAdvancing());
-        engine.addExtension(new MAVLinkLanguage());
-        engine.addExtension(new MissionRecorder(m -> {
-            synchronized (seen) {
-                if (seen.add(m)) {
-                    missions.add(m);
-                }
-            }
-        }));
-        List<String> messages = Collections.synchronizedList(new ArrayList<>());
-        engine.addListener(new EngineListener() {
-            @Override
-            public void message(String text) {
-                messages.add(text);
-            }
-        });
-        ScriptResult result;
-        try (engine) {
-            ScriptRun run = engine.run(source, script.toString());
-            result = run.await(java.time.Duration.ofMillis((long) (timeLimit * 1000)));
-            if (result == null) {
-                // Without vehicles a script that never picks one (a loop of its own) never ends.
-                run.stop();
-                run.await();
-                err.println("dolphin mission: " + script + ": the dry run was stopped after " + timeLimit
-                        + " s (a script that loops without picking vehicles does not end without them); "
-                        + missions.size() + " mission(s) built by then");
-                err.flush();
-                return null;
-            }
+        DryRun run = DryRun.of(source, script.toString(), java.time.Duration.ofMillis((long) (timeLimit * 1000)));
+        ScriptResult result = run.result();
+        if (result == null) {
+            err.println("dolphin mission: " + script + ": the dry run was stopped after " + timeLimit
+                    + " s (a script that loops without picking vehicles does not end without them); "
+                    + run.missions().size() + " mission(s) built by then");
+            err.flush();
+            return null;
         }
-        String error = result.error() == null ? null : result.error().toString();
-        synchronized (messages) {
-            // The script's own messages (and the engine's notes), on standard error: standard output is the tables.
-            messages.stream().filter(m -> !m.equals(error)).forEach(err::println);
-        }
+        String error = run.error();
+        // The script's own messages (and the engine's notes), on standard error: standard output is the tables.
+        run.messages().stream().filter(m -> !m.equals(error)).forEach(err::println);
         switch (result.outcome()) {
             case SCRIPT_ERROR -> {
                 err.println(error != null ? error : script + ": " + result.message());
@@ -210,14 +175,12 @@ final class MissionCommand implements Callable<Integer> {
                 return null;
             }
             case HALTED -> err.println("dolphin mission: the dry run stops there: it has no vehicles to pick; "
-                    + missions.size() + " mission(s) built before it");
+                    + run.missions().size() + " mission(s) built before it");
             default -> {
             }
         }
         err.flush();
-        synchronized (missions) {
-            return List.copyOf(missions);
-        }
+        return run.missions();
     }
 
     /** A mission's name as a file name: letters, digits, '.', '_' and '-' kept, runs of others as '_'. */

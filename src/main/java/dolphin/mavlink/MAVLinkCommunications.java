@@ -387,8 +387,9 @@ public final class MAVLinkCommunications implements AutoCloseable {
     private void routeVehicleState() {
         handler.on(msg_heartbeat.class, (n, hb) -> changed(n, s -> s.withHeartbeat(hb, clock.nanoTime())));
         handler.on(msg_sys_status.class, (n, m) -> changed(n, s -> s.withSystemStatus(m, clock.nanoTime())));
-        handler.on(msg_global_position_int.class, (n, m) -> changed(n, s -> s.withPosition(
-                Position.fromDegrees(m.lat * 1e-7, m.lon * 1e-7, m.alt * 1e-3), m.relative_alt * 1e-3, clock.nanoTime())));
+        // ArduPilot sends 0, 0 until its EKF has a position estimate: that is no position yet.
+        handler.on(msg_global_position_int.class, (n, m) -> changed(n, s -> s.withPosition(m.lat == 0 && m.lon == 0 ? null
+                : Position.fromDegrees(m.lat * 1e-7, m.lon * 1e-7, m.alt * 1e-3), m.relative_alt * 1e-3, clock.nanoTime())));
         handler.on(msg_home_position.class, (n, m) -> changed(n, s -> s.withHome(
                 Position.fromDegrees(m.latitude * 1e-7, m.longitude * 1e-7, m.altitude * 1e-3))));
         handler.on(msg_extended_sys_state.class, (n, m) -> changed(n, s -> s.withLandedState(m.landed_state)));

@@ -39,6 +39,7 @@ class CheckCommandSpec extends Specification {
         'bare-execute.dolphin' | 4    | "'execute' stands alone on its line"
         'syntax-error.dolphin' | 1    | "the '{' opened here is never closed: expected a '}'"
         'def-key.dolphin'      | 2    | "'v1' is declared with 'def'"
+        'below-home.dolphin'   | 9    | "mission hop: item 2 (goPos, NAV_WAYPOINT) is 0.0 m above home (home at 820.0 m): lower than the 2 m clearance"
     }
 
     def "an unreadable script is a usage error, exit 2"() {

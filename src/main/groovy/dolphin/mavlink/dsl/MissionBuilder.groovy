@@ -8,6 +8,7 @@ import dolphin.mavlink.mission.ChangeSpeed
 import dolphin.mavlink.mission.DelayCommand
 import dolphin.mavlink.mission.DroneCommand
 import dolphin.mavlink.mission.GoToPoint
+import dolphin.mavlink.mission.HeightCheck
 import dolphin.mavlink.mission.JumpToItem
 import dolphin.mavlink.mission.LandingPoint
 import dolphin.mavlink.mission.LoiterPoint
@@ -29,8 +30,13 @@ import org.codehaus.groovy.runtime.InvokerHelper
  *
  * <p>Position tracking (reference C.6.1, F-9): relative commands start from the last
  * <em>registered</em> position, or from the mission's home when none is registered yet. goPos, move*,
- * returnHome*, altitude and surveyArea register a position; takeOff, loiter*, landingPoint and home
- * do not. *FromHome and returnHome* start from the home named with {@code home}.
+ * takeOff, returnHome*, altitude and surveyArea register a position; loiter*, landingPoint and home
+ * do not. *FromHome start from the home named with {@code home}; returnHome and returnHomeAndLoiter
+ * arrive over it at the last registered height (docs/mission-commands.md, "Safe heights").
+ *
+ * <p>No item but a landing may be lower than home plus {@link HeightCheck#CLEARANCE} unless the
+ * mission says {@code allowBelowHome true}: checked when the mission is built if it names its home,
+ * else by the executor against the vehicle's home.
  *
  * <p>The builder answers its own commands first; everything else (script variables, other words)
  * falls through to the script. It has no properties of its own, so script variables are never
@@ -43,6 +49,7 @@ class MissionBuilder {
     @PackageScope
     static final Map<String, List<String>> FORMS = [
             name                      : ['(name)'],
+            allowBelowHome            : ['(true or false)'],
             home                      : ['(lat, lon[, hae])', '(position)'],
             goPos                     : ['(lat, lon[, hae])', '(position)'],
             takeOff                   : ['(position[, pitch])'],
@@ -79,6 +86,9 @@ class MissionBuilder {
 
     private String missionName
     private Position missionHome
+    private boolean belowHomeAllowed
+    /** Where each point was written: an exception made there, whose stack trace gives a later error that line. */
+    private final Map<MissionPoint, DslException> origins = new IdentityHashMap<>()
     private Position lastRegistered
     private final List<DroneCommand> commands = []
     /** Jumps, with the error to throw (made at the jump's line) if the target does not exist. */
@@ -92,7 +102,12 @@ class MissionBuilder {
         this.body = body
     }
 
-    // ---- naming and home
+    // ---- naming, safety and home
+
+    /** Allows items lower than home plus the clearance (HeightCheck): the script's explicit choice. */
+    void allowBelowHome(boolean allowed) {
+        belowHomeAllowed = allowed
+    }
 
     /** The mission's name: its task id in messages and exports. */
     void name(String name) {
@@ -132,13 +147,16 @@ class MissionBuilder {
         waypoint('goPos', Args.position('goPos', position))
     }
 
-    /** NAV_TAKEOFF at the position, pitch in degrees; does not register it. */
+    /**
+     * NAV_TAKEOFF at the position, pitch in degrees; registers it, so relative commands after it
+     * start at the take-off height (the report: "move the drone relative to its position").
+     */
     void takeOff(Position position, Number pitch = TakeOffPoint.DEFAULT_PITCH) {
-        add(new TakeOffPoint('takeOff', Args.position('takeOff', position), (float) Args.number('takeOff', 'pitch', pitch), Float.NaN))
+        addRegistered(new TakeOffPoint('takeOff', Args.position('takeOff', position), (float) Args.number('takeOff', 'pitch', pitch), Float.NaN))
     }
 
     void takeOffWithYaw(Position position, Number pitch, Number yaw = Float.NaN) {
-        add(new TakeOffPoint('takeOffWithYaw', Args.position('takeOffWithYaw', position),
+        addRegistered(new TakeOffPoint('takeOffWithYaw', Args.position('takeOffWithYaw', position),
                 (float) Args.number('takeOffWithYaw', 'pitch', pitch), Args.yaw('takeOffWithYaw', yaw)))
     }
 
@@ -232,19 +250,20 @@ class MissionBuilder {
         add(new LandingPoint(w, Args.position(w, position), Args.yaw(w, yaw), Args.landMode(w, landMode)))
     }
 
-    // ---- home again (each registers home)
+    // ---- home again (each registers where it ends)
 
+    /** NAV_WAYPOINT over home at the last registered height; registers it. */
     void returnHome() {
-        waypoint('returnHome', homeFor('returnHome'))
+        waypoint('returnHome', overHome('returnHome'))
     }
 
+    /** NAV_LOITER_UNLIM over home at the last registered height; registers it. */
     void returnHomeAndLoiter(Number radius = LoiterPoint.DEFAULT_RADIUS) {
         String w = 'returnHomeAndLoiter'
-        Position h = homeFor(w)
-        add(new LoiterPoint(w, h, Args.radius(w, radius)))
-        register(h)
+        addRegistered(new LoiterPoint(w, overHome(w), Args.radius(w, radius)))
     }
 
+    /** NAV_LAND at home: the vehicle flies there at the height it has, then lands; registers home. */
     void returnHomeAndLand(Number yaw = Float.NaN, Number landMode = 0) {
         String w = 'returnHomeAndLand'
         Position h = homeFor(w)
@@ -366,7 +385,12 @@ class MissionBuilder {
             throw new DslException("mission '${missionName}' has no items: expected at least one mission command"
                     + " (goPos, move, takeOff, surveyArea, ...)")
         }
-        Mission m = new Mission(missionName, missionHome, commands)
+        Mission m = new Mission(missionName, missionHome, commands, belowHomeAllowed)
+        HeightCheck.firstTooLow(m, missionHome).ifPresent { HeightCheck.TooLow low ->
+            DslException e = new DslException(low.message())
+            e.stackTrace = origins[low.point()].stackTrace
+            throw e
+        }
         int count = m.missionPoints()
         if (count > MAX_ITEMS) {
             throw new DslException("mission '${missionName}' has ${count} items, home included; a MAVLink mission holds"
@@ -396,6 +420,9 @@ class MissionBuilder {
     }
 
     private void add(DroneCommand c) {
+        if (c instanceof MissionPoint) {
+            origins[(MissionPoint) c] = new DslException('')
+        }
         commands << c
     }
 
@@ -413,6 +440,16 @@ class MissionBuilder {
         }
         throw new DslException("${word}: there is no position to start from yet: name the mission's home"
                 + " ('home lat, lon, hae') or go to a position (goPos, ...) before it")
+    }
+
+    /** Home's latitude and longitude at the last registered height: returning never goes lower than the mission flew. */
+    private Position overHome(String word) {
+        Position h = homeFor(word)
+        if (lastRegistered == null) {
+            throw new DslException("${word}: there is no height to return at yet: the mission goes nowhere before it;"
+                    + " go somewhere first (takeOff, goPos, move, ...), or use returnHomeAndLand()")
+        }
+        new Position(h.lat(), h.lon(), lastRegistered.hae())
     }
 
     private Position homeFor(String word) {

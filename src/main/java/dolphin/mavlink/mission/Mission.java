@@ -22,13 +22,28 @@ import java.util.Map;
 public final class Mission extends PlatformTask {
 
     private final Position home;
+    private final boolean belowHomeAllowed;
     private final List<DroneCommand> droneCommands = new ArrayList<>();
 
     /** @param home the home the script named, or null */
     public Mission(String name, Position home, List<DroneCommand> commands) {
+        this(name, home, commands, false);
+    }
+
+    /**
+     * @param belowHomeAllowed true when the script allows items lower than home plus the clearance
+     *        ({@code allowBelowHome true}; see {@link HeightCheck})
+     */
+    public Mission(String name, Position home, List<DroneCommand> commands, boolean belowHomeAllowed) {
         super(name);
         this.home = home;
+        this.belowHomeAllowed = belowHomeAllowed;
         setDroneCommands(commands);
+    }
+
+    /** Whether the script allowed items lower than home plus the clearance. */
+    public boolean belowHomeAllowed() {
+        return belowHomeAllowed;
     }
 
     public void setDroneCommands(List<DroneCommand> commands) {

@@ -2,12 +2,12 @@ package dolphin.mavlink.mission;
 
 import com.MAVLink.common.msg_mission_item_reached;
 import com.MAVLink.enums.MAV_CMD;
-import com.MAVLink.enums.MAV_LANDED_STATE;
 import com.MAVLink.enums.MAV_MODE_FLAG;
 import com.MAVLink.enums.MAV_RESULT;
 import com.MAVLink.enums.MISSION_STATE;
 import dolphin.core.CompletionState;
 import dolphin.core.Node;
+import dolphin.core.Position;
 import dolphin.core.PlatformTaskExecutor;
 import dolphin.mavlink.CommandResult;
 import dolphin.mavlink.MAVLinkCommunications;
@@ -40,7 +40,11 @@ public final class MissionExecutor extends PlatformTaskExecutor {
      * A command of PREPARE or START: what it is (for errors), how to send it, and how the vehicle's
      * state shows it took effect (for when every COMMAND_ACK was lost on the way back).
      */
-    private record Step(String what, Supplier<CompletableFuture<CommandResult>> send, Predicate<VehicleState> effect) {
+    private record Step(String what, Supplier<CompletableFuture<CommandResult>> send, Predicate<VehicleState> effect,
+                        boolean waitable) {
+        Step(String what, Supplier<CompletableFuture<CommandResult>> send, Predicate<VehicleState> effect) {
+            this(what, send, effect, false);
+        }
     }
 
     private final Mission mission;
@@ -49,20 +53,26 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     private MAVLinkNode node;
     private MAVLinkCommunications comms;
     private MissionExecutorConfig config;
+    private FlightRules rules;
     private List<MissionItem> items;
+    private MissionEnd end;
     private TreeMap<Integer, List<DroneCommand>> keyed;
     private volatile State state = State.PREPARE;
     private String failure;
     private long deadline;
     private CompletableFuture<?> pending;
     private String uploadError;
-    private long nextArm;
+    private long nextAttempt;
     private boolean armModeSet;
     private volatile int reached;
     private int sentUpTo;
     private int reported;
     private boolean active;
-    private boolean sawAuto;
+    /** Whether the vehicle has shown itself ready; until then PREPARE waits (Readiness). */
+    private boolean ready;
+    /** What the vehicle was last waiting for, shown once per change; null when it has not waited. */
+    private String waitingFor;
+    private long prepareStart;
     /** A jump sent and not yet seen on the vehicle (MISSION_CURRENT back at or before its item); null when none. */
     private JumpToItem jumping;
     private long resendJump;
@@ -96,31 +106,12 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         node = n;
         comms = node.communications();
         config = comms.missionExecutorConfig();
+        rules = FlightRules.of(node.getFamily());
         node.setExecutor(this);
-        try {
-            items = mission.items(node.getHome());
-        } catch (RuntimeException e) {
-            failure = e.getMessage();
-            return;
-        }
         keyed = new TreeMap<>(mission.nonMissionCommands());
         keyed.values().forEach(cmds -> cmds.stream().filter(c -> c instanceof JumpToItem)
                 .forEach(c -> jumpsLeft.put((JumpToItem) c, ((JumpToItem) c).repetitions())));
-        List<DroneCommand> beforeUpload = keyed.remove(0);
-        if (beforeUpload != null) {
-            beforeUpload.forEach(c -> c.toMavLinkMessage(node).forEach(node::send));
-        }
-        VehicleState s = node.state();
-        if (s.armed() && isMode(s, "AUTO")) {
-            String hold = holdMode();
-            steps.add(new Step("leaving AUTO for " + hold + " before the new mission", () -> setMode(hold), st -> isMode(st, hold)));
-        }
-        if (mission.getHome() != null) {
-            var h = mission.getHome();
-            steps.add(new Step("DO_SET_HOME", () -> comms.command(node, MAV_CMD.MAV_CMD_DO_SET_HOME, 0, 0, 0, 0,
-                    (float) h.latitudeDegrees(), (float) h.longitudeDegrees(), (float) h.hae()),
-                    st -> st.home() != null && st.home().distanceTo(h) < 1));
-        }
+        prepareStart = clock().nanoTime();
         enter(State.PREPARE, config.prepare());
     }
 
@@ -131,22 +122,15 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         }
         long now = clock().nanoTime();
         if (state != State.RUNNING && now > deadline) {
-            return fail(state + " did not finish within its deadline");
+            return fail(state == State.PREPARE ? notReady() : state + " did not finish within its deadline");
         }
         return switch (state) {
-            case PREPARE -> {
-                if (runSteps()) {
-                    progress("uploading " + items.size() + " items");
-                    pending = watch(node.getUploadProtocol().upload(items));
-                    enter(State.UPLOAD, config.upload());
-                }
-                yield CompletionState.IN_PROGRESS;
-            }
+            case PREPARE -> prepare(now);
             case UPLOAD -> upload();
             case VERIFY -> verify();
             case ARM -> arm(now);
             case START -> {
-                if (runSteps()) {
+                if (runSteps(now)) {
                     progress("started");
                     enter(State.RUNNING, Duration.ZERO);
                 }
@@ -156,6 +140,76 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             case DONE -> CompletionState.DONE;
             case ERROR -> fail(failure);
         };
+    }
+
+    /**
+     * Waits until the vehicle is ready (Readiness), then holds it if it is flying another mission,
+     * sets the mission's home, checks the heights against home, and starts the upload. A vehicle
+     * that refuses DO_SET_HOME for now (FAILED: no position estimate yet) is asked again.
+     */
+    private CompletionState prepare(long now) {
+        if (!ready) {
+            var missing = Readiness.missing(node.state(), mission.getHome() == null);
+            if (missing.isPresent()) {
+                waitFor(missing.get());
+                return CompletionState.IN_PROGRESS;
+            }
+            ready = true;
+            queuePreparation();
+        }
+        if (!runSteps(now)) {
+            return failure != null ? fail(failure) : CompletionState.IN_PROGRESS;
+        }
+        try {
+            items = mission.items(node.getHome());
+            Position home = mission.getHome() != null ? mission.getHome() : node.getHome();
+            var low = HeightCheck.firstTooLow(mission, home);
+            if (low.isPresent()) {
+                return fail(low.get().message());
+            }
+        } catch (RuntimeException e) {
+            return fail(e.getMessage());
+        }
+        end = new MissionEnd(rules, items, node.getId(), config.modeGrace(), config.landingStall());
+        List<DroneCommand> beforeUpload = keyed.remove(0);
+        if (beforeUpload != null) {
+            beforeUpload.forEach(c -> c.toMavLinkMessage(node).forEach(node::send));
+        }
+        if (waitingFor != null) {
+            progress("vehicle ready after " + (now - prepareStart) / 1_000_000_000L + " s");
+        }
+        progress("uploading " + items.size() + " items");
+        pending = watch(node.getUploadProtocol().upload(items));
+        enter(State.UPLOAD, config.upload());
+        return CompletionState.IN_PROGRESS;
+    }
+
+    private void queuePreparation() {
+        VehicleState s = node.state();
+        if (s.armed() && isMode(s, "AUTO")) {
+            String hold = rules.holdMode();
+            steps.add(new Step("leaving AUTO for " + hold + " before the new mission", () -> setMode(hold), st -> isMode(st, hold)));
+        }
+        if (mission.getHome() != null) {
+            var h = mission.getHome();
+            steps.add(new Step("DO_SET_HOME", () -> comms.command(node, MAV_CMD.MAV_CMD_DO_SET_HOME, 0, 0, 0, 0,
+                    (float) h.latitudeDegrees(), (float) h.longitudeDegrees(), (float) h.hae()),
+                    st -> st.home() != null && st.home().distanceTo(h) < 1, true));
+        }
+    }
+
+    /** Says what the vehicle is waiting for, once per change. */
+    private void waitFor(String what) {
+        if (!what.equals(waitingFor)) {
+            waitingFor = what;
+            context().listener().message("waiting for vehicle " + node.getId() + ": " + what);
+        }
+    }
+
+    /** PREPARE's deadline passed: what the vehicle was waiting for, in its own words when it said any. */
+    private String notReady() {
+        String why = Readiness.prearmText(node.state()).orElse(waitingFor != null ? waitingFor : "not ready");
+        return "vehicle " + node.getId() + " was not ready within " + config.prepare().toSeconds() + " s: " + why;
     }
 
     private CompletionState upload() {
@@ -199,26 +253,28 @@ public final class MissionExecutor extends PlatformTaskExecutor {
 
     private void enterArm() {
         enter(State.ARM, config.arm());
-        nextArm = clock().nanoTime();
+        nextAttempt = clock().nanoTime();
     }
 
-    /** Copter: GUIDED, then arm; others arm in their current mode. Arming is retried until the deadline. */
+    /** In the family's arming mode, if it has one, then arm; arming is retried until the deadline. */
     private CompletionState arm(long now) {
-        if (getFamily() == VehicleFamily.COPTER && !armModeSet) {
+        var armMode = rules.armMode();
+        if (armMode.isPresent() && !armModeSet) {
+            String mode = armMode.get();
             if (pending == null) {
-                pending = watch(setMode("GUIDED"));
+                pending = watch(setMode(mode));
             }
             CommandResult r = commandDone();
             if (r == null) {
                 return CompletionState.IN_PROGRESS;
             }
-            if (!tookEffect(r, st -> isMode(st, "GUIDED"))) {
-                return fail(refusal("GUIDED", r));
+            if (!tookEffect(r, st -> isMode(st, mode))) {
+                return fail(refusal(mode, r));
             }
             armModeSet = true;
         }
         if (pending == null) {
-            if (now < nextArm) {
+            if (now < nextAttempt) {
                 return CompletionState.IN_PROGRESS;
             }
             pending = watch(comms.command(node, MAV_CMD.MAV_CMD_COMPONENT_ARM_DISARM, 1));
@@ -229,21 +285,19 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         }
         if (tookEffect(r, VehicleState::armed)) {
             progress("armed");
-            if (getFamily() == VehicleFamily.COPTER) {
-                steps.add(new Step("AUTO", () -> setMode("AUTO"), st -> isMode(st, "AUTO")));
+            steps.add(new Step("AUTO", () -> setMode("AUTO"), st -> isMode(st, "AUTO")));
+            if (rules.needsMissionStart()) {
                 steps.add(new Step("MAV_CMD_MISSION_START", () -> comms.command(node, MAV_CMD.MAV_CMD_MISSION_START, 0, 0),
                         st -> st.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE));
-            } else {
-                steps.add(new Step("AUTO", () -> setMode("AUTO"), st -> isMode(st, "AUTO")));
             }
             enter(State.START, config.start());
             return CompletionState.IN_PROGRESS;
         }
-        if (now + config.retryArm().toNanos() > deadline) {
+        if (now + config.retry().toNanos() > deadline) {
             return fail("vehicle " + node.getId() + " refused to arm for " + config.arm().toSeconds() + " s: "
                     + lastArmText(r));
         }
-        nextArm = now + config.retryArm().toNanos();
+        nextAttempt = now + config.retry().toNanos();
         return CompletionState.IN_PROGRESS;
     }
 
@@ -275,26 +329,11 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             progress("item " + Math.min(r, last) + " of " + last + " reached");
         }
         sendKeyedCommands(r);
-        boolean complete = active && s.missionState() == MISSION_STATE.MISSION_STATE_COMPLETE;
-        int lastCommand = items.get(last).command();
-        boolean endsInLanding = lastCommand == MAV_CMD.MAV_CMD_NAV_LAND;
-        // An unlimited loiter never ends by itself: only a condition (/, until, during) ends the mission.
-        boolean endless = lastCommand == MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM;
-        if (endsInLanding && (complete || r >= last)) {
-            if (!s.armed() && s.landedState() != MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR) {
-                return finish();
-            }
-            return CompletionState.IN_PROGRESS;
-        }
-        if (!endless && (complete || r >= last)) {
+        MissionEnd.Verdict verdict = end.judge(s, r, isMode(s, "AUTO"), clock().nanoTime());
+        if (verdict.done()) {
             return finish();
         }
-        if (isMode(s, "AUTO")) {
-            sawAuto = true;
-        } else if (sawAuto) {
-            return fail("vehicle " + node.getId() + " left AUTO: now " + s.modeName());
-        }
-        return CompletionState.IN_PROGRESS;
+        return verdict.error() != null ? fail(verdict.error()) : CompletionState.IN_PROGRESS;
     }
 
     /**
@@ -356,12 +395,19 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         return CompletionState.DONE;
     }
 
-    /** Sends each step's command in turn; true when all were accepted. A refusal fails the mission. */
-    private boolean runSteps() {
+    /**
+     * Sends each step's command in turn; true when all were accepted. A refusal fails the mission,
+     * except that a waitable step refused for now (FAILED, TEMPORARILY_REJECTED) is sent again after
+     * the retry pause, until the state's deadline.
+     */
+    private boolean runSteps(long now) {
         while (true) {
             if (pending == null) {
                 if (steps.isEmpty()) {
                     return true;
+                }
+                if (now < nextAttempt) {
+                    return false;
                 }
                 pending = watch(steps.peek().send().get());
             }
@@ -369,12 +415,22 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             if (r == null) {
                 return false;
             }
-            Step step = steps.poll();
-            if (!tookEffect(r, step.effect())) {
+            Step step = steps.peek();
+            if (tookEffect(r, step.effect())) {
+                steps.poll();
+            } else if (step.waitable() && refusedForNow(r)) {
+                waitFor(step.what() + " " + r.resultName() + Readiness.prearmText(node.state()).map(t -> " (" + t + ")").orElse(""));
+                nextAttempt = now + config.retry().toNanos();
+                return false;
+            } else {
                 failure = refusal(step.what(), r);
                 return false;
             }
         }
+    }
+
+    private static boolean refusedForNow(CommandResult r) {
+        return r.result() == MAV_RESULT.MAV_RESULT_FAILED || r.result() == MAV_RESULT.MAV_RESULT_TEMPORARILY_REJECTED;
     }
 
     private CompletableFuture<CommandResult> setMode(String name) {
@@ -383,15 +439,6 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             return CompletableFuture.completedFuture(new CommandResult(MAV_CMD.MAV_CMD_DO_SET_MODE, MAV_RESULT.MAV_RESULT_UNSUPPORTED, 0));
         }
         return comms.command(node, MAV_CMD.MAV_CMD_DO_SET_MODE, MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED, mode.getAsLong());
-    }
-
-    private String holdMode() {
-        for (String m : new String[] {"LOITER", "HOLD", "POSHOLD"}) {
-            if (getFamily().modeNumber(m).isPresent()) {
-                return m;
-            }
-        }
-        return "GUIDED";
     }
 
     private VehicleFamily getFamily() {

@@ -51,7 +51,7 @@ class MissionScriptSpec extends Specification {
         assert Math.abs(ned[1] - east) < 0.1
     }
 
-    def "report Listing 2: the worked example of C.6.1 (heights AMSL; the first move is relative to home)"() {
+    def "report Listing 2: the worked example of C.6.1 (heights AMSL; the first move is relative to the take-off)"() {
         when: 'the listing, as printed (its execute loop aside: there are no vehicles here)'
         def r = run('''
             homePos = location(40.444233, -7.375234, 820)
@@ -85,14 +85,14 @@ class MissionScriptSpec extends Specification {
         items[0].x() == 404442330 && items[0].y() == -73752340 && items[0].z() == 820f
         items[1].x() == 404442330 && items[1].y() == -73752340 && items[1].z() == 1200f && items[1].param1() == 15f
 
-        and: 'seq 2: 100 m N and 200 m E of home (take-off registers nothing), at 820 + 100 = 920 m'
+        and: 'seq 2: 100 m N and 200 m E of the take-off point (over home; the take-off registers it), at 1200 + 100 = 1300 m'
         near(HOME.displacementTo(items[2].position()), 100, 200)
-        items[2].z() == 920f
+        items[2].z() == 1300f
         items[2].param2() == 50f
 
-        and: 'seq 3: 200 m N and 100 m E of seq 2, 20 m lower (900 m), radius 50, loiter forever'
+        and: 'seq 3: 200 m N and 100 m E of seq 2, 20 m lower (1280 m), radius 50, loiter forever'
         near(items[2].position().displacementTo(items[3].position()), 200, 100)
-        items[3].z() == 900f
+        items[3].z() == 1280f
         items[3].param3() == 50f
 
         and: 'the declared count is the emitted count; no ground-side commands'
@@ -104,7 +104,7 @@ class MissionScriptSpec extends Specification {
                              new MissionItem(1, LAND, GLOBAL_INT, 0, 0, 0, Float.NaN, 404442330, -73752340, 820f, true)]
     }
 
-    def "report Listing 3: surveys of 3000 x 10000 m with passes 500 m apart, from home, NORTH_EAST and SOUTH_EAST"() {
+    def "report Listing 3: surveys of 3000 x 10000 m with passes 500 m apart, from the take-off point, NORTH_EAST and SOUTH_EAST"() {
         when:
         def r = run('''
             homePos = location(40.444233, -7.375234, 820)
@@ -131,12 +131,12 @@ class MissionScriptSpec extends Specification {
         variable('surveyNorth').missionPoints() == 44
         north*.seq() == (0..43).toList()
 
-        and: 'the first leg is 3025 m north (south) of home, the last lane 20 x 500 m east, and the survey ends at home'
+        and: 'the first leg is 3025 m north (south) of the take-off point over home, the last lane 20 x 500 m east, and the survey ends over home at the take-off height'
         near(HOME.displacementTo(north[2].position()), 3025, 0)
         near(HOME.displacementTo(south[2].position()), -3025, 0)
         Math.abs(HOME.displacementTo(north[42].position())[1] - 10000) < 10
         north[43].x() == 404442330 && north[43].y() == -73752340
-        north.drop(2).every { it.z() == 820f && it.param2() == 25f }
+        north.drop(2).every { it.z() == 1200f && it.param2() == 25f }
     }
 
     def "the words come with the MAVLink language: 'dolphin check' accepts them, a platform without it does not"() {
@@ -146,7 +146,7 @@ class MissionScriptSpec extends Specification {
             offset = moveDistance { north 10; east 20 }
             p = move(base, offset)
             q = move(base) { down(-5) }
-            m = mission { home base; goPos p; goPos q; surveyArea 100, 100 }
+            m = mission { home base; allowBelowHome true; goPos p; goPos q; surveyArea 100, 100 }
         '''
         def bare = new ScriptHarness(0)
 
@@ -209,7 +209,7 @@ class MissionScriptSpec extends Specification {
             nothing = moveDistance { }
             c = move(a, d)
             e = move a, { north 100; east(-50); down(-20) }
-            inMission = mission { home a; goPos move(a) { north 10 } }
+            inMission = mission { home a; goPos move(a) { north 10; down(-10) } }
         ''')
         Position a = variable('a')
 
@@ -270,7 +270,7 @@ class MissionScriptSpec extends Specification {
         !m1.executor.is(m1.executor)
     }
 
-    def "every command of C.6 rows 1 to 30 is a builder method, has its forms for errors and is documented"() {
+    def "every command of C.6 rows 1 to 30, and allowBelowHome, is a builder method, has its forms for errors and is documented"() {
         given:
         Set<String> methods = MissionBuilder.declaredMethods
                 .findAll { Modifier.isPublic(it.modifiers) && !it.synthetic && !it.name.startsWith('\$') }*.name
@@ -283,7 +283,7 @@ class MissionScriptSpec extends Specification {
                     'moveAndLoiterTurns', 'moveAndLoiterTime', 'moveAndLoiterFromHome', 'moveAndLoiterTurnsFromHome',
                     'moveAndLoiterTimeFromHome', 'loiterPos', 'loiterTurns', 'loiterTime', 'landingPoint', 'returnHome',
                     'returnHomeAndLoiter', 'returnHomeAndLand', 'speed', 'altitude', 'delay', 'surveyArea', 'capturePhoto',
-                    'captureSeveralPhotos', 'captureUntilStop', 'stopCapturing', 'jumpToItem'].toSet()
+                    'captureSeveralPhotos', 'captureUntilStop', 'stopCapturing', 'jumpToItem', 'allowBelowHome'].toSet()
         methods.every { doc.contains("`${it}(") }
     }
 
@@ -324,7 +324,10 @@ class MissionScriptSpec extends Specification {
         'land mode'                   | "m = mission {\n  landingPoint 41, -8, 0, 0, 5 // <<\n}"                                        || "landingPoint: the land mode must be 0 (disabled), 1 (opportunistic) or 2 (required), got 5"
         'survey spacing'              | "m = mission {\n  home 41, -8\n  surveyArea 1000, 500, 0 // <<\n}"                              || "surveyArea: the spacing must be positive, got 0"
         'survey too large'            | "m = mission {\n  home 41, -8\n  surveyArea 1000, 100000, 1 // <<\n}"                           || "surveyArea: a width of 100000.0 m with passes 1.0 m apart makes more than 32767 passes (2 items each); a MAVLink mission holds at most 65535 items"
-        'relative without a position' | "m = mission {\n  takeOff location(41, -8, 100)\n  move 100, 0 // <<\n}"                         || "move: there is no position to start from yet: name the mission's home ('home lat, lon, hae') or go to a position (goPos, ...) before it"
+        'relative without a position' | "m = mission {\n  loiterPos location(41, -8, 100)\n  move 100, 0 // <<\n}"                       || "move: there is no position to start from yet: name the mission's home ('home lat, lon, hae') or go to a position (goPos, ...) before it"
+        'below home + 2 m'            | "m = mission {\n  home 41, -8, 100\n  takeOff location(41, -8, 120)\n  move 50, 0, -19 // <<\n}" || "mission MissionPlan_line1: item 2 (move, NAV_WAYPOINT) is 1.0 m above home (home at 100.0 m): lower than the 2 m clearance, into the ground or nearly; only landings go lower. Raise it, or write 'allowBelowHome true' in the mission if this is intended"
+        'a take-off into the ground'  | "m = mission {\n  home 41, -8, 100\n  takeOff location(41, -8, 100) // <<\n  move 50, 0, 20\n}" || "mission MissionPlan_line1: item 1 (takeOff, NAV_TAKEOFF) is 0.0 m above home (home at 100.0 m): lower than the 2 m clearance, into the ground or nearly; only landings go lower. Raise it, or write 'allowBelowHome true' in the mission if this is intended"
+        'returnHome with no height'   | "m = mission {\n  home 41, -8, 100\n  returnHome() // <<\n}"                                     || "returnHome: there is no height to return at yet: the mission goes nowhere before it; go somewhere first (takeOff, goPos, move, ...), or use returnHomeAndLand()"
         'fromHome without home'       | "m = mission {\n  goPos 41, -8, 100\n  moveFromHome 100, 0, 0 // <<\n}"                          || "moveFromHome: the mission has no home yet: write 'home lat, lon, hae' before it"
         'returnHome without home'     | "m = mission {\n  goPos 41, -8, 100\n  returnHomeAndLand() // <<\n}"                             || "returnHomeAndLand: the mission has no home yet: write 'home lat, lon, hae' before it"
         'two homes'                   | "m = mission {\n  home 41, -8, 10\n  home 42, -8 // <<\n}"                                      || "home: this mission already has a home, (41.000000°, -8.000000°, 10.000); a mission has one home"

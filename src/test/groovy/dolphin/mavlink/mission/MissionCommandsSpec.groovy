@@ -10,6 +10,8 @@ import spock.lang.Specification
  * seq. Expected values are the reference's (C.6), changed where design §5 and F-8/F-10 say so
  * (speed, delay, camera, altitude), written here as numbers, not taken from the code. Relative
  * positions are checked with Position.displacementTo from the reference position back to the item.
+ * The reference's test positions lie below the report's home, so these missions allow it
+ * ({@code allowBelowHome true}); HeightCheckSpec tests the check itself.
  */
 class MissionCommandsSpec extends Specification {
 
@@ -54,7 +56,7 @@ class MissionCommandsSpec extends Specification {
     /** Row sources are compiled as closures, with A, B and HOME in scope. */
     static final GroovyShell SHELL = new GroovyShell(new Binding([A: A, B: B, HOME: HOME]))
 
-    /** Every row's mission: home HOME (no item of its own), goPos A (seq 1), then the row's command from seq 2. */
+    /** Every row's mission: home HOME (no item of its own), goPos A (seq 1), then the row's command from seq 2; below home allowed. */
     static Mission withPrefix(String source) {
         withPrefix((Closure) SHELL.evaluate("return { -> ${source} }"))
     }
@@ -62,6 +64,7 @@ class MissionCommandsSpec extends Specification {
     static Mission withPrefix(Closure row) {
         MissionDsl.mission {
             home HOME
+            allowBelowHome true
             goPos 41.185781, -8.70606486, 100
             Closure c = (Closure) row.clone()
             c.delegate = delegate
@@ -148,9 +151,10 @@ class MissionCommandsSpec extends Specification {
         'landingPoint B, 90'                                       | 2   || LAND                | GLOBAL_INT | 0  | 0   | 0  | 90  | B7                   | 150
         'landingPoint B, 90, 1'                                    | 2   || LAND                | GLOBAL_INT | 0  | 1   | 0  | 90  | B7                   | 150
         // returnHome* (rows 18 to 20)
-        'returnHome()'                                             | 2   || WAYPOINT            | GLOBAL_INT | 0  | 50  | 0  | NaN | HOME7                | 820
-        'returnHomeAndLoiter()'                                    | 2   || LOITER_UNLIM        | GLOBAL_INT | 0  | 0   | 15 | 0   | HOME7                | 820
-        'returnHomeAndLoiter 40'                                   | 2   || LOITER_UNLIM        | GLOBAL_INT | 0  | 0   | 40 | 0   | HOME7                | 820
+        // returnHome and returnHomeAndLoiter: over home at the last registered height (A's, 100 m)
+        'returnHome()'                                             | 2   || WAYPOINT            | GLOBAL_INT | 0  | 50  | 0  | NaN | HOME7                | 100
+        'returnHomeAndLoiter()'                                    | 2   || LOITER_UNLIM        | GLOBAL_INT | 0  | 0   | 15 | 0   | HOME7                | 100
+        'returnHomeAndLoiter 40'                                   | 2   || LOITER_UNLIM        | GLOBAL_INT | 0  | 0   | 40 | 0   | HOME7                | 100
         'returnHomeAndLand()'                                      | 2   || LAND                | GLOBAL_INT | 0  | 0   | 0  | NaN | HOME7                | 820
         'returnHomeAndLand 90'                                     | 2   || LAND                | GLOBAL_INT | 0  | 0   | 0  | 90  | HOME7                | 820
         'returnHomeAndLand 90, 2'                                  | 2   || LAND                | GLOBAL_INT | 0  | 2   | 0  | 90  | HOME7                | 820
@@ -205,6 +209,7 @@ class MissionCommandsSpec extends Specification {
         when:
         Mission m = MissionDsl.mission {
             home.call(delegate)
+            allowBelowHome true
             goPos 41.185781, -8.70606486, 100
         }
         List<MissionItem> items = m.items(null)
@@ -258,6 +263,7 @@ class MissionCommandsSpec extends Specification {
         given:
         Mission m = MissionDsl.mission {
             home HOME
+            allowBelowHome true
             takeOff B
             move 100, 0, 10
             jumpToItem 2, 3
@@ -277,6 +283,7 @@ class MissionCommandsSpec extends Specification {
         given:
         Closure row = (Closure) SHELL.evaluate("return { -> ${before} }")
         Mission m = MissionDsl.mission {
+            allowBelowHome true
             row.delegate = delegate
             row.resolveStrategy = Closure.DELEGATE_FIRST
             row.call()
@@ -295,14 +302,14 @@ class MissionCommandsSpec extends Specification {
         where:
         before                                                                              || reference
         'home HOME'                                                                           || 0
-        'home HOME; takeOff B'                                                                || 0
+        'home HOME; takeOff B'                                                                || 1
         'home HOME; loiterPos B'                                                              || 0
         'home HOME; loiterTurns 41.184742, -8.704601, 150; loiterTime 41.184742, -8.704601, 150, 5'|| 0
         'home HOME; landingPoint B'                                                           || 0
         'goPos B'                                                                             || 0
         'home HOME; goPos B'                                                                  || 1
         'goPos B; home HOME'                                                                  || 1
-        'home HOME; goPos B; takeOff A; loiterPos A; landingPoint A'                          || 1
+        'home HOME; goPos B; takeOff A; loiterPos A; landingPoint A'                          || 2
         'home HOME; goPos B; speed 5; delay 3; capturePhoto(); stopCapturing()'               || 1
         'home HOME; goPos B; move 10, 20, 5'                                                  || 2
         'home HOME; goPos B; moveFromHome 10, 20, 5'                                          || 2
@@ -320,6 +327,7 @@ class MissionCommandsSpec extends Specification {
         given:
         Mission m = MissionDsl.mission {
             home HOME
+            allowBelowHome true
             goPos B
             altitude 400
             move 0, 0, 10

@@ -81,9 +81,9 @@ class MissionExecutorSpec extends Specification {
         !fleet.vehicle(1).armed()
     }
 
-    def "arming refused past the deadline is an ERROR with the vehicle's PreArm text, seen by watch"() {
-        given:
-        h.comms.missionExecutorConfig = MissionExecutorConfig.DEFAULT.withArm(Duration.ofSeconds(10))
+    def "a vehicle that never becomes ready: waited for, then an ERROR quoting its PreArm text, seen by watch"() {
+        given: 'a vehicle with no position estimate for 10 minutes, and a 40 s readiness deadline'
+        h.comms.missionExecutorConfig = MissionExecutorConfig.DEFAULT.withPrepare(Duration.ofSeconds(40))
         h.fleet(1, VehicleKind.COPTER, 1, SimOptions.DEFAULT.withWarmup(600))
 
         when:
@@ -92,9 +92,32 @@ class MissionExecutorSpec extends Specification {
             execute v: watch(hop) onError { msg -> message "caught: ${msg}"; ignore() }
         ''')
 
+        then: 'it said what it waited for, uploaded nothing, and ended with the vehicle\'s own words'
+        result.outcome == ScriptResult.Outcome.COMPLETED
+        messages.any { it.startsWith('waiting for vehicle 1: ') }
+        !messages.any { it.contains('uploading') }
+        messages.contains('caught: mission hop on vehicle 1: vehicle 1 was not ready within 40 s: PreArm: Need Position Estimate')
+    }
+
+    def "a vehicle started with the script: the mission waits for its position, then flies"() {
+        given: 'a copter with no position estimate for its first 30 s, as ArduPilot after boot'
+        def fleet = h.fleet(1, VehicleKind.COPTER, 1, SimOptions.DEFAULT.withWarmup(30))
+
+        when:
+        def result = run(HOP + '''
+            home = location(40.444233, -7.375234, 820)
+            hopHome = mission { name 'hop'; home home; takeOff location(40.444233, -7.375234, 840); landingPoint home }
+            v = pick { timeout 10 }
+            r = execute v: hopHome
+            message "result: ${r}"
+        ''')
+
         then:
         result.outcome == ScriptResult.Outcome.COMPLETED
-        messages.any { it.startsWith('caught: mission hop on vehicle 1: vehicle 1 refused to arm for 10 s: PreArm: Need Position Estimate') }
+        messages.contains('result: DONE')
+        messages.any { it.startsWith('waiting for vehicle 1: ') }
+        messages.any { it ==~ /mission hop on vehicle 1: vehicle ready after \d+ s/ }
+        !fleet.vehicle(1).armed()
     }
 
     def "one mission object flies on two vehicles at once (E-3)"() {
