@@ -10,17 +10,21 @@ import dolphin.mavlink.MAVLinkConfig;
 import dolphin.mavlink.MAVLinkPlatform;
 import dolphin.mavlink.codec.SigningKey;
 import dolphin.mavlink.link.LinkUrl;
+import dolphin.mavlink.mission.MissionTransferConfig;
+import dolphin.sim.FaultModel;
 import dolphin.sim.SimFleet;
 import dolphin.sim.VehicleKind;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.net.InetSocketAddress;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
@@ -55,6 +59,9 @@ final class RunCommand implements Callable<Integer> {
             description = "With --sim: run time X times faster than real time (default: ${DEFAULT-VALUE}).")
     private double speedup;
 
+    @Mixin
+    LinkFaultOptions faults;
+
     @Option(names = "--tlog", paramLabel = "FILE", description = "Write every MAVLink frame in and out to a .tlog file.")
     private Path tlog;
 
@@ -70,6 +77,21 @@ final class RunCommand implements Callable<Integer> {
             description = "Relay the vehicles' traffic to a viewer (QGroundControl, MAVProxy) and its commands back, "
                     + "e.g. udpout:127.0.0.1:14550. Repeatable.")
     private List<LinkUrl> forwards = new ArrayList<>();
+
+    @Option(names = "--command-attempts", paramLabel = "N", defaultValue = "" + MAVLinkConfig.DEFAULT_COMMAND_ATTEMPTS,
+            description = "Sends of a command, one second apart, before it fails without COMMAND_ACK; more for a lossy "
+                    + "radio link (default: ${DEFAULT-VALUE}).")
+    private int commandAttempts;
+
+    @Option(names = "--transfer-timeout", paramLabel = "MS", defaultValue = "" + MissionTransferConfig.DEFAULT_TIMEOUT_MILLIS,
+            description = "Mission uploads and downloads: how long to wait for the vehicle's next message before sending "
+                    + "again, in milliseconds (default: ${DEFAULT-VALUE}).")
+    private long transferTimeoutMillis;
+
+    @Option(names = "--transfer-tries", paramLabel = "N", defaultValue = "" + MissionTransferConfig.DEFAULT_TRIES,
+            description = "Mission uploads and downloads: sends of one message without an answer before the transfer "
+                    + "fails (default: ${DEFAULT-VALUE}).")
+    private int transferTries;
 
     /** How the vehicles' status is shown. */
     enum StatusMode { auto, live, plain }
@@ -87,14 +109,16 @@ final class RunCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         validate();
+        MAVLinkConfig config = mavlinkConfig();
+        MissionTransferConfig transfers = transferConfig();
+        FaultModel faultModel = faultModel();
         String source = Main.readScript("run", script, err);
         if (source == null) {
             return Main.USAGE;
         }
         Clock clock = sim > 0 ? new SystemClock(speedup) : SystemClock.REAL;
-        MAVLinkConfig config = MAVLinkConfig.of(links.isEmpty() ? defaultLinks() : links)
-                .withSysid(sysid).withSigningKey(key).withTlog(tlog);
         MAVLinkCommunications comms = new MAVLinkCommunications(config, clock);
+        comms.setMissionTransferConfig(transfers);
         Forwarder forwarder = new Forwarder(comms, forwards);
         try {
             comms.start();
@@ -107,7 +131,7 @@ final class RunCommand implements Callable<Integer> {
         SimFleet fleet = null;
         try (comms; forwarder) {
             if (sim > 0) {
-                fleet = startFleet(comms, clock);
+                fleet = startFleet(comms, clock, faultModel);
             }
             Engine engine = new Engine(new MAVLinkPlatform(comms), clock);
             Screen screen = screen(out, clock);
@@ -156,21 +180,55 @@ final class RunCommand implements Callable<Integer> {
         }
     }
 
+    /** The ground station's ids, links and command retries from the options. */
+    MAVLinkConfig mavlinkConfig() {
+        if (commandAttempts < 1) {
+            throw new ParameterException(spec.commandLine(), "--command-attempts must be at least 1, got " + commandAttempts);
+        }
+        return MAVLinkConfig.of(links.isEmpty() ? defaultLinks() : links)
+                .withSysid(sysid).withSigningKey(key).withTlog(tlog).withCommandAttempts(commandAttempts);
+    }
+
+    /** The timeout and tries of every mission transfer, from the options. */
+    MissionTransferConfig transferConfig() {
+        if (transferTimeoutMillis <= 0) {
+            throw new ParameterException(spec.commandLine(),
+                    "--transfer-timeout must be a positive number of milliseconds, got " + transferTimeoutMillis);
+        }
+        if (transferTries < 1) {
+            throw new ParameterException(spec.commandLine(), "--transfer-tries must be at least 1, got " + transferTries);
+        }
+        return new MissionTransferConfig(Duration.ofMillis(transferTimeoutMillis), transferTries);
+    }
+
+    /** The simulated link's faults; refused without --sim, where there is no simulated link to apply them to. */
+    FaultModel faultModel() {
+        List<String> given = faults.given();
+        if (sim == 0 && !given.isEmpty()) {
+            throw new ParameterException(spec.commandLine(),
+                    given.get(0) + " needs --sim: link faults are simulated, between the simulated vehicles and this ground station");
+        }
+        return faults.model();
+    }
+
     /** The simulated fleet sends to every listening link, split over them in blocks. */
-    private SimFleet startFleet(MAVLinkCommunications comms, Clock clock) throws IOException {
+    private SimFleet startFleet(MAVLinkCommunications comms, Clock clock, FaultModel faultModel) throws IOException {
         List<InetSocketAddress> ports = comms.links().stream().filter(l -> l.url().kind() == LinkUrl.Kind.UDPIN)
                 .map(l -> new InetSocketAddress("127.0.0.1", l.localPort())).toList();
         if (ports.isEmpty()) {
             throw new ParameterException(spec.commandLine(), "--sim needs a udpin link for the simulated vehicles to send to");
         }
-        SimFleet.Config config;
+        SimFleet fleet = new SimFleet(fleetConfig(ports, faultModel), clock);
+        fleet.start();
+        return fleet;
+    }
+
+    /** The in-process fleet the options describe, sending to these ground station ports. */
+    SimFleet.Config fleetConfig(List<InetSocketAddress> ports, FaultModel faultModel) {
         try {
-            config = SimFleet.Config.of(sim, simType, ports).withSigningKey(key);
+            return SimFleet.Config.of(sim, simType, ports).withSigningKey(key).withFaults(faultModel);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), "--sim " + sim + ": " + e.getMessage());
         }
-        SimFleet fleet = new SimFleet(config, clock);
-        fleet.start();
-        return fleet;
     }
 }

@@ -15,6 +15,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
@@ -66,26 +67,14 @@ final class SimCommand implements Callable<Integer> {
             description = "Sign frames and accept only signed ones: a file with 64 hex digits or a passphrase.")
     private SigningKey key;
 
+    @Mixin
+    LinkFaultOptions faults;
+
     @Override
     public Integer call() throws Exception {
-        if (count < 1) {
-            throw new ParameterException(spec.commandLine(), "--count must be at least 1, got " + count);
-        }
         Main.checkSpeedup(spec, speedup);
-        List<InetSocketAddress> gcs = new ArrayList<>();
-        for (LinkUrl url : links.isEmpty() ? List.of(LinkUrl.parse("udpout:127.0.0.1:14559")) : links) {
-            if (url.kind() != LinkUrl.Kind.UDPOUT) {
-                throw new ParameterException(spec.commandLine(), "--link for sim must be udpout:HOST:PORT, got " + url);
-            }
-            gcs.add(url.address());
-        }
-        SimFleet.Config config;
-        try {
-            config = new SimFleet.Config(count, type, home != null ? home : SimFleet.Config.DEFAULT_HOME, SimFleet.Config.DEFAULT_SPACING,
-                    firstSysid, gcs, SimOptions.DEFAULT.withWarmup(warmup).withDrain(drain), key, FaultModel.NONE);
-        } catch (IllegalArgumentException e) {
-            throw new ParameterException(spec.commandLine(), e.getMessage());
-        }
+        SimFleet.Config config = fleetConfig();
+        List<InetSocketAddress> gcs = config.gcs();
         SystemClock clock = new SystemClock(speedup);
         PrintWriter out = spec.commandLine().getOut();
         try (SimFleet fleet = new SimFleet(config, clock)) {
@@ -102,5 +91,26 @@ final class SimCommand implements Callable<Integer> {
             }
         }
         return 0;
+    }
+
+    /** The fleet the options describe; a bad value is a usage error. */
+    SimFleet.Config fleetConfig() {
+        if (count < 1) {
+            throw new ParameterException(spec.commandLine(), "--count must be at least 1, got " + count);
+        }
+        FaultModel faultModel = faults.model();
+        List<InetSocketAddress> gcs = new ArrayList<>();
+        for (LinkUrl url : links.isEmpty() ? List.of(LinkUrl.parse("udpout:127.0.0.1:14559")) : links) {
+            if (url.kind() != LinkUrl.Kind.UDPOUT) {
+                throw new ParameterException(spec.commandLine(), "--link for sim must be udpout:HOST:PORT, got " + url);
+            }
+            gcs.add(url.address());
+        }
+        try {
+            return new SimFleet.Config(count, type, home != null ? home : SimFleet.Config.DEFAULT_HOME, SimFleet.Config.DEFAULT_SPACING,
+                    firstSysid, gcs, SimOptions.DEFAULT.withWarmup(warmup).withDrain(drain), key, faultModel);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
     }
 }

@@ -21,6 +21,7 @@ public record MAVLinkConfig(int sysid, int compid, List<LinkUrl> links, SigningK
     public static final int DEFAULT_SYSID = 208;
     public static final int DEFAULT_COMPID = 190;
     public static final String DEFAULT_LINK = "udpin:0.0.0.0:14559";
+    public static final int DEFAULT_COMMAND_ATTEMPTS = 5;
 
     public MAVLinkConfig {
         links = List.copyOf(links);
@@ -43,7 +44,7 @@ public record MAVLinkConfig(int sysid, int compid, List<LinkUrl> links, SigningK
     /** The defaults: sysid 208, compid 190, telemetry at 4 Hz, 1 s heartbeats, commands tried 5 times 1 s apart. */
     public static MAVLinkConfig of(List<LinkUrl> links) {
         return new MAVLinkConfig(DEFAULT_SYSID, DEFAULT_COMPID, links, null, Set.of(), 4, Duration.ofSeconds(1),
-                Duration.ofMillis(1000), 5, null);
+                Duration.ofMillis(1000), DEFAULT_COMMAND_ATTEMPTS, null);
     }
 
     public MAVLinkConfig withSysid(int id) {

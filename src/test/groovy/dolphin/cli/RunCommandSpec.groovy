@@ -1,5 +1,9 @@
 package dolphin.cli
 
+import dolphin.mavlink.mission.MissionTransferConfig
+import dolphin.sim.FaultModel
+import java.time.Duration
+import picocli.CommandLine
 import spock.lang.Specification
 import spock.lang.Timeout
 
@@ -15,6 +19,13 @@ class RunCommandSpec extends Specification {
         [code: code, out: out.toString(), err: err.toString()]
     }
 
+    /** The command with its options parsed, not run: no links, no fleet. */
+    static RunCommand parsed(String... args) {
+        def command = new RunCommand()
+        new CommandLine(command).parseArgs(args)
+        command
+    }
+
     static int freePort() {
         new DatagramSocket(0).withCloseable { it.localPort }
     }
@@ -28,6 +39,55 @@ class RunCommandSpec extends Specification {
         r.out =~ /vehicle \{ 1 \}: battery 100 %, position \(40\.444233°, -7\.375234°, 820\.000\)/
         r.out =~ /vehicle \{ 2 \}: battery 100 %, position \(40\.444233°, -7\.375116°, 820\.000\)/
         r.out.contains("${EXAMPLE}: completed")
+    }
+
+    def "the example runs over a lossy simulated link"() {
+        when:
+        def r = dolphin('run', EXAMPLE, '--sim', '2', '--speedup', '5', '--loss', '0.1', '--fault-seed', '3')
+
+        then:
+        r.code == 0
+        r.out.contains('vehicle { 1 }: battery 100 %')
+        r.out.contains('vehicle { 2 }: battery 100 %')
+        r.out.contains("${EXAMPLE}: completed")
+    }
+
+    def "with --sim the link-fault options make the in-process fleet's fault model"() {
+        given:
+        def command = parsed(EXAMPLE, '--sim', '2', '--loss', '0.1', '--duplicate', '0.05', '--delay', '200', '--reorder', '50',
+                '--fault-seed', '3')
+        def port = new InetSocketAddress('127.0.0.1', 14560)
+
+        when:
+        def config = command.fleetConfig([port], command.faultModel())
+
+        then:
+        config.faults() == new FaultModel(0.1, 0.05, 0.2, 0.05, 3)
+        config.count() == 2
+        config.gcs() == [port]
+    }
+
+    def "without link-fault options the in-process fleet's link is perfect"() {
+        expect:
+        parsed(EXAMPLE, '--sim', '1').faultModel() == FaultModel.NONE
+    }
+
+    def "the retry options set the command attempts and the mission transfers' timeout and tries"() {
+        when:
+        def command = parsed(EXAMPLE, '--command-attempts', '9', '--transfer-timeout', '2500', '--transfer-tries', '7')
+
+        then:
+        command.mavlinkConfig().commandAttempts() == 9
+        command.transferConfig() == new MissionTransferConfig(Duration.ofMillis(2500), 7)
+    }
+
+    def "without retry options commands and transfers keep their defaults"() {
+        when:
+        def command = parsed(EXAMPLE)
+
+        then:
+        command.mavlinkConfig().commandAttempts() == 5
+        command.transferConfig() == new MissionTransferConfig(Duration.ofMillis(1500), 5)
     }
 
     def "dolphin run talks to vehicles that dolphin sim started separately"() {
@@ -122,5 +182,16 @@ class RunCommandSpec extends Specification {
         ['sim', '--count', '300']                                  | '300 vehicles from system id 1 need at least 2 links'
         ['sim', '--link', 'udpin:0.0.0.0:14559']                   | '--link for sim must be udpout:HOST:PORT'
         ['sim', '--home', '95,0,0']                                | 'latitude must be in [-90, 90]'
+        ['run', EXAMPLE, '--loss', '0.1']                          | '--loss needs --sim: link faults are simulated'
+        ['run', EXAMPLE, '--delay', '100']                         | '--delay needs --sim'
+        ['run', EXAMPLE, '--fault-seed', '3']                      | '--fault-seed needs --sim'
+        ['run', EXAMPLE, '--sim', '1', '--loss', '1.5']            | '--loss must be a probability from 0 to 1, got 1.5'
+        ['run', EXAMPLE, '--sim', '1', '--reorder', '-20']         | '--reorder must be a number of milliseconds, 0 or more, got -20'
+        ['run', EXAMPLE, '--command-attempts', '0']                | '--command-attempts must be at least 1, got 0'
+        ['run', EXAMPLE, '--command-attempts', 'many']             | "Invalid value for option '--command-attempts': 'many' is not an int"
+        ['run', EXAMPLE, '--transfer-timeout', '0']                | '--transfer-timeout must be a positive number of milliseconds, got 0'
+        ['run', EXAMPLE, '--transfer-timeout', '-1500']            | '--transfer-timeout must be a positive number of milliseconds, got -1500'
+        ['run', EXAMPLE, '--transfer-timeout', '1.5s']             | "Invalid value for option '--transfer-timeout': '1.5s' is not a long"
+        ['run', EXAMPLE, '--transfer-tries', '0']                  | '--transfer-tries must be at least 1, got 0'
     }
 }

@@ -11,7 +11,10 @@ import java.time.Duration;
  */
 public record MissionTransferConfig(Duration timeout, int tries) {
 
-    public static final MissionTransferConfig DEFAULT = new MissionTransferConfig(Duration.ofMillis(1500), 5);
+    public static final long DEFAULT_TIMEOUT_MILLIS = 1500;
+    public static final int DEFAULT_TRIES = 5;
+    public static final MissionTransferConfig DEFAULT =
+            new MissionTransferConfig(Duration.ofMillis(DEFAULT_TIMEOUT_MILLIS), DEFAULT_TRIES);
 
     public MissionTransferConfig {
         if (timeout == null || timeout.isNegative() || timeout.isZero()) {
