@@ -3,6 +3,7 @@ package dolphin.cli;
 import dolphin.core.ManualClock;
 import dolphin.dsl.Engine;
 import dolphin.dsl.EngineListener;
+import dolphin.dsl.Halt;
 import dolphin.dsl.ScriptResult;
 import dolphin.dsl.ScriptRun;
 import dolphin.mavlink.MAVLinkLanguage;
@@ -19,7 +20,8 @@ import java.util.Set;
  * Runs a script without vehicles, on a virtual clock that jumps over waits, and records every
  * Mission its {@code mission { }} blocks build: {@code dolphin mission} shows them, {@code dolphin
  * check} uses it to find the mistakes that only building a mission reveals (a waypoint below home).
- * With no vehicles the script ends at its first {@code pick} (it halts there).
+ * With no vehicles the script ends at its first {@code pick} (it halts there), and at its first
+ * {@code ask}, which nobody answers.
  *
  * @param result how the script ended; null when it was stopped at the time limit
  * @param missions the missions built, in order, each once
@@ -32,6 +34,10 @@ record DryRun(ScriptResult result, List<Mission> missions, List<String> messages
         List<Mission> missions = Collections.synchronizedList(new ArrayList<>());
         Engine engine = new Engine(new DryRunPlatform(), ManualClock.autoAdvancing());
         engine.addExtension(new MAVLinkLanguage());
+        // Nobody answers a dry run: it stops at its first question, as at its first pick.
+        engine.setInput(prompt -> {
+            throw new Halt("ask: a dry run has nobody to answer '" + prompt + "'");
+        });
         engine.addExtension(new MissionRecorder(m -> {
             synchronized (seen) {
                 if (seen.add(m)) {

@@ -102,7 +102,7 @@ final class MissionEnd {
         if (landing) {
             landingSeen |= complete || reached >= lastNav || (missionActive && s.missionSeq() >= lastNav);
             if (landingSeen) {
-                return landed(s, now);
+                return landed(s, reached, auto, now);
             }
         } else if (!endless && (complete || reached >= last)) {
             return Verdict.DONE;
@@ -113,12 +113,17 @@ final class MissionEnd {
         return modeCheck(s, reached, auto, now);
     }
 
-    private Verdict landed(VehicleState s, long now) {
+    /** The landing item was current: done on the ground and disarmed; someone else's mode or no progress is an error. */
+    private Verdict landed(VehicleState s, int reached, boolean auto, long now) {
         int landed = s.landedState();
         boolean down = landed != MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR && landed != MAV_LANDED_STATE.MAV_LANDED_STATE_TAKEOFF
                 && landed != MAV_LANDED_STATE.MAV_LANDED_STATE_LANDING;
         if (!s.armed() && down) {
             return Verdict.DONE;
+        }
+        Verdict mode = modeCheck(s, reached, auto, now);
+        if (mode.error() != null) {
+            return mode;
         }
         Position p = s.position();
         if (progressFrom == null || (p != null && p.distanceTo(progressFrom) >= PROGRESS_METRES)) {

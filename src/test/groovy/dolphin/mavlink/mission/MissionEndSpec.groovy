@@ -99,6 +99,19 @@ class MissionEndSpec extends Specification {
         v.error == 'vehicle 1 did not finish item 4 of 4 (NAV_LAND): no progress for 60 s: armed, AUTO, landed state LANDING, 10.2 m above home'
     }
 
+    def "copter: someone else's mode during the landing is an error after the grace period, not a stalled landing"() {
+        given:
+        def end = end(VehicleFamily.COPTER, MAV_CMD.MAV_CMD_NAV_LAND)
+        def c = { Map m -> state(VehicleFamily.COPTER, [armed: true, seq: 4, up: 20] + m) }
+        end.judge(c(mode: 'AUTO'), 3, true, 1 * S)
+
+        expect:
+        end.judge(c(mode: 'LOITER'), 3, false, 2 * S).running()
+        end.judge(c(mode: 'LOITER'), 3, false, 5 * S + 1).error ==
+                'vehicle 1 left AUTO for LOITER during item 4 of 4 (NAV_LAND), before the mission ended: armed, LOITER,' +
+                ' landed state IN_AIR, 20.0 m above home'
+    }
+
     def "plane: RTL in the same tick as, and before, the last MISSION_ITEM_REACHED is the plane's own end: done"() {
         given:
         def end = end(VehicleFamily.PLANE, MAV_CMD.MAV_CMD_NAV_WAYPOINT)
