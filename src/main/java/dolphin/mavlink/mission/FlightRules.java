@@ -21,11 +21,15 @@ public interface FlightRules {
         };
     }
 
-    /** The mode to arm in, or empty to arm in the mode the vehicle is in. */
-    Optional<String> armMode();
+    /** The mode to arm in, or empty (the default) to arm in the mode the vehicle is in. */
+    default Optional<String> armMode() {
+        return Optional.empty();
+    }
 
-    /** Whether AUTO must be followed by MAV_CMD_MISSION_START before the vehicle moves. */
-    boolean needsMissionStart();
+    /** Whether AUTO must be followed by MAV_CMD_MISSION_START before the vehicle moves; by default AUTO starts it. */
+    default boolean needsMissionStart() {
+        return false;
+    }
 
     /** The mode that holds the vehicle where it is, e.g. before its mission is replaced. */
     String holdMode();
@@ -69,16 +73,6 @@ public interface FlightRules {
         RULES;
 
         @Override
-        public Optional<String> armMode() {
-            return Optional.empty();
-        }
-
-        @Override
-        public boolean needsMissionStart() {
-            return false;
-        }
-
-        @Override
         public String holdMode() {
             return "LOITER";
         }
@@ -92,16 +86,6 @@ public interface FlightRules {
     /** Rover: armed in its current mode, started by AUTO, stops (HOLD) at the end; it never lands. */
     enum Rover implements FlightRules {
         RULES;
-
-        @Override
-        public Optional<String> armMode() {
-            return Optional.empty();
-        }
-
-        @Override
-        public boolean needsMissionStart() {
-            return false;
-        }
 
         @Override
         public String holdMode() {
