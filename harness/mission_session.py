@@ -16,8 +16,10 @@
        (asked again after 1 s), MISSION_ITEM_INT, and the final MISSION_ACK; compares it with the
        upload field by field (seq 0 excepted, which the vehicle replaces with home);
     4. starts it as a copter needs: DO_SET_MODE GUIDED, arm, MAV_CMD_MISSION_START (0, 0);
-    5. waits until MISSION_CURRENT reports mission_state COMPLETE and a heartbeat shows the vehicle
-       disarmed.
+    5. waits until the landing is over as ArduCopter ends it: the NAV_LAND current, then a heartbeat
+       showing the vehicle disarmed after MISSION_CURRENT went back to the first item (a copter
+       disarmed in AUTO starts its mission over; the landing is never reached nor the mission
+       COMPLETE).
   Prints one JSON document with what it saw; a step that times out is listed in "errors".
 """
 
@@ -164,13 +166,14 @@ def fly(gs, sysid, report):
         results[name] = gs.command([sysid], command, params, 10, name)[sysid]["result"]
 
     def finished():
-        current = gs.messages(sysid, start, ["MISSION_CURRENT"])
+        seqs = [m.seq for m in gs.messages(sysid, start, ["MISSION_CURRENT"])]
         hbs = gs.messages(sysid, start, ["HEARTBEAT"])
-        complete = [i for i, m in enumerate(current) if m.mission_state == mavlink.MISSION_STATE_COMPLETE]
+        landing = seqs.index(5) if 5 in seqs else None
+        restarted = landing is not None and 1 in seqs[landing:]
         disarmed = hbs and not hbs[-1].base_mode & mavlink.MAV_MODE_FLAG_SAFETY_ARMED
-        return bool(complete) and bool(disarmed)
+        return restarted and bool(disarmed)
 
-    gs.wait_until(finished, 45, "MISSION_CURRENT COMPLETE and a disarmed heartbeat")
+    gs.wait_until(finished, 45, "the landing current, then the mission back at item 1 and a disarmed heartbeat")
     current = gs.messages(sysid, start, ["MISSION_CURRENT"])
     report["flight"] = {
         "commands": results,

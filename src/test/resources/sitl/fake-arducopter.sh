@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # TEST DOUBLE, NOT ArduPilot SITL. It lets the SITL suite (src/test/groovy/dolphin/sitl) run its own
-# code path where no ArduPilot build exists: it takes the command line the suite gives arducopter or
-# arduplane and starts one vehicle of Dolphin's own simulator (`dolphin sim`) instead:
+# code path where no ArduPilot build exists: it takes the command line the suite gives arducopter,
+# arduplane or ardurover and starts one vehicle of Dolphin's own simulator (`dolphin sim`) instead:
 #
-#   --model quad|plane   -> --type copter|plane
+#   --model quad|plane|rover -> --type copter|plane|rover
 #   --sysid N            -> --first-sysid N
 #   --home LAT,LON,ALT,HDG -> --home LAT,LON,ALT (the heading is dropped)
 #   --serial0 udpclient:HOST:PORT -> --link udpout:HOST:PORT
@@ -22,6 +22,7 @@ while [ $# -gt 0 ]; do
     --model) case "$2" in
                quad|copter|+|x) args+=(--type copter) ;;
                plane) args+=(--type plane) ;;
+               rover) args+=(--type rover) ;;
                *) echo "fake-arducopter: unsupported --model $2" >&2; exit 2 ;;
              esac; shift 2 ;;
     --sysid) args+=(--first-sysid "$2"); shift 2 ;;

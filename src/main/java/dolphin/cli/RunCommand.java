@@ -10,6 +10,7 @@ import dolphin.mavlink.MAVLinkConfig;
 import dolphin.mavlink.MAVLinkPlatform;
 import dolphin.mavlink.codec.SigningKey;
 import dolphin.mavlink.link.LinkUrl;
+import dolphin.mavlink.mission.MissionExecutorConfig;
 import dolphin.mavlink.mission.MissionTransferConfig;
 import dolphin.sim.FaultModel;
 import dolphin.sim.SimFleet;
@@ -52,7 +53,7 @@ final class RunCommand implements Callable<Integer> {
     private int sim;
 
     @Option(names = "--sim-type", paramLabel = "TYPE", converter = Converters.Kind.class, defaultValue = "copter",
-            description = "copter or plane (default: ${DEFAULT-VALUE}).")
+            description = "copter, plane or rover (default: ${DEFAULT-VALUE}).")
     private VehicleKind simType;
 
     @Option(names = "--speedup", paramLabel = "X", defaultValue = "1",
@@ -93,6 +94,11 @@ final class RunCommand implements Callable<Integer> {
                     + "fails (default: ${DEFAULT-VALUE}).")
     private int transferTries;
 
+    @Option(names = "--ready-timeout", paramLabel = "SECONDS", defaultValue = "180",
+            description = "How long a mission waits for its vehicle to become ready (a position estimate, a home, pre-arm "
+                    + "checks passing) before it fails quoting the vehicle's PreArm text (default: ${DEFAULT-VALUE}).")
+    private long readyTimeoutSeconds;
+
     /** How the vehicles' status is shown. */
     enum StatusMode { auto, live, plain }
 
@@ -111,6 +117,7 @@ final class RunCommand implements Callable<Integer> {
         validate();
         MAVLinkConfig config = mavlinkConfig();
         MissionTransferConfig transfers = transferConfig();
+        MissionExecutorConfig executor = executorConfig();
         FaultModel faultModel = faultModel();
         String source = Main.readScript("run", script, err);
         if (source == null) {
@@ -119,6 +126,7 @@ final class RunCommand implements Callable<Integer> {
         Clock clock = sim > 0 ? new SystemClock(speedup) : SystemClock.REAL;
         MAVLinkCommunications comms = new MAVLinkCommunications(config, clock);
         comms.setMissionTransferConfig(transfers);
+        comms.setMissionExecutorConfig(executor);
         Forwarder forwarder = new Forwarder(comms, forwards);
         try {
             comms.start();
@@ -199,6 +207,15 @@ final class RunCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), "--transfer-tries must be at least 1, got " + transferTries);
         }
         return new MissionTransferConfig(Duration.ofMillis(transferTimeoutMillis), transferTries);
+    }
+
+    /** The mission executor's deadlines, from the options. */
+    MissionExecutorConfig executorConfig() {
+        if (readyTimeoutSeconds <= 0) {
+            throw new ParameterException(spec.commandLine(),
+                    "--ready-timeout must be a positive number of seconds, got " + readyTimeoutSeconds);
+        }
+        return MissionExecutorConfig.DEFAULT.withPrepare(Duration.ofSeconds(readyTimeoutSeconds));
     }
 
     /** The simulated link's faults; refused without --sim, where there is no simulated link to apply them to. */

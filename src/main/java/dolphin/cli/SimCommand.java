@@ -39,7 +39,7 @@ final class SimCommand implements Callable<Integer> {
     private List<LinkUrl> links = new ArrayList<>();
 
     @Option(names = "--type", paramLabel = "TYPE", converter = Converters.Kind.class, defaultValue = "copter",
-            description = "copter or plane (default: ${DEFAULT-VALUE}).")
+            description = "copter, plane or rover (default: ${DEFAULT-VALUE}).")
     private VehicleKind type;
 
     @Option(names = "--home", paramLabel = "LAT,LON,ALT", converter = Converters.Home.class,
@@ -53,7 +53,8 @@ final class SimCommand implements Callable<Integer> {
     private double speedup;
 
     @Option(names = "--warmup", paramLabel = "SECONDS", defaultValue = "0",
-            description = "Refuse to arm (PreArm) this long after start, as ArduPilot does while its EKF settles.")
+            description = "No position estimate this long after start, as ArduPilot while its EKF settles (SITL: about 42 s): "
+                    + "position 0,0, no home, DO_SET_HOME failing, \"PreArm: Need Position Estimate\" (default: ${DEFAULT-VALUE}).")
     private double warmup;
 
     @Option(names = "--drain", paramLabel = "PERCENT_PER_MINUTE", defaultValue = "14",

@@ -4,6 +4,7 @@ import dolphin.mavlink.codec.MessageTable;
 import com.MAVLink.Messages.MAVLinkMessage;
 import com.MAVLink.common.msg_command_ack;
 import com.MAVLink.common.msg_command_long;
+import com.MAVLink.ardupilotmega.msg_ekf_status_report;
 import com.MAVLink.common.msg_extended_sys_state;
 import com.MAVLink.common.msg_home_position;
 import com.MAVLink.common.msg_mission_current;
@@ -394,6 +395,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
                 Position.fromDegrees(m.latitude * 1e-7, m.longitude * 1e-7, m.altitude * 1e-3))));
         handler.on(msg_extended_sys_state.class, (n, m) -> changed(n, s -> s.withLandedState(m.landed_state)));
         handler.on(msg_mission_current.class, (n, m) -> changed(n, s -> s.withMissionCurrent(m.seq, m.total, m.mission_state)));
+        handler.on(msg_ekf_status_report.class, (n, m) -> changed(n, s -> s.withEkfFlags(m.flags)));
         handler.on(msg_statustext.class, (n, m) -> {
             String text = m.getText();
             LOG.info("vehicle {}: {}", n.getId(), text);

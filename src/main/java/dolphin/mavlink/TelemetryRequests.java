@@ -1,5 +1,6 @@
 package dolphin.mavlink;
 
+import com.MAVLink.ardupilotmega.msg_ekf_status_report;
 import com.MAVLink.common.msg_extended_sys_state;
 import com.MAVLink.common.msg_home_position;
 import com.MAVLink.common.msg_battery_status;
@@ -27,11 +28,18 @@ final class TelemetryRequests {
 
     private static final class Stream {
         final long intervalNanos;
+        /**
+         * A message only some autopilots send (EKF_STATUS_REPORT is ArduPilot's): a refusal does not
+         * switch the vehicle to REQUEST_DATA_STREAM, and it is asked for again only once it was seen.
+         */
+        final boolean optional;
         long lastSeen;
+        boolean seen;
         long lastRequest;
 
-        Stream(long intervalNanos) {
+        Stream(long intervalNanos, boolean optional) {
             this.intervalNanos = intervalNanos;
+            this.optional = optional;
         }
 
         long silenceLimit() {
@@ -58,12 +66,13 @@ final class TelemetryRequests {
         Vehicle v = new Vehicle();
         for (int id : new int[] {msg_sys_status.MAVLINK_MSG_ID_SYS_STATUS,
                 msg_global_position_int.MAVLINK_MSG_ID_GLOBAL_POSITION_INT, msg_mission_current.MAVLINK_MSG_ID_MISSION_CURRENT}) {
-            v.streams.put(id, new Stream(fastNanos));
+            v.streams.put(id, new Stream(fastNanos, false));
         }
         for (int id : new int[] {msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE,
                 msg_battery_status.MAVLINK_MSG_ID_BATTERY_STATUS, msg_home_position.MAVLINK_MSG_ID_HOME_POSITION}) {
-            v.streams.put(id, new Stream(1_000_000_000L));
+            v.streams.put(id, new Stream(1_000_000_000L, false));
         }
+        v.streams.put(msg_ekf_status_report.MAVLINK_MSG_ID_EKF_STATUS_REPORT, new Stream(1_000_000_000L, true));
         vehicles.put(node, v);
         v.streams.forEach((id, s) -> request(node, v, id, s, now));
     }
@@ -73,6 +82,7 @@ final class TelemetryRequests {
         Stream s = v == null ? null : v.streams.get(msgid);
         if (s != null) {
             s.lastSeen = now;
+            s.seen = true;
         }
     }
 
@@ -83,7 +93,7 @@ final class TelemetryRequests {
                 return;
             }
             v.streams.forEach((id, s) -> {
-                if (now - Math.max(s.lastSeen, s.lastRequest) > s.silenceLimit()) {
+                if ((!s.optional || s.seen) && now - Math.max(s.lastSeen, s.lastRequest) > s.silenceLimit()) {
                     rerequests.computeIfAbsent(node.getId(), k -> new AtomicInteger()).incrementAndGet();
                     request(node, v, id, s, now);
                 }
@@ -105,7 +115,7 @@ final class TelemetryRequests {
         }
         comms.commandOnCommsThread(node, MAV_CMD.MAV_CMD_SET_MESSAGE_INTERVAL, msgid, s.intervalNanos / 1000f)
                 .thenAccept(r -> {
-                    if (!r.accepted() && !v.fallback) {
+                    if (!r.accepted() && !v.fallback && !s.optional) {
                         v.fallback = true;
                         requestDataStreams(node, fastNanos);
                     }

@@ -22,18 +22,19 @@ import java.util.List;
  * @param missionTotal MISSION_CURRENT.total (items excluding home), -1 when unknown
  * @param missionState MISSION_CURRENT.mission_state (MISSION_STATE), 0 when unknown
  * @param statusTexts the last STATUSTEXT lines, oldest first
+ * @param ekfFlags EKF_STATUS_REPORT.flags (ArduPilot's EKF_STATUS_FLAGS), -1 before the first
  */
 public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, VehicleFamily family,
                            msg_sys_status systemStatus, long systemStatusNanos,
                            Position position, double relativeAlt, long positionNanos, Position home,
                            int landedState, int missionSeq, int missionTotal, int missionState,
-                           List<String> statusTexts) {
+                           List<String> statusTexts, int ekfFlags) {
 
     public static final int STATUS_LINES = 20;
     private static final int ARMED_FLAG = 128;
 
     public static VehicleState initial(VehicleFamily family) {
-        return new VehicleState(null, 0, family, null, 0, null, 0, 0, null, 0, -1, -1, 0, List.of());
+        return new VehicleState(null, 0, family, null, 0, null, 0, 0, null, 0, -1, -1, 0, List.of(), -1);
     }
 
     public boolean armed() {
@@ -55,32 +56,37 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
 
     public VehicleState withHeartbeat(msg_heartbeat hb, long nanos) {
         return new VehicleState(hb, nanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts);
+                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags);
     }
 
     public VehicleState withSystemStatus(msg_sys_status s, long nanos) {
         return new VehicleState(heartbeat, heartbeatNanos, family, s, nanos, position, relativeAlt,
-                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts);
+                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags);
     }
 
     public VehicleState withPosition(Position p, double relAlt, long nanos) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, p, relAlt,
-                nanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts);
+                nanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags);
     }
 
     public VehicleState withHome(Position h) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, h, landedState, missionSeq, missionTotal, missionState, statusTexts);
+                positionNanos, h, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags);
     }
 
     public VehicleState withLandedState(int landed) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, home, landed, missionSeq, missionTotal, missionState, statusTexts);
+                positionNanos, home, landed, missionSeq, missionTotal, missionState, statusTexts, ekfFlags);
     }
 
     public VehicleState withMissionCurrent(int seq, int total, int state) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, home, landedState, seq, total, state, statusTexts);
+                positionNanos, home, landedState, seq, total, state, statusTexts, ekfFlags);
+    }
+
+    public VehicleState withEkfFlags(int flags) {
+        return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
+                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, flags);
     }
 
     public VehicleState withStatusText(String line) {
@@ -90,6 +96,6 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
             lines.remove(0);
         }
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, home, landedState, missionSeq, missionTotal, missionState, List.copyOf(lines));
+                positionNanos, home, landedState, missionSeq, missionTotal, missionState, List.copyOf(lines), ekfFlags);
     }
 }

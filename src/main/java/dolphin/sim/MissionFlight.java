@@ -2,55 +2,50 @@ package dolphin.sim;
 
 import com.MAVLink.Messages.MAVLinkMessage;
 import com.MAVLink.common.msg_mission_current;
-import com.MAVLink.common.msg_mission_item_reached;
-import com.MAVLink.enums.COPTER_MODE;
 import com.MAVLink.enums.MAV_CMD;
+import com.MAVLink.enums.MAV_LANDED_STATE;
 import com.MAVLink.enums.MAV_SEVERITY;
 import com.MAVLink.enums.MISSION_STATE;
 import dolphin.core.Position;
 import dolphin.mavlink.mission.MissionItem;
+import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.function.Supplier;
 
 /**
  * How a simulated vehicle flies its stored mission in AUTO, and RTL and LAND, on the fleet's tick in
- * clock time. Simple kinematics, ArduPilot's rules: a copter starts only after MAV_CMD_MISSION_START
- * (or when already flying) and disarms itself after 10 s armed on the ground in AUTO without it; a
- * plane starts as soon as it is armed in AUTO. DO items run when the nav item before them completes
- * (in the same tick, so their MISSION_ITEM_REACHED coalesces with it); CONDITION_DELAY runs beside
- * the next nav item. A copter hovers at the end of the mission, still in AUTO; a plane switches to
- * RTL and loiters over home.
+ * clock time, by AP_Mission's rules: each item started says so ("Mission: 3 WP"); a nav item runs
+ * until it completes; the DO items after it run when it does, in the same loop, so their
+ * MISSION_ITEM_REACHED coalesces with its; CONDITION_DELAY runs beside the next nav item; DO_JUMP
+ * loops. How the vehicle takes off, reaches a point, holds, lands, returns and ends the mission, and
+ * whether it waits for MISSION_START or starts over when disarmed, is its {@link Firmware}'s.
  */
 final class MissionFlight {
 
-    static final double COPTER_SPEED = 10;      // WPNAV_SPEED
-    static final double PLANE_SPEED = 20;       // cruise airspeed
-    static final double COPTER_CLIMB = 2.5;     // WPNAV_SPEED_UP, also the takeoff climb
-    static final double COPTER_SINK = 1.5;      // WPNAV_SPEED_DN, also LAND_SPEED_HIGH
-    static final double LAND_SPEED = 0.5;       // LAND_SPEED, below LAND_ALT_LOW
-    static final double LAND_ALT_LOW = 10;
-    static final double PLANE_CLIMB = 5;
-    static final double PLANE_SINK = 3;
-    static final double COPTER_WP_RADIUS = 1;   // ArduCopter SITL reaches waypoints within 0.6 to 1.5 m
-    static final double PLANE_WP_RADIUS = 55;   // WP_RADIUS
-    static final double COPTER_TURN_RADIUS = 10;
-    static final double PLANE_LOITER_RADIUS = 60; // WP_LOITER_RAD
-    static final double RTL_ALT = 15;           // RTL_ALT (copter), metres above home
+    /** A copter armed on the ground in AUTO without MISSION_START disarms after DISARM_DELAY seconds. */
     static final double DISARM_DELAY = 10;
     /** DO_JUMP's repeat count meaning for ever (AP_MISSION_JUMP_REPEAT_FOREVER). */
     static final int FOREVER = -1;
-    static final double LANDED_HEIGHT = 0.5;
-    static final int COPTER_LAND_MODE = COPTER_MODE.COPTER_MODE_LAND;
 
     private static final Set<Integer> CAMERA = Set.of(MAV_CMD.MAV_CMD_IMAGE_START_CAPTURE, MAV_CMD.MAV_CMD_IMAGE_STOP_CAPTURE,
             MAV_CMD.MAV_CMD_DO_DIGICAM_CONTROL, MAV_CMD.MAV_CMD_DO_SET_CAM_TRIGG_DIST);
 
+    /**
+     * DO items AP_Mission::verify_command completes itself, without the vehicle's verify: they are
+     * never reported reached (SITL sends no MISSION_ITEM_REACHED for IMAGE_START_CAPTURE).
+     */
+    private static final Set<Integer> VERIFIED_BY_MISSION = Set.of(MAV_CMD.MAV_CMD_IMAGE_START_CAPTURE,
+            MAV_CMD.MAV_CMD_IMAGE_STOP_CAPTURE, MAV_CMD.MAV_CMD_DO_DIGICAM_CONTROL, MAV_CMD.MAV_CMD_DO_DIGICAM_CONFIGURE,
+            MAV_CMD.MAV_CMD_DO_SET_CAM_TRIGG_DIST, MAV_CMD.MAV_CMD_DO_SET_SERVO, MAV_CMD.MAV_CMD_DO_SET_RELAY,
+            MAV_CMD.MAV_CMD_DO_REPEAT_SERVO, MAV_CMD.MAV_CMD_DO_REPEAT_RELAY, MAV_CMD.MAV_CMD_DO_GRIPPER,
+            MAV_CMD.MAV_CMD_DO_PARACHUTE);
+
     /** What the flight needs from its vehicle. */
     interface Body {
-        Position position();
-
-        void place(Position p);
+        Craft craft();
 
         Position home();
 
@@ -58,38 +53,44 @@ final class MissionFlight {
 
         int mode();
 
+        /** A mode change of the vehicle's own, announced at once. */
         void switchMode(int mode);
 
-        /** Touched down: landed and disarmed. */
-        void touchdown();
-
-        void send(MAVLinkMessage m);
+        /** Disarms, saying so; the flight hears of it through {@link #disarmed()}. */
+        void disarm();
 
         void text(int severity, String text);
+
+        void reached(int seq);
+
+        /** Ends one of ArduPilot's loops: what waits to be sent goes out. */
+        void flush();
+
+        void send(MAVLinkMessage m);
     }
 
-    private enum Phase { APPROACH, HOLD, CIRCLE, CLIMB, RETURN, DESCEND, LOITER }
+    private enum Phase { APPROACH, HOLD }
 
-    private final VehicleKind kind;
+    private final Firmware firmware;
     private final MissionStore store;
     private final Body body;
+    /** The next item to run. */
     private int current = 1;
+    /** The nav item MISSION_CURRENT names: the one started last, 0 before any. */
+    private int navIndex;
     private boolean started;
     private boolean complete;
     private boolean autoArmed;
-    private double speed;
-    private double heading;
+    private boolean restartDue;
     private double groundSeconds;
-    private int reachedPending = -1;
     private int cameraCommands;
     // the nav item under way
     private int active = -1;
     private Phase phase;
     private double timer;
-    private double angle;
-    private Position anchor;
+    private Manoeuvre manoeuvre;
     // RTL and LAND modes
-    private Phase modePhase;
+    private Manoeuvre modeManoeuvre;
     // a CONDITION_DELAY running beside the nav item
     private int conditionSeq = -1;
     private double conditionLeft;
@@ -98,19 +99,19 @@ final class MissionFlight {
     /** The last MISSION_CURRENT announced (seq/total/state); a change is sent at once, as ArduPilot does. */
     private String lastCurrent = "0/0/" + MISSION_STATE.MISSION_STATE_NO_MISSION;
 
-    MissionFlight(VehicleKind kind, MissionStore store, Body body) {
-        this.kind = kind;
+    MissionFlight(Firmware firmware, MissionStore store, Body body) {
+        this.firmware = firmware;
         this.store = store;
         this.body = body;
-        this.speed = defaultSpeed();
     }
 
     int cameraCommands() {
         return cameraCommands;
     }
 
+    /** The nav item MISSION_CURRENT reports. */
     int current() {
-        return current;
+        return navIndex;
     }
 
     /** MISSION_STATE of the stored mission. */
@@ -124,22 +125,17 @@ final class MissionFlight {
         if (!started) {
             return MISSION_STATE.MISSION_STATE_NOT_STARTED;
         }
-        return body.mode() == kind.autoMode && body.armed() ? MISSION_STATE.MISSION_STATE_ACTIVE
-                : MISSION_STATE.MISSION_STATE_PAUSED;
+        return body.mode() == firmware.autoMode() ? MISSION_STATE.MISSION_STATE_ACTIVE : MISSION_STATE.MISSION_STATE_PAUSED;
     }
 
     /** Armed and running a mission in AUTO: ArduPilot then refuses MISSION_CLEAR_ALL. */
     boolean flyingMission() {
-        return body.armed() && body.mode() == kind.autoMode && started && !complete;
+        return body.armed() && body.mode() == firmware.autoMode() && started && !complete;
     }
 
-    boolean landed() {
-        return body.position().hae() - body.home().hae() <= LANDED_HEIGHT;
-    }
-
-    /** ModeAuto::init: armed and landed, AUTO needs a takeoff as the first nav item. */
+    /** ModeAuto::init: armed and landed, a copter enters AUTO only for a mission that starts with a take-off. */
     boolean autoAllowed() {
-        if (kind != VehicleKind.COPTER || !body.armed() || !landed()) {
+        if (!firmware.autoNeedsTakeoff() || !body.armed() || !body.craft().onGround()) {
             return true;
         }
         for (int i = 1; i < store.count(); i++) {
@@ -151,19 +147,26 @@ final class MissionFlight {
         return false;
     }
 
+    /** EXTENDED_SYS_STATE's view of the manoeuvre under way: TAKEOFF, LANDING or IN_AIR. */
+    int manoeuvreState() {
+        Manoeuvre m = body.mode() == firmware.autoMode() ? (active >= 0 ? manoeuvre : null) : modeManoeuvre;
+        return m == null || !body.armed() ? MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR : m.landedState();
+    }
+
     /** Called after every mode change. */
     void modeChanged(int from, int to) {
         if (to == from) {
             return;
         }
-        modePhase = null;
+        modeManoeuvre = null;
         active = -1;
+        manoeuvre = null;
         groundSeconds = 0;
-        if (to == kind.autoMode) {
+        if (to == firmware.autoMode()) {
             if (complete || current >= store.count()) {
                 restart();
             }
-            speed = defaultSpeed();
+            body.craft().resetSpeed();
         }
     }
 
@@ -183,8 +186,10 @@ final class MissionFlight {
             return false;
         }
         current = seq;
+        navIndex = seq;
         complete = false;
         active = -1;
+        manoeuvre = null;
         announceCurrent(true);
         return true;
     }
@@ -199,41 +204,50 @@ final class MissionFlight {
     /** From the first item again, with every DO_JUMP's count at zero (AP_Mission::start). */
     private void restart() {
         current = 1;
+        navIndex = 0;
         started = false;
         complete = false;
         active = -1;
+        manoeuvre = null;
         jumpsRun.clear();
     }
 
     void disarmed() {
         autoArmed = false;
         groundSeconds = 0;
+        if (firmware.restartsMissionOnDisarm() && body.mode() == firmware.autoMode() && started && !complete) {
+            restartDue = true;
+        }
     }
 
     void tick(double dt) {
         if (body.armed()) {
             int mode = body.mode();
-            if (mode == kind.autoMode) {
+            if (mode == firmware.autoMode()) {
                 auto(dt);
-            } else if (mode == kind.rtlMode) {
-                returnHome(dt, false);
-            } else if (kind == VehicleKind.COPTER && mode == COPTER_LAND_MODE) {
-                descend(dt);
+            } else if (mode == firmware.rtlMode()) {
+                modeStep(dt, () -> firmware.returnHome(body.craft(), body.home(), false));
+            } else if (firmware.landMode().isPresent() && mode == firmware.landMode().getAsInt()) {
+                modeStep(dt, () -> firmware.landing(body.craft(), null));
             }
         }
-        flushReached();
+        if (restartDue) {
+            restartDue = false;
+            body.flush();
+            restartAfterDisarm();
+        }
+        body.flush();
         announceCurrent(false);
     }
 
-    /** MISSION_CURRENT: seq is the current nav item (0 once complete), total excludes home. */
+    /** MISSION_CURRENT: seq is the nav item started last (kept once complete); total excludes home. */
     MAVLinkMessage missionCurrent() {
         msg_mission_current c = new msg_mission_current();
         int state = state();
-        c.seq = state == MISSION_STATE.MISSION_STATE_COMPLETE || state == MISSION_STATE.MISSION_STATE_NO_MISSION ? 0
-                : Math.min(current, store.count() - 1);
+        c.seq = state == MISSION_STATE.MISSION_STATE_NO_MISSION ? 0 : Math.min(navIndex, store.count() - 1);
         c.total = Math.max(0, store.count() - 1);
         c.mission_state = (short) state;
-        c.mission_mode = (short) (body.mode() == kind.autoMode ? 1 : 0);
+        c.mission_mode = (short) (body.mode() == firmware.autoMode() ? 1 : 0);
         return c;
     }
 
@@ -246,22 +260,31 @@ final class MissionFlight {
         }
     }
 
+    /** RTL or LAND mode: a manoeuvre that, if it ends on the ground, ends with a disarm. */
+    private void modeStep(double dt, Supplier<Manoeuvre> make) {
+        if (modeManoeuvre == null) {
+            modeManoeuvre = make.get();
+        }
+        if (modeManoeuvre.step(dt) && modeManoeuvre.endsOnGround()) {
+            body.disarm();
+        }
+    }
+
     private void auto(double dt) {
-        if (kind == VehicleKind.COPTER && !autoArmed) {
-            if (!landed()) {
+        if (firmware.waitsForMissionStart() && !autoArmed) {
+            if (!body.craft().onGround()) {
                 autoArmed = true;
             } else {
                 groundSeconds += dt;
                 if (groundSeconds >= DISARM_DELAY) {
-                    body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Disarming: landed in AUTO without MISSION_START");
-                    body.touchdown();
+                    body.disarm();
                 }
                 return;
             }
         }
         groundSeconds = 0;
         if (complete || store.count() <= 1) {
-            return; // a copter hovers where the mission left it
+            return; // it stays where the mission left it
         }
         started = true;
         conditionStep(dt);
@@ -279,7 +302,9 @@ final class MissionFlight {
                 continue;
             }
             if (!nav(item.command())) {
-                runDo(item);
+                if (startDo(item)) {
+                    body.reached(item.seq());
+                }
                 current++;
                 continue;
             }
@@ -289,15 +314,18 @@ final class MissionFlight {
             if (!step(item, dt)) {
                 return;
             }
-            reached(current, true);
+            body.reached(current);
             current++;
             active = -1;
+            manoeuvre = null;
             dt = 0;
             if (!body.armed()) {
                 // landed and disarmed by the item: the mission goes on only through its DO items
                 while (current < store.count() && !nav(store.get(current).command())
                         && store.get(current).command() != MAV_CMD.MAV_CMD_DO_JUMP) {
-                    runDo(store.get(current));
+                    if (startDo(store.get(current))) {
+                        body.reached(current);
+                    }
                     current++;
                 }
                 if (current >= store.count()) {
@@ -311,11 +339,32 @@ final class MissionFlight {
     private void finish() {
         complete = true;
         active = -1;
-        if (kind == VehicleKind.PLANE && body.armed()) {
-            body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Mission complete, changing mode to RTL");
-            int from = body.mode();
-            body.switchMode(kind.rtlMode);
-            modeChanged(from, kind.rtlMode);
+        manoeuvre = null;
+        firmware.missionComplete(body);
+    }
+
+    /**
+     * Disarmed in AUTO in the middle of its mission, ArduCopter starts the mission over at once: in
+     * one loop the DO items before the first nav item start again, in the next they are reported
+     * reached and the first nav item becomes current, the mission ACTIVE though the copter is
+     * disarmed. That item runs when the copter is armed and started again.
+     */
+    private void restartAfterDisarm() {
+        restart();
+        started = true;
+        List<Integer> toReport = new ArrayList<>();
+        while (current < store.count() && !nav(store.get(current).command())
+                && store.get(current).command() != MAV_CMD.MAV_CMD_DO_JUMP) {
+            if (startDo(store.get(current))) {
+                toReport.add(current);
+            }
+            current++;
+        }
+        body.flush();
+        toReport.forEach(body::reached);
+        if (current < store.count() && nav(store.get(current).command())) {
+            navIndex = current;
+            announceStart(store.get(current));
         }
     }
 
@@ -346,63 +395,66 @@ final class MissionFlight {
         return true;
     }
 
-    private void runDo(MissionItem item) {
+    /** Starts a DO item; true if it is complete at once and reported reached. */
+    private boolean startDo(MissionItem item) {
+        announceStart(item);
         int cmd = item.command();
-        if (cmd == MAV_CMD.MAV_CMD_DO_CHANGE_SPEED) {
-            if (item.param2() > 0) {
-                speed = item.param2();
-            }
+        if (cmd == MAV_CMD.MAV_CMD_DO_CHANGE_SPEED && item.param2() > 0) {
+            body.craft().speed(item.param2());
         } else if (CAMERA.contains(cmd)) {
             cameraCommands++;
         } else if (cmd == MAV_CMD.MAV_CMD_CONDITION_DELAY) {
             conditionSeq = item.seq();
             conditionLeft = Math.max(0, item.param1());
-            return; // reached when the delay has passed
+            return false; // reached when the delay has passed
         }
-        reached(item.seq(), false);
+        return !VERIFIED_BY_MISSION.contains(cmd);
     }
 
     private void conditionStep(double dt) {
         if (conditionSeq >= 0) {
             conditionLeft -= dt;
             if (conditionLeft <= 0) {
-                reached(conditionSeq, false);
+                body.reached(conditionSeq);
                 conditionSeq = -1;
             }
         }
     }
 
+    private void announceStart(MissionItem item) {
+        body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Mission: " + item.seq() + " " + CommandNames.of(item.command()));
+    }
+
     private void begin(MissionItem item) {
         active = current;
+        navIndex = current;
         phase = Phase.APPROACH;
         timer = 0;
-        angle = 0;
-        anchor = null;
-        modePhase = null;
+        modeManoeuvre = null;
+        announceStart(item);
+        Craft craft = body.craft();
+        manoeuvre = switch (item.command()) {
+            case MAV_CMD.MAV_CMD_NAV_TAKEOFF -> firmware.takeoff(craft, altitude(item));
+            case MAV_CMD.MAV_CMD_NAV_LAND -> firmware.landing(craft, item.x() == 0 && item.y() == 0 ? null
+                    : Position.fromDegrees(item.x() * 1e-7, item.y() * 1e-7, craft.position().hae()));
+            case MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH -> firmware.returnHome(craft, body.home(), true);
+            default -> null;
+        };
     }
 
     /** One tick of the current nav item; true when it is complete. */
     private boolean step(MissionItem item, double dt) {
         return switch (item.command()) {
-            case MAV_CMD.MAV_CMD_NAV_TAKEOFF -> takeoff(item, dt);
-            case MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_CMD.MAV_CMD_NAV_SPLINE_WAYPOINT -> waypoint(item, dt, item.param1());
-            case MAV_CMD.MAV_CMD_NAV_LOITER_TIME -> waypoint(item, dt, item.param1());
-            case MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM -> {
-                if (phase == Phase.APPROACH && reach(target(item), dt, radius(item))) {
-                    phase = Phase.LOITER;
-                }
-                if (phase == Phase.LOITER) {
-                    hold(target(item), dt);
-                }
-                yield false;
-            }
+            case MAV_CMD.MAV_CMD_NAV_TAKEOFF, MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH -> manoeuvre.step(dt);
+            case MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_CMD.MAV_CMD_NAV_SPLINE_WAYPOINT, MAV_CMD.MAV_CMD_NAV_LOITER_TIME ->
+                    waypoint(item, dt, item.param1());
+            case MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM -> waypoint(item, dt, Double.POSITIVE_INFINITY);
             case MAV_CMD.MAV_CMD_NAV_LOITER_TURNS -> turns(item, dt);
             case MAV_CMD.MAV_CMD_NAV_DELAY -> {
                 timer += dt;
                 yield timer >= Math.max(0, item.param1());
             }
-            case MAV_CMD.MAV_CMD_NAV_LAND -> land(item, dt);
-            case MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH -> returnHome(dt, true);
+            case MAV_CMD.MAV_CMD_NAV_LAND -> land(dt);
             default -> {
                 body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Skipping invalid cmd #" + item.seq());
                 yield true;
@@ -410,164 +462,67 @@ final class MissionFlight {
         };
     }
 
-    private boolean takeoff(MissionItem item, double dt) {
-        double alt = altitude(item);
-        Position p = body.position();
-        double up = alt - p.hae();
-        if (up <= 0.05) {
-            return true;
-        }
-        if (kind == VehicleKind.COPTER) {
-            body.place(p.displace(0, 0, -Math.min(up, COPTER_CLIMB * dt)));
-        } else {
-            double d = speed * dt;
-            body.place(p.displace(d * Math.cos(heading), d * Math.sin(heading), -Math.min(up, PLANE_CLIMB * dt)));
-        }
-        return alt - body.position().hae() <= 0.05;
-    }
-
-    /** Flies to the item's position, then holds there for {@code holdSeconds}. */
+    /** Goes to the item's position, then holds there for {@code holdSeconds}. */
     private boolean waypoint(MissionItem item, double dt, double holdSeconds) {
         Position t = target(item);
+        boolean plainWaypoint = item.command() != MAV_CMD.MAV_CMD_NAV_LOITER_TIME
+                && item.command() != MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM;
         if (phase == Phase.APPROACH) {
-            if (!reach(t, dt, radius(item))) {
+            double radius = item.command() == MAV_CMD.MAV_CMD_NAV_WAYPOINT ? firmware.acceptanceRadius(item)
+                    : firmware.performance().waypointRadius();
+            if (!firmware.reach(body.craft(), t, radius, dt)) {
                 return false;
             }
-            reachedText(item.seq());
+            if (plainWaypoint) {
+                firmware.arrivalText(item.seq(), body.craft().distanceTo(t), holdSeconds)
+                        .ifPresent(s -> body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, s));
+            }
             phase = Phase.HOLD;
+            manoeuvre = firmware.holdAt(body.craft(), t);
             dt = 0;
         }
-        hold(t, dt);
+        manoeuvre.step(dt);
         timer += dt;
-        return timer >= Math.max(0, holdSeconds);
+        if (timer < Math.max(0, holdSeconds)) {
+            return false;
+        }
+        firmware.completionText(item.seq()).ifPresent(s -> body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, s));
+        return true;
     }
 
+    /** LOITER_TURNS: to the circle's north point, then p1 turns of radius |p3| (0: the firmware's). */
     private boolean turns(MissionItem item, double dt) {
-        double r = Math.abs(item.param3()) > 0 ? Math.abs(item.param3())
-                : kind == VehicleKind.COPTER ? COPTER_TURN_RADIUS : PLANE_LOITER_RADIUS;
-        Position center = target(item);
+        Performance performance = firmware.performance();
+        double r = Math.abs(item.param3()) > 0 ? Math.abs(item.param3()) : performance.loiterRadius();
+        Position centre = target(item);
         if (phase == Phase.APPROACH) {
-            if (!reach(center.displace(r, 0, 0), dt, kind == VehicleKind.COPTER ? COPTER_WP_RADIUS : 5)) {
+            if (!firmware.reach(body.craft(), Orbit.entry(centre, r), performance.precisionRadius(), dt)) {
                 return false;
             }
-            phase = Phase.CIRCLE;
+            phase = Phase.HOLD;
+            manoeuvre = new Orbit(firmware, body.craft(), centre, r, item.param1());
             dt = 0;
         }
-        angle += speed / r * dt;
-        double done = 2 * Math.PI * Math.max(0, item.param1());
-        double a = Math.min(angle, done);
-        body.place(center.displace(r * Math.cos(a), r * Math.sin(a), 0));
-        return angle >= done;
-    }
-
-    private boolean land(MissionItem item, double dt) {
-        if (phase == Phase.APPROACH) {
-            Position p = body.position();
-            Position over = item.x() == 0 && item.y() == 0 ? p
-                    : Position.fromDegrees(item.x() * 1e-7, item.y() * 1e-7, p.hae());
-            if (!reach(over, dt, kind == VehicleKind.COPTER ? COPTER_WP_RADIUS : PLANE_WP_RADIUS / 10)) {
-                return false;
-            }
-            phase = Phase.DESCEND;
-            dt = 0;
-        }
-        return descend(dt);
-    }
-
-    /** Descends where it is, ArduCopter's LAND speeds; true on touchdown (disarmed). */
-    private boolean descend(double dt) {
-        Position p = body.position();
-        double height = p.hae() - body.home().hae();
-        double rate = height > LAND_ALT_LOW ? COPTER_SINK : LAND_SPEED;
-        double down = Math.min(Math.max(0, height), rate * dt);
-        body.place(p.displace(0, 0, down));
-        if (height - down <= 0.01) {
-            body.place(Position.fromDegrees(p.latitudeDegrees(), p.longitudeDegrees(), body.home().hae()));
-            body.touchdown();
-            return true;
-        }
-        return false;
+        return manoeuvre.step(dt);
     }
 
     /**
-     * RTL: a copter climbs to RTL_ALT above home if lower, flies home and lands; a plane flies home
-     * at its height and loiters over it. As a mission item it completes on touchdown (copter) or
-     * within WP_RADIUS of home (plane).
+     * NAV_LAND: complete once landed and disarmed; but a firmware that starts its mission over when
+     * disarmed never completes it (ArduCopter: no MISSION_ITEM_REACHED for the landing).
      */
-    private boolean returnHome(double dt, boolean asItem) {
-        Position home = body.home();
-        if (modePhase == null) {
-            modePhase = kind == VehicleKind.COPTER ? Phase.CLIMB : Phase.RETURN;
-            anchor = null;
+    private boolean land(double dt) {
+        if (!manoeuvre.step(dt)) {
+            return false;
         }
-        Position p = body.position();
-        switch (modePhase) {
-            case CLIMB -> {
-                double alt = home.hae() + RTL_ALT;
-                if (p.hae() >= alt - 0.05 || reach(Position.fromDegrees(p.latitudeDegrees(), p.longitudeDegrees(), alt), dt, 0.05)) {
-                    modePhase = Phase.RETURN;
-                }
-                return false;
-            }
-            case RETURN -> {
-                Position over = Position.fromDegrees(home.latitudeDegrees(), home.longitudeDegrees(), p.hae());
-                double radius = kind == VehicleKind.COPTER ? COPTER_WP_RADIUS : PLANE_WP_RADIUS;
-                if (reach(over, dt, radius)) {
-                    modePhase = kind == VehicleKind.COPTER ? Phase.DESCEND : Phase.LOITER;
-                    return asItem && kind == VehicleKind.PLANE;
-                }
-                return false;
-            }
-            case DESCEND -> {
-                return descend(dt);
-            }
-            default -> {
-                hold(Position.fromDegrees(home.latitudeDegrees(), home.longitudeDegrees(), p.hae()), dt);
-                return asItem;
-            }
+        if (manoeuvre.endsOnGround() && body.armed()) {
+            body.disarm();
         }
-    }
-
-    /** Stays at {@code t}: a copter hovers, a plane circles it at WP_LOITER_RAD. */
-    private void hold(Position t, double dt) {
-        if (kind == VehicleKind.COPTER) {
-            return;
-        }
-        angle += speed / PLANE_LOITER_RADIUS * dt;
-        body.place(t.displace(PLANE_LOITER_RADIUS * Math.cos(angle), PLANE_LOITER_RADIUS * Math.sin(angle), 0));
-    }
-
-    /**
-     * Moves towards {@code t}: horizontally at the current speed, vertically at the climb or sink
-     * rate; true once within {@code radius} horizontally (and, for a copter, at its height).
-     */
-    private boolean reach(Position t, double dt, double radius) {
-        Position p = body.position();
-        double[] ned = p.displacementTo(t);
-        double h = Math.hypot(ned[0], ned[1]);
-        double f = h <= 0 ? 0 : Math.min(1, speed * dt / h);
-        if (h > 0.01) {
-            heading = Math.atan2(ned[1], ned[0]);
-        }
-        double up = -ned[2];
-        double climb = kind == VehicleKind.COPTER ? COPTER_CLIMB : PLANE_CLIMB;
-        double sink = kind == VehicleKind.COPTER ? COPTER_SINK : PLANE_SINK;
-        double dz = Math.max(-sink * dt, Math.min(climb * dt, up));
-        body.place(p.displace(ned[0] * f, ned[1] * f, -dz));
-        double left = h * (1 - f);
-        return left <= radius && (kind == VehicleKind.PLANE || Math.abs(up - dz) <= 0.1);
-    }
-
-    private double radius(MissionItem item) {
-        if (item.param2() > 0 && item.command() == MAV_CMD.MAV_CMD_NAV_WAYPOINT) {
-            return item.param2();
-        }
-        return kind == VehicleKind.COPTER ? COPTER_WP_RADIUS : PLANE_WP_RADIUS;
+        return !restartDue;
     }
 
     /** The item's position; lat = lon = 0 means here; z relative to home unless the frame is global. */
     private Position target(MissionItem item) {
-        Position p = body.position();
+        Position p = body.craft().position();
         double lat = item.x() == 0 && item.y() == 0 ? p.latitudeDegrees() : item.x() * 1e-7;
         double lon = item.x() == 0 && item.y() == 0 ? p.longitudeDegrees() : item.y() * 1e-7;
         return Position.fromDegrees(lat, lon, altitude(item));
@@ -575,31 +530,6 @@ final class MissionFlight {
 
     private double altitude(MissionItem item) {
         return MissionCheck.relative(item.frame()) ? body.home().hae() + item.z() : item.z();
-    }
-
-    private void reachedText(int seq) {
-        body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Reached command #" + seq);
-    }
-
-    private void reached(int seq, boolean navItem) {
-        if (navItem && phase != Phase.HOLD) {
-            reachedText(seq);
-        }
-        reachedPending = seq;
-    }
-
-    /** GCS::send_mission_item_reached_message: one pending index, sent at most once per tick. */
-    private void flushReached() {
-        if (reachedPending >= 0) {
-            msg_mission_item_reached r = new msg_mission_item_reached();
-            r.seq = reachedPending;
-            reachedPending = -1;
-            body.send(r);
-        }
-    }
-
-    private double defaultSpeed() {
-        return kind == VehicleKind.COPTER ? COPTER_SPEED : PLANE_SPEED;
     }
 
     /** NAV commands are those below MAV_CMD_NAV_LAST (95), as AP_Mission::is_nav_cmd says. */

@@ -1,6 +1,7 @@
 package dolphin.sim;
 
 import com.MAVLink.Messages.MAVLinkMessage;
+import com.MAVLink.ardupilotmega.msg_ekf_status_report;
 import com.MAVLink.common.msg_battery_status;
 import com.MAVLink.common.msg_command_ack;
 import com.MAVLink.common.msg_command_long;
@@ -18,16 +19,13 @@ import com.MAVLink.common.msg_mission_request_list;
 import com.MAVLink.common.msg_mission_set_current;
 import com.MAVLink.common.msg_request_data_stream;
 import com.MAVLink.common.msg_set_mode;
-import com.MAVLink.common.msg_statustext;
 import com.MAVLink.common.msg_sys_status;
 import com.MAVLink.enums.MAV_AUTOPILOT;
 import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_DATA_STREAM;
-import com.MAVLink.enums.MAV_LANDED_STATE;
 import com.MAVLink.enums.MAV_MODE_FLAG;
 import com.MAVLink.enums.MAV_RESULT;
 import com.MAVLink.enums.MAV_SEVERITY;
-import com.MAVLink.enums.MAV_STATE;
 import com.MAVLink.enums.MAV_SYS_STATUS_SENSOR;
 import com.MAVLink.minimal.msg_heartbeat;
 import com.MAVLink.standard.msg_global_position_int;
@@ -36,37 +34,44 @@ import dolphin.mavlink.mission.MissionItem;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
 import java.util.function.Consumer;
 
 /**
- * One simulated ArduPilot vehicle: the identity, link and command behaviour of ArduCopter or
- * ArduPlane as ardupilot-behaviour.md records it. Driven by its {@link SimFleet}'s one thread; the
- * public methods are synchronized, so tests may read and change it from other threads.
+ * One simulated ArduPilot vehicle: the identity, link and command behaviour of its firmware
+ * ({@link VehicleKind}, whose {@link Firmware} says what differs between ArduCopter, ArduPlane and
+ * ArduRover). Driven by its {@link SimFleet}'s one thread; the public methods are synchronized, so
+ * tests may read and change it from other threads.
  */
 public final class SimVehicle {
 
     private static final Set<Integer> STREAMABLE = Set.of(msg_sys_status.MAVLINK_MSG_ID_SYS_STATUS,
             msg_global_position_int.MAVLINK_MSG_ID_GLOBAL_POSITION_INT, msg_mission_current.MAVLINK_MSG_ID_MISSION_CURRENT,
             msg_battery_status.MAVLINK_MSG_ID_BATTERY_STATUS, msg_home_position.MAVLINK_MSG_ID_HOME_POSITION,
-            msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE);
+            msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE, msg_ekf_status_report.MAVLINK_MSG_ID_EKF_STATUS_REPORT);
     private static final long SECOND = 1_000_000_000L;
+    private static final int EKF_BOOTING = 167;
+    private static final int EKF_LOCATED = 831;
     private static final int FORCE_DISARM = 21196;
 
     private final int sysid;
     private final VehicleKind kind;
+    private final Firmware firmware;
     private final SimOptions options;
-    private final long bootNanos;
+    private final PositionEstimate estimate;
     private final Map<Integer, Long> intervals = new HashMap<>();
     private final Map<Integer, Long> nextDue = new HashMap<>();
+    private final Outbox outbox = new Outbox(this::send);
     private Consumer<MAVLinkMessage> out = m -> { };
     private long nextHeartbeat;
     private long lastTick;
     private int mode;
+    private boolean modeToAnnounce;
     private boolean armed;
     private boolean silent;
     private double battery = 100;
-    private Position position;
+    private final Craft craft;
     private Position home;
     private Position target;
     private double speed;
@@ -78,19 +83,20 @@ public final class SimVehicle {
     SimVehicle(int sysid, VehicleKind kind, Position home, SimOptions options, long now) {
         this.sysid = sysid;
         this.kind = kind;
+        this.firmware = kind.firmware();
         this.options = options;
-        this.bootNanos = now;
+        this.estimate = new PositionEstimate(now, options.warmupSeconds());
         this.home = home;
-        this.position = home;
-        this.mode = kind.bootMode;
+        this.craft = new Craft(home, firmware.performance(), s -> outbox.text(MAV_SEVERITY.MAV_SEVERITY_INFO, s));
+        this.mode = firmware.bootMode();
         this.nextHeartbeat = now;
         this.lastTick = now;
         this.missionStore = new MissionStore(() -> this.home, options.missionCapacity());
         this.transfer = new MissionTransfer(missionStore, new TransferHost());
-        this.flight = new MissionFlight(kind, missionStore, new FlightBody());
-        if (kind.defaultStreamHz > 0) {
+        this.flight = new MissionFlight(firmware, missionStore, new FlightBody());
+        if (firmware.defaultStreamHz() > 0) {
             for (int id : STREAMABLE) {
-                intervals.put(id, (long) (SECOND / kind.defaultStreamHz));
+                stream(id, (long) (SECOND / firmware.defaultStreamHz()), now);
             }
         }
     }
@@ -112,7 +118,7 @@ public final class SimVehicle {
     }
 
     public synchronized String modeName() {
-        return kind.family.modeName(mode);
+        return firmware.family().modeName(mode);
     }
 
     public synchronized boolean armed() {
@@ -128,11 +134,16 @@ public final class SimVehicle {
     }
 
     public synchronized Position position() {
-        return position;
+        return craft.position();
     }
 
     public synchronized Position home() {
         return home;
+    }
+
+    /** MAV_LANDED_STATE, as EXTENDED_SYS_STATE reports it. */
+    public synchronized int landedState() {
+        return firmware.landedState(craft.onGround(), flight.manoeuvreState());
     }
 
     /** Messages the vehicle streams, with their intervals in clock nanoseconds. */
@@ -165,7 +176,7 @@ public final class SimVehicle {
         return flight.cameraCommands();
     }
 
-    /** The current mission item (seq), as MISSION_CURRENT reports it while the mission runs. */
+    /** The current mission item (seq), as MISSION_CURRENT reports it. */
     public synchronized int missionCurrent() {
         return flight.current();
     }
@@ -180,7 +191,7 @@ public final class SimVehicle {
         return transfer.uploading();
     }
 
-    /** Moves towards {@code to} at {@code metresPerSecond} (straight line, heights included). */
+    /** Moves towards {@code to} at {@code metresPerSecond} (straight line, heights included; never below the ground). */
     public synchronized void flyTo(Position to, double metresPerSecond) {
         target = to;
         speed = metresPerSecond;
@@ -188,49 +199,59 @@ public final class SimVehicle {
 
     /** Mode changes by "someone else", e.g. a pilot's switch: the ground station is not asked. */
     public synchronized void setMode(int customMode) {
-        int from = mode;
-        mode = customMode;
-        flight.modeChanged(from, mode);
+        changeMode(customMode);
     }
 
     synchronized void tick(long now) {
         double dt = (now - lastTick) / 1e9;
         lastTick = now;
+        if (modeToAnnounce) {
+            announceMode();
+        }
         if (armed) {
             battery = Math.max(0, battery - options.drainPercentPerMinute() * dt / 60);
         }
         move(dt);
         transfer.tick(now);
         flight.tick(dt);
+        estimate.periodicReport(now, armed).ifPresent(s -> outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, s));
+        outbox.flush();
         if (silent) {
             return;
         }
-        if (now >= nextHeartbeat) {
-            out.accept(heartbeat());
-            nextHeartbeat = now + SECOND;
-        }
+        // streams due with the heartbeat go out just before it, as SITL's do
         for (Map.Entry<Integer, Long> e : intervals.entrySet()) {
             long due = nextDue.getOrDefault(e.getKey(), now);
             if (now >= due) {
-                out.accept(telemetry(e.getKey()));
-                nextDue.put(e.getKey(), Math.max(due + e.getValue(), now));
+                telemetry(e.getKey()).ifPresent(out);
+                nextDue.put(e.getKey(), nextOnGrid(due, e.getValue(), now));
             }
         }
+        if (now >= nextHeartbeat) {
+            out.accept(heartbeat());
+            nextHeartbeat = nextOnGrid(nextHeartbeat, SECOND, now);
+        }
+    }
+
+    /** The first time after {@code now} on the grid of {@code interval} through {@code due}: a late tick keeps the phase. */
+    private static long nextOnGrid(long due, long interval, long now) {
+        return due + interval * ((now - due) / interval + 1);
     }
 
     private void move(double dt) {
         if (target == null || speed <= 0 || dt <= 0) {
             return;
         }
+        Position position = craft.position();
         double[] ned = position.displacementTo(target);
         double dist = Math.sqrt(ned[0] * ned[0] + ned[1] * ned[1] + ned[2] * ned[2]);
         double step = speed * dt;
         if (dist <= step) {
-            position = target;
+            craft.moveTo(target, dt);
             target = null;
         } else {
             double f = step / dist;
-            position = position.displace(ned[0] * f, ned[1] * f, ned[2] * f);
+            craft.moveTo(position.displace(ned[0] * f, ned[1] * f, ned[2] * f), dt);
         }
     }
 
@@ -244,12 +265,16 @@ public final class SimVehicle {
         } else if (m instanceof msg_set_mode s && s.target_system == sysid) {
             setModeIfValid(s.custom_mode);
         } else if (m instanceof msg_request_data_stream r && r.target_system == sysid) {
-            requestDataStream(r);
+            requestDataStream(r, now);
         } else if (missionTarget(m) == sysid) {
             transfer.handle(m, now);
         } else if (m instanceof msg_mission_set_current s && s.target_system == sysid) {
             flight.setCurrent(s.seq);
         }
+        if (modeToAnnounce) {
+            announceMode();
+        }
+        outbox.flush();
     }
 
     private int command(msg_command_long c, long now) {
@@ -257,7 +282,7 @@ public final class SimVehicle {
             case MAV_CMD.MAV_CMD_COMPONENT_ARM_DISARM -> c.param1 == 1 ? arm(now) : disarm(c.param2);
             case MAV_CMD.MAV_CMD_DO_SET_MODE -> ((int) c.param1 & MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED) != 0
                     && setModeIfValid((long) c.param2) ? MAV_RESULT.MAV_RESULT_ACCEPTED : MAV_RESULT.MAV_RESULT_FAILED;
-            case MAV_CMD.MAV_CMD_DO_SET_HOME -> setHome(c);
+            case MAV_CMD.MAV_CMD_DO_SET_HOME -> setHome(c, now);
             case MAV_CMD.MAV_CMD_BATTERY_RESET -> {
                 // param1 is a mask of battery instances; this vehicle has instance 0 only
                 if (((int) c.param1 & 1) == 0) {
@@ -266,24 +291,27 @@ public final class SimVehicle {
                 battery = Math.max(0, Math.min(100, c.param2));
                 yield MAV_RESULT.MAV_RESULT_ACCEPTED;
             }
-            case MAV_CMD.MAV_CMD_SET_MESSAGE_INTERVAL -> setInterval((int) c.param1, c.param2);
+            case MAV_CMD.MAV_CMD_SET_MESSAGE_INTERVAL -> setInterval((int) c.param1, c.param2, now);
             case MAV_CMD.MAV_CMD_REQUEST_MESSAGE -> {
                 if (!STREAMABLE.contains((int) c.param1)) {
                     yield MAV_RESULT.MAV_RESULT_FAILED;
                 }
-                out.accept(telemetry((int) c.param1));
+                telemetry((int) c.param1).ifPresent(out);
                 yield MAV_RESULT.MAV_RESULT_ACCEPTED;
             }
             case MAV_CMD.MAV_CMD_GET_HOME_POSITION -> {
-                out.accept(telemetry(msg_home_position.MAVLINK_MSG_ID_HOME_POSITION));
+                if (!estimate.ready(lastTick)) {
+                    yield MAV_RESULT.MAV_RESULT_FAILED; // no home yet
+                }
+                telemetry(msg_home_position.MAVLINK_MSG_ID_HOME_POSITION).ifPresent(out);
                 yield MAV_RESULT.MAV_RESULT_ACCEPTED;
             }
             case MAV_CMD.MAV_CMD_MISSION_START -> missionStart(c);
             case MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT -> flight.setCurrent((int) c.param1) ? MAV_RESULT.MAV_RESULT_ACCEPTED
                     : MAV_RESULT.MAV_RESULT_FAILED;
-            case MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH -> setModeIfValid(kind.rtlMode) ? MAV_RESULT.MAV_RESULT_ACCEPTED
+            case MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH -> setModeIfValid(firmware.rtlMode()) ? MAV_RESULT.MAV_RESULT_ACCEPTED
                     : MAV_RESULT.MAV_RESULT_FAILED;
-            case MAV_CMD.MAV_CMD_NAV_LAND -> kind == VehicleKind.COPTER && setModeIfValid(MissionFlight.COPTER_LAND_MODE)
+            case MAV_CMD.MAV_CMD_NAV_LAND -> firmware.landMode().isPresent() && setModeIfValid(firmware.landMode().getAsInt())
                     ? MAV_RESULT.MAV_RESULT_ACCEPTED : MAV_RESULT.MAV_RESULT_UNSUPPORTED;
             default -> MAV_RESULT.MAV_RESULT_UNSUPPORTED;
         };
@@ -294,7 +322,7 @@ public final class SimVehicle {
         if (c.param1 != 0 || c.param2 != 0) {
             return MAV_RESULT.MAV_RESULT_DENIED;
         }
-        if (mode != kind.autoMode && !setModeIfValid(kind.autoMode)) {
+        if (mode != firmware.autoMode() && !setModeIfValid(firmware.autoMode())) {
             return MAV_RESULT.MAV_RESULT_FAILED;
         }
         flight.missionStart();
@@ -326,45 +354,72 @@ public final class SimVehicle {
         if (armed) {
             return MAV_RESULT.MAV_RESULT_ACCEPTED;
         }
-        if (kind == VehicleKind.COPTER && mode == kind.autoMode) {
-            text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, "Arm: AUTO mode not armable");
+        var refusal = firmware.armRefusal(mode);
+        if (refusal.isPresent()) {
+            outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, refusal.get());
             return MAV_RESULT.MAV_RESULT_FAILED;
         }
-        if (!prearmPassed(now)) {
-            text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, "PreArm: Need Position Estimate");
+        if (!estimate.ready(now)) {
+            outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, PositionEstimate.FAILURE);
             return MAV_RESULT.MAV_RESULT_FAILED;
         }
         armed = true;
+        outbox.text(MAV_SEVERITY.MAV_SEVERITY_INFO, firmware.armedText());
         return MAV_RESULT.MAV_RESULT_ACCEPTED;
     }
 
     private int disarm(float force) {
-        if (armed && position.hae() - home.hae() > 1 && (int) force != FORCE_DISARM) {
-            text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, "Disarm: vehicle is flying");
+        if (armed && !craft.onGround() && !craft.contact() && (int) force != FORCE_DISARM) {
+            outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, "Disarm: vehicle is flying");
             return MAV_RESULT.MAV_RESULT_FAILED;
         }
-        armed = false;
-        flight.disarmed();
+        disarmNow();
         return MAV_RESULT.MAV_RESULT_ACCEPTED;
     }
 
+    private void disarmNow() {
+        if (armed) {
+            outbox.text(MAV_SEVERITY.MAV_SEVERITY_INFO, firmware.disarmedText());
+        }
+        armed = false;
+        craft.settle();
+        flight.disarmed();
+    }
+
     private boolean setModeIfValid(long custom) {
-        if (!kind.family.modes().containsKey(custom) || options.refuseModeChanges()) {
+        if (!firmware.family().modes().containsKey(custom) || options.refuseModeChanges()) {
             return false;
         }
-        if (custom == kind.autoMode && mode != kind.autoMode && !flight.autoAllowed()) {
-            text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, "Auto: Missing Takeoff Cmd");
+        if (custom == firmware.autoMode() && mode != firmware.autoMode() && !flight.autoAllowed()) {
+            outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, "Auto: Missing Takeoff Cmd");
             return false;
         }
-        int from = mode;
-        mode = (int) custom;
-        flight.modeChanged(from, mode);
+        changeMode((int) custom);
         return true;
     }
 
-    private int setHome(msg_command_long c) {
+    /** The heartbeat announcing a new mode goes out at once, after the answer to the command that set it. */
+    private void changeMode(int to) {
+        int from = mode;
+        mode = to;
+        if (to != from) {
+            modeToAnnounce = true;
+        }
+        flight.modeChanged(from, mode);
+    }
+
+    private void announceMode() {
+        modeToAnnounce = false;
+        send(heartbeat());
+    }
+
+    /** Home is the current position (p1 = 1) or the one given; with no position estimate yet, there is none to set. */
+    private int setHome(msg_command_long c, long now) {
+        if (!estimate.ready(now)) {
+            return MAV_RESULT.MAV_RESULT_FAILED;
+        }
         if (c.param1 == 1) {
-            home = position;
+            home = craft.position();
         } else {
             if (!(Math.abs(c.param5) <= 90 && Math.abs(c.param6) <= 180)) {
                 return MAV_RESULT.MAV_RESULT_DENIED;
@@ -374,40 +429,51 @@ public final class SimVehicle {
         return MAV_RESULT.MAV_RESULT_ACCEPTED;
     }
 
-    private int setInterval(int msgid, float micros) {
+    private int setInterval(int msgid, float micros, long now) {
         if (!options.messageIntervalSupported()) {
             return MAV_RESULT.MAV_RESULT_UNSUPPORTED;
         }
         if (!STREAMABLE.contains(msgid)) {
             return MAV_RESULT.MAV_RESULT_FAILED;
         }
-        if (micros < 0 || (micros == 0 && kind.defaultStreamHz == 0)) {
+        if (micros < 0 || (micros == 0 && firmware.defaultStreamHz() == 0)) {
             intervals.remove(msgid);
+            nextDue.remove(msgid);
         } else {
-            intervals.put(msgid, micros == 0 ? (long) (SECOND / kind.defaultStreamHz) : (long) (micros * 1000));
+            stream(msgid, micros == 0 ? (long) (SECOND / firmware.defaultStreamHz()) : (long) (micros * 1000), now);
         }
-        nextDue.remove(msgid);
         return MAV_RESULT.MAV_RESULT_ACCEPTED;
     }
 
-    private void requestDataStream(msg_request_data_stream r) {
+    private void requestDataStream(msg_request_data_stream r, long now) {
         Set<Integer> ids = switch (r.req_stream_id) {
             case MAV_DATA_STREAM.MAV_DATA_STREAM_ALL -> STREAMABLE;
             case MAV_DATA_STREAM.MAV_DATA_STREAM_EXTENDED_STATUS -> Set.of(msg_sys_status.MAVLINK_MSG_ID_SYS_STATUS,
                     msg_mission_current.MAVLINK_MSG_ID_MISSION_CURRENT, msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE);
             case MAV_DATA_STREAM.MAV_DATA_STREAM_POSITION -> Set.of(msg_global_position_int.MAVLINK_MSG_ID_GLOBAL_POSITION_INT);
             case MAV_DATA_STREAM.MAV_DATA_STREAM_EXTRA3 -> Set.of(msg_battery_status.MAVLINK_MSG_ID_BATTERY_STATUS,
-                    msg_home_position.MAVLINK_MSG_ID_HOME_POSITION);
+                    msg_home_position.MAVLINK_MSG_ID_HOME_POSITION, msg_ekf_status_report.MAVLINK_MSG_ID_EKF_STATUS_REPORT);
             default -> Set.of();
         };
         for (int id : ids) {
             if (r.start_stop == 0 || r.req_message_rate == 0) {
                 intervals.remove(id);
+                nextDue.remove(id);
             } else {
-                intervals.put(id, SECOND / r.req_message_rate);
+                stream(id, SECOND / r.req_message_rate, now);
             }
-            nextDue.remove(id);
         }
+    }
+
+    /**
+     * Streams message {@code id} every {@code interval} nanoseconds, in step with the heartbeat (the
+     * first one on the heartbeat's grid of that interval): ArduPilot sends messages of one rate
+     * together, so a 1 Hz stream goes out with each heartbeat.
+     */
+    private void stream(int id, long interval, long now) {
+        intervals.put(id, interval);
+        long ahead = Math.floorMod(nextHeartbeat - now, interval);
+        nextDue.put(id, now + ahead);
     }
 
     /** Answers the sender of the command, as ArduPilot does. */
@@ -417,7 +483,7 @@ public final class SimVehicle {
         a.result = (short) result;
         a.target_system = (short) c.sysid;
         a.target_component = (short) c.compid;
-        out.accept(a);
+        send(a);
     }
 
     private void send(MAVLinkMessage m) {
@@ -435,7 +501,7 @@ public final class SimVehicle {
 
         @Override
         public void text(int severity, String text) {
-            SimVehicle.this.text(severity, text);
+            outbox.text(severity, text);
         }
 
         @Override
@@ -452,13 +518,8 @@ public final class SimVehicle {
     /** The mission flight's view of this vehicle. */
     private final class FlightBody implements MissionFlight.Body {
         @Override
-        public Position position() {
-            return position;
-        }
-
-        @Override
-        public void place(Position p) {
-            position = p;
+        public Craft craft() {
+            return craft;
         }
 
         @Override
@@ -478,53 +539,50 @@ public final class SimVehicle {
 
         @Override
         public void switchMode(int m) {
-            mode = m;
+            changeMode(m);
+            announceMode();
         }
 
         @Override
-        public void touchdown() {
-            armed = false;
-            flight.disarmed();
+        public void disarm() {
+            disarmNow();
+        }
+
+        @Override
+        public void text(int severity, String text) {
+            outbox.text(severity, text);
+        }
+
+        @Override
+        public void reached(int seq) {
+            outbox.reached(seq);
+        }
+
+        @Override
+        public void flush() {
+            outbox.flush();
         }
 
         @Override
         public void send(MAVLinkMessage m) {
             SimVehicle.this.send(m);
         }
-
-        @Override
-        public void text(int severity, String text) {
-            SimVehicle.this.text(severity, text);
-        }
-    }
-
-    private void text(int severity, String text) {
-        if (silent) {
-            return;
-        }
-        msg_statustext t = new msg_statustext();
-        t.severity = (short) severity;
-        t.setText(text);
-        out.accept(t);
     }
 
     private msg_heartbeat heartbeat() {
         msg_heartbeat hb = new msg_heartbeat();
-        hb.type = (short) kind.mavType;
+        hb.type = (short) firmware.mavType();
         hb.autopilot = MAV_AUTOPILOT.MAV_AUTOPILOT_ARDUPILOTMEGA;
         hb.base_mode = (short) (MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED | (armed ? MAV_MODE_FLAG.MAV_MODE_FLAG_SAFETY_ARMED : 0));
         hb.custom_mode = mode;
-        hb.system_status = (short) (armed ? MAV_STATE.MAV_STATE_ACTIVE : MAV_STATE.MAV_STATE_STANDBY);
+        hb.system_status = (short) firmware.systemStatus(armed, craft.onGround());
         hb.mavlink_version = 3;
         return hb;
     }
 
-    /** Whether the pre-arm checks pass: after the warm-up, as ArduPilot once its EKF has settled. */
-    private boolean prearmPassed(long now) {
-        return now - bootNanos >= (long) (options.warmupSeconds() * 1e9);
-    }
-
-    private MAVLinkMessage telemetry(int msgid) {
+    /** What a stream or a request sends of message {@code msgid}; nothing for a home not known yet. */
+    private Optional<MAVLinkMessage> telemetry(int msgid) {
+        boolean located = estimate.ready(lastTick);
         return switch (msgid) {
             case msg_sys_status.MAVLINK_MSG_ID_SYS_STATUS -> {
                 msg_sys_status s = new msg_sys_status();
@@ -534,40 +592,52 @@ public final class SimVehicle {
                 // ArduPilot reports its pre-arm checks as a sensor: present and enabled, healthy when they pass or when armed
                 s.onboard_control_sensors_present = MAV_SYS_STATUS_SENSOR.MAV_SYS_STATUS_PREARM_CHECK;
                 s.onboard_control_sensors_enabled = MAV_SYS_STATUS_SENSOR.MAV_SYS_STATUS_PREARM_CHECK;
-                s.onboard_control_sensors_health = armed || prearmPassed(lastTick) ? MAV_SYS_STATUS_SENSOR.MAV_SYS_STATUS_PREARM_CHECK : 0;
-                yield s;
+                s.onboard_control_sensors_health = armed || located ? MAV_SYS_STATUS_SENSOR.MAV_SYS_STATUS_PREARM_CHECK : 0;
+                yield Optional.of(s);
             }
             case msg_global_position_int.MAVLINK_MSG_ID_GLOBAL_POSITION_INT -> {
+                // without a position estimate ArduPilot sends zeros
                 msg_global_position_int p = new msg_global_position_int();
-                p.lat = MissionItem.degE7(position.latitudeDegrees());
-                p.lon = MissionItem.degE7(position.longitudeDegrees());
-                p.alt = (int) Math.round(position.hae() * 1000);
-                p.relative_alt = (int) Math.round((position.hae() - home.hae()) * 1000);
+                Position position = craft.position();
+                if (located) {
+                    p.lat = MissionItem.degE7(position.latitudeDegrees());
+                    p.lon = MissionItem.degE7(position.longitudeDegrees());
+                    p.alt = (int) Math.round(position.hae() * 1000);
+                    p.relative_alt = (int) Math.round((position.hae() - home.hae()) * 1000);
+                }
                 p.hdg = 65535;
-                yield p;
+                yield Optional.of(p);
             }
             case msg_home_position.MAVLINK_MSG_ID_HOME_POSITION -> {
+                if (!located) {
+                    yield Optional.empty();
+                }
                 msg_home_position h = new msg_home_position();
                 h.latitude = MissionItem.degE7(home.latitudeDegrees());
                 h.longitude = MissionItem.degE7(home.longitudeDegrees());
                 h.altitude = (int) Math.round(home.hae() * 1000);
                 h.q = new float[] {1, 0, 0, 0};
-                yield h;
+                yield Optional.of(h);
+            }
+            case msg_ekf_status_report.MAVLINK_MSG_ID_EKF_STATUS_REPORT -> {
+                // SITL's flags: attitude, velocities and height from boot (167); the horizontal position too once located (831)
+                msg_ekf_status_report e = new msg_ekf_status_report();
+                e.flags = located ? EKF_LOCATED : EKF_BOOTING;
+                yield Optional.of(e);
             }
             case msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE -> {
                 msg_extended_sys_state e = new msg_extended_sys_state();
-                e.landed_state = (short) (position.hae() - home.hae() > 0.5 ? MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR
-                        : MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND);
-                yield e;
+                e.landed_state = (short) firmware.landedState(craft.onGround(), flight.manoeuvreState());
+                yield Optional.of(e);
             }
             case msg_battery_status.MAVLINK_MSG_ID_BATTERY_STATUS -> {
                 msg_battery_status b = new msg_battery_status();
                 b.battery_remaining = (byte) Math.round(battery);
                 b.current_battery = (short) (armed ? 2800 : 0);
                 b.voltages = new int[] {4200, 4200, 4200, 65535, 65535, 65535, 65535, 65535, 65535, 65535};
-                yield b;
+                yield Optional.of(b);
             }
-            default -> flight.missionCurrent();
+            default -> Optional.of(flight.missionCurrent());
         };
     }
 }

@@ -1,5 +1,6 @@
 package dolphin.cli
 
+import dolphin.mavlink.mission.MissionExecutorConfig
 import dolphin.mavlink.mission.MissionTransferConfig
 import dolphin.sim.FaultModel
 import java.time.Duration
@@ -88,6 +89,13 @@ class RunCommandSpec extends Specification {
         then:
         command.mavlinkConfig().commandAttempts() == 5
         command.transferConfig() == new MissionTransferConfig(Duration.ofMillis(1500), 5)
+        command.executorConfig() == MissionExecutorConfig.DEFAULT
+    }
+
+    def "--ready-timeout is how long a mission waits for its vehicle to become ready"() {
+        expect:
+        parsed(EXAMPLE, '--ready-timeout', '600').executorConfig().prepare() == Duration.ofMinutes(10)
+        MissionExecutorConfig.DEFAULT.prepare() == Duration.ofMinutes(3)
     }
 
     def "dolphin run talks to vehicles that dolphin sim started separately"() {
@@ -193,5 +201,6 @@ class RunCommandSpec extends Specification {
         ['run', EXAMPLE, '--transfer-timeout', '-1500']            | '--transfer-timeout must be a positive number of milliseconds, got -1500'
         ['run', EXAMPLE, '--transfer-timeout', '1.5s']             | "Invalid value for option '--transfer-timeout': '1.5s' is not a long"
         ['run', EXAMPLE, '--transfer-tries', '0']                  | '--transfer-tries must be at least 1, got 0'
+        ['run', EXAMPLE, '--ready-timeout', '0']                   | '--ready-timeout must be a positive number of seconds, got 0'
     }
 }

@@ -1,6 +1,5 @@
 package dolphin.sitl
 
-import com.MAVLink.enums.MAV_SYS_STATUS_SENSOR
 import dolphin.core.Position
 import dolphin.core.SystemClock
 import dolphin.core.TaskEvent
@@ -21,16 +20,15 @@ import spock.util.concurrent.PollingConditions
 /**
  * Our ground station (MAVLinkCommunications on udpin 127.0.0.1, a private port, real time, as
  * `dolphin run` has it) and the SITL processes that send to it. Configured from the environment:
- * ARDUPILOT_SITL_BIN (arducopter), ARDUPILOT_SITL_PLANE_BIN (arduplane), ARDUPILOT_SITL_DEFAULTS and
- * ARDUPILOT_SITL_PLANE_DEFAULTS (their parameter files; by default ArduPilot's
- * Tools/autotest/default_params/copter.parm or plane.parm found from a binary in build/sitl/bin),
+ * ARDUPILOT_SITL_BIN (arducopter), ARDUPILOT_SITL_PLANE_BIN (arduplane), ARDUPILOT_SITL_ROVER_BIN
+ * (ardurover), ARDUPILOT_SITL_DEFAULTS, ARDUPILOT_SITL_PLANE_DEFAULTS and ARDUPILOT_SITL_ROVER_DEFAULTS
+ * (their parameter files; by default ArduPilot's copter.parm, plane.parm or rover.parm, found in
+ * Tools/autotest from a binary in build/sitl/bin),
  * ARDUPILOT_SITL_SPEEDUP (SITL's --speedup, default 1). Close it to stop every process.
  */
 class SitlHarness implements AutoCloseable {
 
     static final double SPEEDUP = (System.getenv('ARDUPILOT_SITL_SPEEDUP') ?: '1') as double
-    /** ArduCopter SITL passes its pre-arm checks about 24 s after boot and accepts arming in GUIDED at about 42 s. */
-    static final double READY_SECONDS = 120
 
     final MAVLinkCommunications comms
     final List<SitlVehicle> vehicles = []
@@ -63,30 +61,10 @@ class SitlHarness implements AutoCloseable {
             return new File(named).absolutePath
         }
         def guess = new File(binary).parentFile?.parentFile?.parentFile?.parentFile
-        def parm = guess == null ? null : new File(guess, "Tools/autotest/default_params/${parmFile}")
-        parm?.isFile() ? parm.absolutePath : null
-    }
-
-    /**
-     * Waits until the vehicle is discovered, knows its position and home (ArduPilot sends
-     * HOME_POSITION once its EKF has an origin) and, when its SYS_STATUS carries the pre-arm bit,
-     * passes its pre-arm checks. Arming itself may still be refused for a while (GUIDED needs a
-     * position estimate): the MissionExecutor retries it until its deadline.
-     */
-    MAVLinkNode waitReady(SitlVehicle v) {
-        MAVLinkNode node = null
-        new PollingConditions(timeout: READY_SECONDS, delay: 0.2).eventually {
-            assert v.alive: "${v} exited:\n${v.logTail()}"
-            node = comms.node("${v.sysid}")
-            assert node != null: "vehicle ${v.sysid} not discovered; ${v}"
-            assert node.home != null && node.position != null
-            assert node.position.latitudeDegrees() != 0
-            def status = node.lastSystemStatus
-            assert status != null
-            long prearm = MAV_SYS_STATUS_SENSOR.MAV_SYS_STATUS_PREARM_CHECK
-            assert (status.onboard_control_sensors_present & prearm) == 0 || (status.onboard_control_sensors_health & prearm) != 0
-        }
-        node
+        // copter.parm and rover.parm are in default_params, plane.parm among the models
+        def parm = guess == null ? null : ['default_params', 'models'].collect { new File(guess, "Tools/autotest/${it}/${parmFile}") }
+                .find { it.isFile() }
+        parm?.absolutePath
     }
 
     /** Runs a script with a new Engine on this ground station; its result, or a failure after {@code deadline}. */

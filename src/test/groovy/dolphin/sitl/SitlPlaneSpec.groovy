@@ -18,8 +18,8 @@ import static dolphin.testing.ScriptLines.inOrder
 
 /**
  * Dolphin against ArduPlane SITL: one plane (system id 11, instance 2, so its ports never clash with
- * SitlSpec's copters). Runs only when ARDUPILOT_SITL_PLANE_BIN names an arduplane binary; otherwise
- * every feature is skipped.
+ * SitlSpec's copters), started with the script. Runs only when ARDUPILOT_SITL_PLANE_BIN names an
+ * arduplane binary; otherwise every feature is skipped.
  */
 @Requires({ env.ARDUPILOT_SITL_PLANE_BIN })
 @Stepwise
@@ -39,27 +39,25 @@ class SitlPlaneSpec extends Specification {
         sitl.start('ARDUPILOT_SITL_PLANE_BIN', 'ARDUPILOT_SITL_PLANE_DEFAULTS', 'plane.parm', 'plane', 11, 2, HOME)
     }
 
-    def "a plane with system id 11 is discovered and passes its pre-arm checks"() {
-        when:
-        node = sitl.waitReady(sitl.vehicles[0])
-
-        then:
-        node.mavLinkId == 11
-        node.family == VehicleFamily.PLANE
-        node.home.distanceTo(HOME) < 20
-    }
-
-    def "the plane takes off, flies two waypoints and a loiter turn back to home, and the mission completes; it comes back as built"() {
+    def "started with the plane, as a user would: it waits for the plane to be ready, takes off, flies two waypoints and a loiter turn back to home, and the mission ends as ArduPlane ends it (its own RTL); it comes back as built"() {
         given:
         String script = 'src/test/resources/sitl/plane.dolphin'
 
-        when:
+        when: 'the script starts as soon as the SITL process does (setupSpec)'
         def r = sitl.run(new File(script).text, script, Duration.ofMinutes(10))
+        node = sitl.comms.node('11')
 
-        then:
+        then: 'a plane with system id 11, waited for until it was ready'
+        node.family == VehicleFamily.PLANE
+        node.home.distanceTo(HOME) < 20
+        r.lines.any { it.startsWith('waiting for vehicle 11: ') }
+
+        and:
         r.result.outcome() == ScriptResult.Outcome.COMPLETED
-        inOrder(r.lines, 'mission circuit on vehicle 11: uploading 6 items', 'mission circuit on vehicle 11: armed',
-                'mission circuit on vehicle 11: started', 'mission circuit on vehicle 11: done', 'circuit: DONE')
+        inOrder(r.lines, 'mission circuit on vehicle 11: vehicle ready after *', 'mission circuit on vehicle 11: uploading 6 items',
+                'mission circuit on vehicle 11: armed', 'mission circuit on vehicle 11: started', 'mission circuit on vehicle 11: done',
+                'circuit: DONE')
+        node.modeName == 'RTL'
         !MissionVerification.firstDifference(r.engine.variable('circuit').items(node.home), sitl.download(node)).present
     }
 }

@@ -26,8 +26,10 @@ import static dolphin.testing.ScriptLines.vehicleOf
 /**
  * Dolphin against ArduCopter SITL: two copters on loopback (see README, "Against ArduPilot SITL").
  * Runs only when ARDUPILOT_SITL_BIN names an arducopter binary; otherwise every feature is skipped.
- * The features build on each other (the vehicles fly one after the other) and follow ArduPilot's own
- * autotest: every wait has a deadline, and every mission is checked by downloading it back.
+ * The first script starts with the SITL processes, as a user would start it with the vehicles: the
+ * missions wait until the vehicles are ready (docs/mavlink.md, "Readiness"). The features build on
+ * each other (the vehicles fly one after the other) and follow ArduPilot's own autotest: every wait
+ * has a deadline, and every mission is checked by downloading it back.
  */
 @Requires({ env.ARDUPILOT_SITL_BIN })
 @Stepwise
@@ -36,7 +38,7 @@ class SitlSpec extends Specification {
 
     /** The home of dsl-examples/two-drones-survey.dolphin and of every-command.dolphin. */
     static final Position HOME = Position.fromDegrees(40.444233, -7.375234, 820)
-    /** At SITL's real time, the scenario takes about 6 minutes and the every-command flight about 5. */
+    /** At SITL's real time, the scenario takes about 7 minutes from boot and the every-command flight about 5. */
     static final Duration RUN_DEADLINE = Duration.ofMinutes(15)
     /** The survey is cut below 70 %: the battery is set just above it once the survey has begun. */
     static final float CUT_BATTERY = 72
@@ -57,23 +59,13 @@ class SitlSpec extends Specification {
         }
     }
 
-    def "two copters with system ids 1 and 2 are discovered on our udpin port and pass their pre-arm checks"() {
-        when:
-        nodes = sitl.vehicles.collect { sitl.waitReady(it) }
-
-        then:
-        nodes*.mavLinkId == [1, 2]
-        nodes.every { it.family == VehicleFamily.COPTER }
-        nodes.every { it.home.distanceTo(HOME) < 20 }
-    }
-
-    def "the recorded two-vehicle scenario: surveys cut below 70 % (battery set to 72 % on the survey), RTL, return missions, landed at home"() {
+    def "started with the vehicles, as a user would: the recorded two-vehicle scenario waits for them to be ready, surveys cut below 70 % (battery set to 72 % on the survey), RTL, return missions, landed at home"() {
         given: 'a watcher that sets each battery to 72 % once its vehicle flies the survey (item 2 on, after the take-off)'
         Map<Integer, CommandResult> resets = new ConcurrentHashMap<>()
         Thread watcher = Thread.start('battery reset') {
             try {
-                while (resets.size() < nodes.size()) {
-                    nodes.findAll { !resets.containsKey(it.mavLinkId) && it.armed && it.state().missionSeq() >= 2 }.each {
+                while (resets.size() < 2) {
+                    sitl.comms.nodes().findAll { !resets.containsKey(it.mavLinkId) && it.armed && it.state().missionSeq() >= 2 }.each {
                         // param1: battery mask (the first battery, the one SYS_STATUS reports), param2: percentage
                         resets[it.mavLinkId] = sitl.command(it, MAV_CMD.MAV_CMD_BATTERY_RESET, 1, CUT_BATTERY, 0, 0, 0, 0, 0)
                     }
@@ -84,17 +76,24 @@ class SitlSpec extends Specification {
             }
         }
 
-        when:
+        when: 'the script starts as soon as the SITL processes do (setupSpec)'
         scenario = sitl.run(new File('dsl-examples/two-drones-survey.dolphin').text, 'dsl-examples/two-drones-survey.dolphin', RUN_DEADLINE)
         List<String> lines = scenario.lines
+        nodes = sitl.comms.nodes()
 
-        then:
+        then: 'two copters, system ids 1 and 2, each waited for until its EKF had a position'
+        nodes*.mavLinkId == [1, 2]
+        nodes.every { it.family == VehicleFamily.COPTER && it.home.distanceTo(HOME) < 20 }
+        [1, 2].every { n -> lines.any { it.startsWith("waiting for vehicle ${n}: ") } }
+
+        and:
         scenario.result.outcome() == ScriptResult.Outcome.COMPLETED
         resets.keySet() == [1, 2] as Set
         resets.values().every { it.accepted() }
         [['Survey Area 1', 'Return to base 1'], ['Survey Area 2', 'Return to base 2']].every { survey, back ->
             int n = vehicleOf(lines, survey)
-            int i = after(lines, -1, "mission ${survey} on vehicle ${n}: started")
+            int i = after(lines, -1, "mission ${survey} on vehicle ${n}: vehicle ready after *")
+            i = after(lines, i, "mission ${survey} on vehicle ${n}: started")
             i = after(lines, i, "mission ${survey} on vehicle ${n}: cut short: RTL")
             int cut = after(lines, i, "vehicle { ${n} } cut short at battery *")
             assert ((lines[cut] =~ /battery (\d+) %/)[0][1] as int) in 50..70

@@ -15,16 +15,12 @@ import dolphin.mavlink.MAVLinkNode;
 import dolphin.mavlink.VehicleFamily;
 import dolphin.mavlink.VehicleState;
 import java.time.Duration;
-import java.util.ArrayDeque;
-import java.util.Deque;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.OptionalLong;
 import java.util.TreeMap;
 import java.util.concurrent.CompletableFuture;
-import java.util.function.Predicate;
-import java.util.function.Supplier;
 
 /**
  * Flies a {@link Mission} on one vehicle (report Listing 8; design §6): a state machine stepped on
@@ -36,24 +32,14 @@ public final class MissionExecutor extends PlatformTaskExecutor {
 
     public enum State { PREPARE, UPLOAD, VERIFY, ARM, START, RUNNING, DONE, ERROR }
 
-    /**
-     * A command of PREPARE or START: what it is (for errors), how to send it, and how the vehicle's
-     * state shows it took effect (for when every COMMAND_ACK was lost on the way back).
-     */
-    private record Step(String what, Supplier<CompletableFuture<CommandResult>> send, Predicate<VehicleState> effect,
-                        boolean waitable) {
-        Step(String what, Supplier<CompletableFuture<CommandResult>> send, Predicate<VehicleState> effect) {
-            this(what, send, effect, false);
-        }
-    }
-
     private final Mission mission;
-    private final Deque<Step> steps = new ArrayDeque<>();
     private final Map<JumpToItem, Integer> jumpsLeft = new HashMap<>();
     private MAVLinkNode node;
     private MAVLinkCommunications comms;
     private MissionExecutorConfig config;
     private FlightRules rules;
+    /** The commands of PREPARE and START. */
+    private CommandSteps steps;
     private List<MissionItem> items;
     private MissionEnd end;
     private TreeMap<Integer, List<DroneCommand>> keyed;
@@ -107,6 +93,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         comms = node.communications();
         config = comms.missionExecutorConfig();
         rules = FlightRules.of(node.getFamily());
+        steps = new CommandSteps(node.getId(), node::state, config.retry(), this::waitFor, this::watch);
         node.setExecutor(this);
         keyed = new TreeMap<>(mission.nonMissionCommands());
         keyed.values().forEach(cmds -> cmds.stream().filter(c -> c instanceof JumpToItem)
@@ -130,11 +117,11 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             case VERIFY -> verify();
             case ARM -> arm(now);
             case START -> {
-                if (runSteps(now)) {
+                if (steps.run(now)) {
                     progress("started");
                     enter(State.RUNNING, Duration.ZERO);
                 }
-                yield failure != null ? fail(failure) : CompletionState.IN_PROGRESS;
+                yield steps.failure() != null ? fail(steps.failure()) : CompletionState.IN_PROGRESS;
             }
             case RUNNING -> running();
             case DONE -> CompletionState.DONE;
@@ -157,8 +144,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             ready = true;
             queuePreparation();
         }
-        if (!runSteps(now)) {
-            return failure != null ? fail(failure) : CompletionState.IN_PROGRESS;
+        if (!steps.run(now)) {
+            return steps.failure() != null ? fail(steps.failure()) : CompletionState.IN_PROGRESS;
         }
         try {
             items = mission.items(node.getHome());
@@ -188,11 +175,11 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         VehicleState s = node.state();
         if (s.armed() && isMode(s, "AUTO")) {
             String hold = rules.holdMode();
-            steps.add(new Step("leaving AUTO for " + hold + " before the new mission", () -> setMode(hold), st -> isMode(st, hold)));
+            steps.add(new CommandSteps.Step("leaving AUTO for " + hold + " before the new mission", () -> setMode(hold), st -> isMode(st, hold)));
         }
         if (mission.getHome() != null) {
             var h = mission.getHome();
-            steps.add(new Step("DO_SET_HOME", () -> comms.command(node, MAV_CMD.MAV_CMD_DO_SET_HOME, 0, 0, 0, 0,
+            steps.add(new CommandSteps.Step("DO_SET_HOME", () -> comms.command(node, MAV_CMD.MAV_CMD_DO_SET_HOME, 0, 0, 0, 0,
                     (float) h.latitudeDegrees(), (float) h.longitudeDegrees(), (float) h.hae()),
                     st -> st.home() != null && st.home().distanceTo(h) < 1, true));
         }
@@ -268,8 +255,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             if (r == null) {
                 return CompletionState.IN_PROGRESS;
             }
-            if (!tookEffect(r, st -> isMode(st, mode))) {
-                return fail(refusal(mode, r));
+            if (!steps.tookEffect(r, st -> isMode(st, mode))) {
+                return fail(steps.refusal(mode, r));
             }
             armModeSet = true;
         }
@@ -283,11 +270,15 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         if (r == null) {
             return CompletionState.IN_PROGRESS;
         }
-        if (tookEffect(r, VehicleState::armed)) {
+        if (steps.tookEffect(r, VehicleState::armed)) {
             progress("armed");
-            steps.add(new Step("AUTO", () -> setMode("AUTO"), st -> isMode(st, "AUTO")));
+            // From the first item, whatever the vehicle ran before: ArduPilot keeps its mission's current item
+            // across an upload, and a copter on the ground refuses AUTO unless that item leads to a take-off.
+            steps.add(new CommandSteps.Step("MAV_CMD_DO_SET_MISSION_CURRENT 1", () -> comms.command(node,
+                    MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT, 1, 1), st -> st.missionSeq() == 1));
+            steps.add(new CommandSteps.Step("AUTO", () -> setMode("AUTO"), st -> isMode(st, "AUTO")));
             if (rules.needsMissionStart()) {
-                steps.add(new Step("MAV_CMD_MISSION_START", () -> comms.command(node, MAV_CMD.MAV_CMD_MISSION_START, 0, 0),
+                steps.add(new CommandSteps.Step("MAV_CMD_MISSION_START", () -> comms.command(node, MAV_CMD.MAV_CMD_MISSION_START, 0, 0),
                         st -> st.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE));
             }
             enter(State.START, config.start());
@@ -395,44 +386,6 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         return CompletionState.DONE;
     }
 
-    /**
-     * Sends each step's command in turn; true when all were accepted. A refusal fails the mission,
-     * except that a waitable step refused for now (FAILED, TEMPORARILY_REJECTED) is sent again after
-     * the retry pause, until the state's deadline.
-     */
-    private boolean runSteps(long now) {
-        while (true) {
-            if (pending == null) {
-                if (steps.isEmpty()) {
-                    return true;
-                }
-                if (now < nextAttempt) {
-                    return false;
-                }
-                pending = watch(steps.peek().send().get());
-            }
-            CommandResult r = commandDone();
-            if (r == null) {
-                return false;
-            }
-            Step step = steps.peek();
-            if (tookEffect(r, step.effect())) {
-                steps.poll();
-            } else if (step.waitable() && refusedForNow(r)) {
-                waitFor(step.what() + " " + r.resultName() + Readiness.prearmText(node.state()).map(t -> " (" + t + ")").orElse(""));
-                nextAttempt = now + config.retry().toNanos();
-                return false;
-            } else {
-                failure = refusal(step.what(), r);
-                return false;
-            }
-        }
-    }
-
-    private static boolean refusedForNow(CommandResult r) {
-        return r.result() == MAV_RESULT.MAV_RESULT_FAILED || r.result() == MAV_RESULT.MAV_RESULT_TEMPORARILY_REJECTED;
-    }
-
     private CompletableFuture<CommandResult> setMode(String name) {
         OptionalLong mode = getFamily().modeNumber(name);
         if (mode.isEmpty()) {
@@ -447,21 +400,6 @@ public final class MissionExecutor extends PlatformTaskExecutor {
 
     private static boolean isMode(VehicleState s, String name) {
         return s.heartbeat() != null && s.family().modeNumber(name).orElse(-1) == s.customMode();
-    }
-
-    /**
-     * Accepted, or unanswered while the vehicle's state shows the command took effect: on a lossy
-     * link every COMMAND_ACK may be lost although the command arrived.
-     */
-    private boolean tookEffect(CommandResult r, Predicate<VehicleState> effect) {
-        return r.accepted() || (r.result() == CommandResult.NO_ACK && effect.test(node.state()));
-    }
-
-    /** A refusal, or silence: a vehicle that never answered may not have heard the command at all. */
-    private String refusal(String what, CommandResult r) {
-        return "vehicle " + node.getId() + (r.result() == CommandResult.NO_ACK
-                ? " did not answer " + what + ": no COMMAND_ACK after " + r.attempts() + " attempt(s)"
-                : " refused " + what + ": " + r.resultName());
     }
 
     private CommandResult commandDone() {

@@ -12,6 +12,8 @@ import spock.lang.AutoCleanup
 import spock.lang.Specification
 import spock.lang.Timeout
 
+import static dolphin.testing.ScriptLines.inOrder
+
 /** Missions flown end to end: a script, the MissionExecutor, the protocols, simulated vehicles over UDP. */
 @Timeout(120)
 class MissionExecutorSpec extends Specification {
@@ -82,7 +84,7 @@ class MissionExecutorSpec extends Specification {
     }
 
     def "a vehicle that never becomes ready: waited for, then an ERROR, seen by watch"() {
-        given: 'a vehicle failing its pre-arm checks for 10 minutes, and a 40 s readiness deadline'
+        given: 'a vehicle without a position estimate for 10 minutes (it says so 15 s after boot), and a 40 s readiness deadline'
         h.comms.missionExecutorConfig = MissionExecutorConfig.DEFAULT.withPrepare(Duration.ofSeconds(40))
         h.fleet(1, VehicleKind.COPTER, 1, SimOptions.DEFAULT.withWarmup(600))
 
@@ -94,9 +96,9 @@ class MissionExecutorSpec extends Specification {
 
         then: 'it said what it waited for, uploaded nothing, and ended in ERROR saying so'
         result.outcome == ScriptResult.Outcome.COMPLETED
-        messages.any { it.startsWith('waiting for vehicle 1: ') }
+        inOrder(messages, 'waiting for vehicle 1: no position estimate yet', 'waiting for vehicle 1: PreArm: Need Position Estimate')
         !messages.any { it.contains('uploading') }
-        messages.any { it.startsWith('caught: mission hop on vehicle 1: vehicle 1 was not ready within 40 s: ') }
+        messages.contains('caught: mission hop on vehicle 1: vehicle 1 was not ready within 40 s: PreArm: Need Position Estimate')
     }
 
     def "a vehicle started with the script: the mission waits until it is ready, then flies"() {

@@ -31,6 +31,9 @@ class ReadinessSpec extends Specification {
             status.onboard_control_sensors_health = m.prearm ? PREARM : 0
             s = s.withSystemStatus(status, 0)
         }
+        if (m.ekf != null) {
+            s = s.withEkfFlags(m.ekf as int)
+        }
         (m.texts ?: []).each { s = s.withStatusText(it as String) }
         s
     }
@@ -45,6 +48,9 @@ class ReadinessSpec extends Specification {
         'its PreArm text is quoted when it sent one'           | [prearm: false, texts: ['PreArm: Need Position Estimate', 'GPS 1: detected u-blox']] | true || 'PreArm: Need Position Estimate'
         'a position but no home, when the mission needs it'    | [position: true, prearm: true]                               | true      || 'no home position yet'
         'no home is fine when the mission names its own'       | [position: true, prearm: true]                               | false     || null
+        'a position, but the EKF has no absolute one yet (ArduRover sends GPS early)' | [position: true, home: true, prearm: true, ekf: 167] | true || 'no position estimate yet (EKF: no absolute horizontal position)'
+        'the EKF in constant-position mode'                    | [position: true, home: true, prearm: true, ekf: 831 | 128]  | true      || 'no position estimate yet (EKF: no absolute horizontal position)'
+        'the EKF using GPS'                                    | [position: true, home: true, prearm: true, ekf: 831]         | true      || null
         'pre-arm checks failing while disarmed'                | [position: true, home: true, prearm: false, texts: ['PreArm: Gyros inconsistent']] | true || 'PreArm: Gyros inconsistent'
         'pre-arm checks failing, no text yet'                  | [position: true, home: true, prearm: false]                  | true      || 'pre-arm checks failing'
         'armed and flying: the pre-arm sensor does not matter' | [armed: true, position: true, home: true, prearm: false]     | true      || null

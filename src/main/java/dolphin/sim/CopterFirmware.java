@@ -1,0 +1,159 @@
+package dolphin.sim;
+
+import com.MAVLink.enums.COPTER_MODE;
+import com.MAVLink.enums.MAV_LANDED_STATE;
+import com.MAVLink.enums.MAV_STATE;
+import com.MAVLink.enums.MAV_TYPE;
+import dolphin.core.Position;
+import dolphin.mavlink.VehicleFamily;
+import dolphin.mavlink.mission.MissionItem;
+import java.util.Optional;
+import java.util.OptionalInt;
+
+/**
+ * ArduCopter as SITL runs it with copter.parm: WPNAV_SPEED 10 m/s, WPNAV_SPEED_UP 2.5, WPNAV_SPEED_DN
+ * 1.5; waypoints reached within about a metre (SITL: 0.6 to 1.5 m), whatever their param2; a
+ * vertical take-off, hovering to hold, landing and RTL with LAND's descent; no streams until asked.
+ */
+final class CopterFirmware implements Firmware {
+
+    private static final Performance PERFORMANCE = new Performance(10, 2.5, 1.5, 1, 10);
+
+    @Override
+    public int mavType() {
+        return MAV_TYPE.MAV_TYPE_QUADROTOR;
+    }
+
+    @Override
+    public VehicleFamily family() {
+        return VehicleFamily.COPTER;
+    }
+
+    @Override
+    public int bootMode() {
+        return COPTER_MODE.COPTER_MODE_STABILIZE;
+    }
+
+    @Override
+    public int autoMode() {
+        return COPTER_MODE.COPTER_MODE_AUTO;
+    }
+
+    @Override
+    public int rtlMode() {
+        return COPTER_MODE.COPTER_MODE_RTL;
+    }
+
+    @Override
+    public OptionalInt landMode() {
+        return OptionalInt.of(COPTER_MODE.COPTER_MODE_LAND);
+    }
+
+    @Override
+    public double defaultStreamHz() {
+        return 0;
+    }
+
+    @Override
+    public Performance performance() {
+        return PERFORMANCE;
+    }
+
+    /** ModeAuto::allows_arming: AUTO is not armable without AUTO_OPTIONS. */
+    @Override
+    public Optional<String> armRefusal(int mode) {
+        return mode == autoMode() ? Optional.of("Arm: AUTO mode not armable") : Optional.empty();
+    }
+
+    @Override
+    public String armedText() {
+        return "Arming motors";
+    }
+
+    @Override
+    public String disarmedText() {
+        return "Disarming motors";
+    }
+
+    /** Without MISSION_START (or throttle) the copter is not auto_armed and does not take off. */
+    @Override
+    public boolean waitsForMissionStart() {
+        return true;
+    }
+
+    /** ModeAuto::init: "Auto: Missing Takeoff Cmd". */
+    @Override
+    public boolean autoNeedsTakeoff() {
+        return true;
+    }
+
+    /** AP_Arming_Copter::disarm resets the mission; AP_Mission, still running in AUTO, starts it over. */
+    @Override
+    public boolean restartsMissionOnDisarm() {
+        return true;
+    }
+
+    @Override
+    public double acceptanceRadius(MissionItem waypoint) {
+        return PERFORMANCE.waypointRadius();
+    }
+
+    /** A copter must be at the point's height too: reached within the radius in three dimensions. */
+    @Override
+    public boolean reach(Craft craft, Position target, double radius, double dt) {
+        craft.fly(target, dt);
+        double[] ned = craft.position().displacementTo(target);
+        return Math.sqrt(ned[0] * ned[0] + ned[1] * ned[1] + ned[2] * ned[2]) <= radius;
+    }
+
+    @Override
+    public Manoeuvre takeoff(Craft craft, double altitude) {
+        return new VerticalTakeoff(craft, altitude);
+    }
+
+    @Override
+    public Manoeuvre holdAt(Craft craft, Position at) {
+        return Manoeuvre.STAY;
+    }
+
+    @Override
+    public Manoeuvre landing(Craft craft, Position over) {
+        return new Landing(craft, over);
+    }
+
+    @Override
+    public Manoeuvre returnHome(Craft craft, Position home, boolean asMissionItem) {
+        return new ReturnAndLand(craft, home);
+    }
+
+    @Override
+    public Optional<String> arrivalText(int seq, double distance, double holdSeconds) {
+        return Optional.empty();
+    }
+
+    /** ModeAuto::verify_nav_wp and verify_loiter_time, once the hold is over. */
+    @Override
+    public Optional<String> completionText(int seq) {
+        return Optional.of("Reached command #" + seq);
+    }
+
+    /** ModeAuto::exit_mission: hovers where it is in AUTO; on the ground it disarms. */
+    @Override
+    public void missionComplete(MissionFlight.Body body) {
+        if (body.armed() && body.craft().contact()) {
+            body.disarm();
+        }
+    }
+
+    /** GCS_MAVLINK_Copter::landed_state. */
+    @Override
+    public int landedState(boolean onGround, int manoeuvreState) {
+        return onGround ? MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND : manoeuvreState;
+    }
+
+    /** STANDBY on the ground, armed or not, ACTIVE once it flies, as SITL's heartbeats show. */
+    @Override
+    public int systemStatus(boolean armed, boolean onGround) {
+        return onGround ? MAV_STATE.MAV_STATE_STANDBY : MAV_STATE.MAV_STATE_ACTIVE;
+    }
+}

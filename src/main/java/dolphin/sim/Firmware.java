@@ -1,0 +1,86 @@
+package dolphin.sim;
+
+import dolphin.core.Position;
+import dolphin.mavlink.VehicleFamily;
+import dolphin.mavlink.mission.MissionItem;
+import java.util.Optional;
+import java.util.OptionalInt;
+
+/**
+ * What the simulated ArduCopter, ArduPlane and ArduRover do differently: identity, modes and
+ * default streams; speeds and radii; the arming rules; how each one takes off, reaches a point,
+ * holds, lands, returns home and ends a mission; and what it reports of being on the ground.
+ * {@link SimVehicle} and {@link MissionFlight} ask their vehicle's firmware and never test its kind.
+ */
+interface Firmware {
+
+    /** MAV_TYPE in the heartbeat. */
+    int mavType();
+
+    VehicleFamily family();
+
+    /** The custom mode it boots in. */
+    int bootMode();
+
+    int autoMode();
+
+    int rtlMode();
+
+    /** The mode MAV_CMD_NAV_LAND switches to; empty when the firmware does not take that command. */
+    OptionalInt landMode();
+
+    /** The rate of the streams it sends before anyone asks, per second; 0 for none. */
+    double defaultStreamHz();
+
+    Performance performance();
+
+    /** The STATUSTEXT with which it refuses to arm in {@code mode}; empty if it arms there. */
+    Optional<String> armRefusal(int mode);
+
+    /** Said on arming. */
+    String armedText();
+
+    /** Said on disarming. */
+    String disarmedText();
+
+    /** Armed on the ground in AUTO, it waits for MAV_CMD_MISSION_START before it starts the mission. */
+    boolean waitsForMissionStart();
+
+    /** Armed on the ground, it enters AUTO only when the first nav item is a take-off. */
+    boolean autoNeedsTakeoff();
+
+    /** Disarmed in the middle of a mission in AUTO, it starts the mission again from the top. */
+    boolean restartsMissionOnDisarm();
+
+    /** How close a NAV_WAYPOINT counts as reached. */
+    double acceptanceRadius(MissionItem waypoint);
+
+    /** Moves the craft towards {@code target} for {@code dt} seconds; true once within {@code radius}. */
+    boolean reach(Craft craft, Position target, double radius, double dt);
+
+    Manoeuvre takeoff(Craft craft, double altitude);
+
+    /** Staying at a point for as long as asked. */
+    Manoeuvre holdAt(Craft craft, Position at);
+
+    /** NAV_LAND at {@code over} (null: where it is), and the LAND mode. */
+    Manoeuvre landing(Craft craft, Position over);
+
+    /** RTL, as a mode or as NAV_RETURN_TO_LAUNCH in a mission. */
+    Manoeuvre returnHome(Craft craft, Position home, boolean asMissionItem);
+
+    /** The STATUSTEXT on arriving at waypoint {@code seq}, {@code distance} metres from it. */
+    Optional<String> arrivalText(int seq, double distance, double holdSeconds);
+
+    /** The STATUSTEXT when waypoint (or LOITER_TIME) {@code seq} is complete. */
+    Optional<String> completionText(int seq);
+
+    /** What the vehicle does when its mission is over. */
+    void missionComplete(MissionFlight.Body body);
+
+    /** EXTENDED_SYS_STATE's landed_state, given whether it is on the ground and its manoeuvre's state. */
+    int landedState(boolean onGround, int manoeuvreState);
+
+    /** The heartbeat's system_status. */
+    int systemStatus(boolean armed, boolean onGround);
+}

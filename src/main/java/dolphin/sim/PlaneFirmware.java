@@ -1,0 +1,157 @@
+package dolphin.sim;
+
+import com.MAVLink.enums.MAV_LANDED_STATE;
+import com.MAVLink.enums.MAV_SEVERITY;
+import com.MAVLink.enums.MAV_STATE;
+import com.MAVLink.enums.MAV_TYPE;
+import com.MAVLink.enums.PLANE_MODE;
+import dolphin.core.Position;
+import dolphin.mavlink.VehicleFamily;
+import dolphin.mavlink.mission.MissionItem;
+import java.util.Locale;
+import java.util.Optional;
+import java.util.OptionalInt;
+
+/**
+ * ArduPlane as SITL runs it with plane.parm: 20 m/s cruise, climbing at 5 m/s and sinking at 3,
+ * WP_RADIUS 55 m (or the item's param2), WP_LOITER_RAD 60 m; it arms in any mode and flies a
+ * mission as soon as it is armed in AUTO; it holds by circling; at the end of its mission it
+ * switches itself to RTL and circles home. Streams at 1 Hz from boot. Its landing is the copter's,
+ * simplified.
+ */
+final class PlaneFirmware implements Firmware {
+
+    private static final Performance PERFORMANCE = new Performance(20, 5, 3, 55, 60);
+
+    @Override
+    public int mavType() {
+        return MAV_TYPE.MAV_TYPE_FIXED_WING;
+    }
+
+    @Override
+    public VehicleFamily family() {
+        return VehicleFamily.PLANE;
+    }
+
+    @Override
+    public int bootMode() {
+        return PLANE_MODE.PLANE_MODE_MANUAL;
+    }
+
+    @Override
+    public int autoMode() {
+        return PLANE_MODE.PLANE_MODE_AUTO;
+    }
+
+    @Override
+    public int rtlMode() {
+        return PLANE_MODE.PLANE_MODE_RTL;
+    }
+
+    @Override
+    public OptionalInt landMode() {
+        return OptionalInt.empty();
+    }
+
+    @Override
+    public double defaultStreamHz() {
+        return 1;
+    }
+
+    @Override
+    public Performance performance() {
+        return PERFORMANCE;
+    }
+
+    @Override
+    public Optional<String> armRefusal(int mode) {
+        return Optional.empty();
+    }
+
+    @Override
+    public String armedText() {
+        return "Throttle armed";
+    }
+
+    @Override
+    public String disarmedText() {
+        return "Throttle disarmed";
+    }
+
+    @Override
+    public boolean waitsForMissionStart() {
+        return false;
+    }
+
+    @Override
+    public boolean autoNeedsTakeoff() {
+        return false;
+    }
+
+    @Override
+    public boolean restartsMissionOnDisarm() {
+        return false;
+    }
+
+    @Override
+    public double acceptanceRadius(MissionItem waypoint) {
+        return waypoint.param2() > 0 ? waypoint.param2() : PERFORMANCE.waypointRadius();
+    }
+
+    /** Within the radius horizontally; the height is only flown towards. */
+    @Override
+    public boolean reach(Craft craft, Position target, double radius, double dt) {
+        craft.fly(target, dt);
+        return craft.distanceTo(target) <= radius;
+    }
+
+    @Override
+    public Manoeuvre takeoff(Craft craft, double altitude) {
+        return new RollingTakeoff(craft, altitude);
+    }
+
+    @Override
+    public Manoeuvre holdAt(Craft craft, Position at) {
+        return new Orbit(this, craft, at, PERFORMANCE.loiterRadius(), Double.POSITIVE_INFINITY);
+    }
+
+    @Override
+    public Manoeuvre landing(Craft craft, Position over) {
+        return new Landing(craft, over);
+    }
+
+    @Override
+    public Manoeuvre returnHome(Craft craft, Position home, boolean asMissionItem) {
+        return new ReturnAndHold(this, craft, home, asMissionItem);
+    }
+
+    /** Plane::verify_nav_wp. */
+    @Override
+    public Optional<String> arrivalText(int seq, double distance, double holdSeconds) {
+        return Optional.of(String.format(Locale.ROOT, "Reached waypoint #%d dist %dm", seq, Math.round(distance)));
+    }
+
+    @Override
+    public Optional<String> completionText(int seq) {
+        return Optional.empty();
+    }
+
+    /** Plane's mission end: RTL, announced, if it is still flying. */
+    @Override
+    public void missionComplete(MissionFlight.Body body) {
+        if (body.armed()) {
+            body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Mission complete, changing mode to RTL");
+            body.switchMode(rtlMode());
+        }
+    }
+
+    @Override
+    public int landedState(boolean onGround, int manoeuvreState) {
+        return onGround ? MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND : manoeuvreState;
+    }
+
+    @Override
+    public int systemStatus(boolean armed, boolean onGround) {
+        return onGround ? MAV_STATE.MAV_STATE_STANDBY : MAV_STATE.MAV_STATE_ACTIVE;
+    }
+}

@@ -1,0 +1,155 @@
+package dolphin.sim;
+
+import com.MAVLink.enums.MAV_LANDED_STATE;
+import com.MAVLink.enums.MAV_SEVERITY;
+import com.MAVLink.enums.MAV_STATE;
+import com.MAVLink.enums.MAV_TYPE;
+import com.MAVLink.enums.ROVER_MODE;
+import dolphin.core.Position;
+import dolphin.mavlink.VehicleFamily;
+import dolphin.mavlink.mission.MissionItem;
+import java.util.Optional;
+import java.util.OptionalInt;
+
+/**
+ * ArduRover with its defaults: it drives on the ground at WP_SPEED 2 m/s, heights ignored, a
+ * waypoint reached within WP_RADIUS 2 m (or the item's param2); it arms in any mode and drives a
+ * mission as soon as it is armed in AUTO; a take-off is done at once and a landing is a waypoint;
+ * at the end of a mission it stops and stays in AUTO (MIS_DONE_BEHAVE 0, hold). Like a copter, no
+ * streams until asked. It does not report a landed state (ArduRover has none: UNDEFINED).
+ */
+final class RoverFirmware implements Firmware {
+
+    private static final Performance PERFORMANCE = new Performance(2, 0, 0, 2, 2);
+
+    @Override
+    public int mavType() {
+        return MAV_TYPE.MAV_TYPE_GROUND_ROVER;
+    }
+
+    @Override
+    public VehicleFamily family() {
+        return VehicleFamily.ROVER;
+    }
+
+    @Override
+    public int bootMode() {
+        return ROVER_MODE.ROVER_MODE_MANUAL;
+    }
+
+    @Override
+    public int autoMode() {
+        return ROVER_MODE.ROVER_MODE_AUTO;
+    }
+
+    @Override
+    public int rtlMode() {
+        return ROVER_MODE.ROVER_MODE_RTL;
+    }
+
+    @Override
+    public OptionalInt landMode() {
+        return OptionalInt.empty();
+    }
+
+    @Override
+    public double defaultStreamHz() {
+        return 0;
+    }
+
+    @Override
+    public Performance performance() {
+        return PERFORMANCE;
+    }
+
+    @Override
+    public Optional<String> armRefusal(int mode) {
+        return Optional.empty();
+    }
+
+    @Override
+    public String armedText() {
+        return "Throttle armed";
+    }
+
+    @Override
+    public String disarmedText() {
+        return "Throttle disarmed";
+    }
+
+    @Override
+    public boolean waitsForMissionStart() {
+        return false;
+    }
+
+    @Override
+    public boolean autoNeedsTakeoff() {
+        return false;
+    }
+
+    @Override
+    public boolean restartsMissionOnDisarm() {
+        return false;
+    }
+
+    @Override
+    public double acceptanceRadius(MissionItem waypoint) {
+        return waypoint.param2() > 0 ? waypoint.param2() : PERFORMANCE.waypointRadius();
+    }
+
+    @Override
+    public boolean reach(Craft craft, Position target, double radius, double dt) {
+        craft.drive(target, dt);
+        return craft.distanceTo(target) <= radius;
+    }
+
+    @Override
+    public Manoeuvre takeoff(Craft craft, double altitude) {
+        return Manoeuvre.DONE;
+    }
+
+    @Override
+    public Manoeuvre holdAt(Craft craft, Position at) {
+        return Manoeuvre.STAY;
+    }
+
+    /** A landing point is driven to like a waypoint; LAND without a position is done where it is. */
+    @Override
+    public Manoeuvre landing(Craft craft, Position over) {
+        return over == null ? Manoeuvre.DONE : dt -> reach(craft, over, PERFORMANCE.waypointRadius(), dt);
+    }
+
+    @Override
+    public Manoeuvre returnHome(Craft craft, Position home, boolean asMissionItem) {
+        return new ReturnAndHold(this, craft, home, asMissionItem);
+    }
+
+    /** ModeAuto::verify_nav_wp. */
+    @Override
+    public Optional<String> arrivalText(int seq, double distance, double holdSeconds) {
+        return Optional.of(holdSeconds > 0 ? "Reached waypoint #" + seq + ". Loiter for " + Math.round(holdSeconds) + " seconds"
+                : "Reached waypoint #" + seq);
+    }
+
+    @Override
+    public Optional<String> completionText(int seq) {
+        return Optional.empty();
+    }
+
+    /** ModeAuto::exit_mission with MIS_DONE_BEHAVE 0: says so and stops, in AUTO. */
+    @Override
+    public void missionComplete(MissionFlight.Body body) {
+        body.text(MAV_SEVERITY.MAV_SEVERITY_NOTICE, "Mission Complete");
+    }
+
+    @Override
+    public int landedState(boolean onGround, int manoeuvreState) {
+        return MAV_LANDED_STATE.MAV_LANDED_STATE_UNDEFINED;
+    }
+
+    /** A rover is ACTIVE while armed. */
+    @Override
+    public int systemStatus(boolean armed, boolean onGround) {
+        return armed ? MAV_STATE.MAV_STATE_ACTIVE : MAV_STATE.MAV_STATE_STANDBY;
+    }
+}

@@ -1,0 +1,30 @@
+package dolphin.sim;
+
+import com.MAVLink.enums.MAV_LANDED_STATE;
+
+/** A copter's NAV_TAKEOFF: straight up at the climb rate to the item's height. */
+final class VerticalTakeoff implements Manoeuvre {
+
+    private static final double TOLERANCE = 0.05;
+
+    private final Craft craft;
+    private final double altitude;
+
+    VerticalTakeoff(Craft craft, double altitude) {
+        this.craft = craft;
+        this.altitude = altitude;
+    }
+
+    @Override
+    public boolean step(double dt) {
+        if (altitude - craft.position().hae() > TOLERANCE) {
+            craft.climbTo(altitude, dt);
+        }
+        return altitude - craft.position().hae() <= TOLERANCE;
+    }
+
+    @Override
+    public int landedState() {
+        return MAV_LANDED_STATE.MAV_LANDED_STATE_TAKEOFF;
+    }
+}

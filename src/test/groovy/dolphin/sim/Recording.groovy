@@ -1,0 +1,84 @@
+package dolphin.sim
+
+import com.MAVLink.Messages.MAVLinkMessage
+import com.MAVLink.minimal.msg_heartbeat
+
+import java.lang.reflect.Field
+import java.nio.file.Path
+
+/**
+ * A recorded session between our ground station and one real ArduPilot SITL vehicle (system 1),
+ * on the vehicle's clock: each frame the ground station sent is placed at the vehicle's boot time
+ * (time_boot_ms) last seen before it, or, before the vehicle sent any, at the first it sends.
+ */
+class Recording {
+
+    static final int VEHICLE = 1
+
+    static class Sent {
+        final long bootNanos
+        final MAVLinkMessage message
+
+        Sent(long bootNanos, MAVLinkMessage message) {
+            this.bootNanos = bootNanos
+            this.message = message
+        }
+    }
+
+    /** What the vehicle sent, in order. */
+    final List<MAVLinkMessage> vehicle = []
+    /** What the ground station sent, heartbeats left out, in order and on the vehicle's clock. */
+    final List<Sent> groundStation = []
+    /** The vehicle's boot time at its last frame. */
+    long endNanos
+
+    private static final Map<Class, Field> BOOT_TIME = [:]
+
+    static Recording read(Path tlog) {
+        def recording = new Recording()
+        List<MAVLinkMessage> untimed = []
+        Long boot = null
+        TlogFile.read(tlog).each { record ->
+            MAVLinkMessage m = record.frame.message()
+            if (m == null) {
+                return
+            }
+            if (record.frame.sysid() == VEHICLE) {
+                recording.vehicle << m
+                Long t = bootMillis(m)
+                if (t != null) {
+                    boot = t
+                    untimed.each { recording.groundStation << new Sent(t * 1_000_000L, it) }
+                    untimed.clear()
+                }
+            } else if (!(m instanceof msg_heartbeat)) {
+                if (boot == null) {
+                    untimed << m
+                } else {
+                    recording.groundStation << new Sent(boot * 1_000_000L, m)
+                }
+            }
+        }
+        recording.endNanos = (boot ?: 0L) * 1_000_000L
+        recording
+    }
+
+    private static Long bootMillis(MAVLinkMessage m) {
+        Field f = BOOT_TIME.computeIfAbsent(m.class) { c -> c.fields.find { it.name == 'time_boot_ms' } }
+        f == null ? null : (f.getLong(m))
+    }
+
+    /**
+     * What a simulated vehicle of {@code kind}, booted when the recorded one was, sends when the
+     * ground station's frames reach it at the recorded times, until the recording ends.
+     */
+    List<MAVLinkMessage> replay(VehicleKind kind, SimOptions options) {
+        def driver = new SimDriver(kind, options)
+        groundStation.each { sent ->
+            driver.runTo(sent.bootNanos)
+            driver.handle(sent.message, sent.message.sysid, sent.message.compid)
+        }
+        driver.runTo(endNanos)
+        driver.sent*.message
+    }
+}

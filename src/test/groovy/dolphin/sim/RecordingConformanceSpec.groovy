@@ -1,0 +1,73 @@
+package dolphin.sim
+
+import java.nio.file.Files
+import java.nio.file.Path
+import spock.lang.Shared
+import spock.lang.Specification
+
+/**
+ * The simulated fleet against real ArduPilot: each recording of a SITL session (the project's
+ * ../shared/sitl-recordings, or -Ddolphin.recordings) is replayed into a simulated vehicle of the
+ * same kind, booted when the recorded one was, with the ground station's frames at the recorded
+ * times. What the simulator sends must show the same frames that matter (KeyFrames: modes and arming,
+ * MISSION_CURRENT, MISSION_ITEM_REACHED, landed state, ACKs, ground contact, disarm, the plane's
+ * RTL) in the same order for each kind, and each recording's ending in the order SITL sent it
+ * (docs/mavlink.md, "The simulated fleet and real ArduPilot").
+ */
+class RecordingConformanceSpec extends Specification {
+
+    static final Path DIRECTORY = Path.of(System.getProperty('dolphin.recordings', '../shared/sitl-recordings'))
+    static final List<String> KINDS = ['HEARTBEAT', 'MISSION_CURRENT', 'MISSION_ITEM_REACHED', 'EXTENDED_SYS_STATE',
+                                       'COMMAND_ACK', 'MISSION_ACK', 'STATUSTEXT']
+
+    /** ArduCopter's EKF has a position about 42 s after boot (SITL at any speed-up, on its own clock). */
+    @Shared
+    SimOptions sitl = SimOptions.DEFAULT.withWarmup(42)
+
+    def setupSpec() {
+        assert Files.isDirectory(DIRECTORY): "the SITL recordings are not at ${DIRECTORY.toAbsolutePath().normalize()}: " +
+                'CI needs them next to the project (../shared/sitl-recordings) or named by -Ddolphin.recordings'
+    }
+
+    def "#recording: the simulated #kind sends the frames that matter as ArduPilot did"() {
+        given:
+        def recorded = Recording.read(DIRECTORY.resolve(recording + '.tlog'))
+        def real = KeyFrames.of(recorded.vehicle)
+
+        when:
+        def simulated = KeyFrames.of(recorded.replay(kind, sitl))
+
+        then: 'the recording shows what this spec is about'
+        inOrder(real.lines(), ending)
+
+        and: 'the simulator sends the same frames of each kind, in the same order'
+        KINDS.each { k -> assert simulated.of(k) == real.of(k) }
+
+        and: 'and ends as SITL did'
+        inOrder(simulated.lines(), ending)
+
+        where:
+        recording                     | kind               || ending
+        'copter-first-flight-at-boot' | VehicleKind.COPTER || ['COMMAND_ACK command=179 result=4']
+        'copter-first-flight'         | VehicleKind.COPTER || ['MISSION_ITEM_REACHED seq=2', 'MISSION_CURRENT seq=3 total=4 state=3',
+                                                               'STATUSTEXT SIM Hit ground']
+        'copter-every-command'        | VehicleKind.COPTER || ['MISSION_CURRENT seq=22 total=22 state=3', 'EXTENDED_SYS_STATE landed_state=4',
+                                                               'STATUSTEXT SIM Hit ground', 'STATUSTEXT Disarming motors',
+                                                               'MISSION_ITEM_REACHED seq=1', 'MISSION_CURRENT seq=2 total=22 state=3',
+                                                               'HEARTBEAT armed=0 mode=3']
+        'plane-circuit'               | VehicleKind.PLANE  || ['MISSION_CURRENT seq=5 total=5 state=3', 'HEARTBEAT armed=1 mode=11',
+                                                               'MISSION_ITEM_REACHED seq=5', 'STATUSTEXT Mission complete, changing mode to RTL',
+                                                               'MISSION_CURRENT seq=5 total=5 state=5']
+    }
+
+    /** Whether {@code expected} occur in {@code lines} in this order, others between them allowed. */
+    static boolean inOrder(List<String> lines, List<String> expected) {
+        int at = 0
+        for (String e : expected) {
+            int i = lines.subList(at, lines.size()).indexOf(e)
+            assert i >= 0: "expected '${e}' after the ones before it in:\n${lines.join('\n')}"
+            at += i + 1
+        }
+        true
+    }
+}
