@@ -2,9 +2,9 @@ package dolphin.mavlink;
 
 import dolphin.mavlink.codec.MessageTable;
 import com.MAVLink.Messages.MAVLinkMessage;
+import com.MAVLink.ardupilotmega.msg_ekf_status_report;
 import com.MAVLink.common.msg_command_ack;
 import com.MAVLink.common.msg_command_long;
-import com.MAVLink.ardupilotmega.msg_ekf_status_report;
 import com.MAVLink.common.msg_extended_sys_state;
 import com.MAVLink.common.msg_home_position;
 import com.MAVLink.common.msg_mission_current;
