@@ -13,7 +13,7 @@ import java.util.OptionalInt;
 
 /**
  * ArduRover with its defaults: it drives on the ground at WP_SPEED 2 m/s, heights ignored, a
- * waypoint reached within WP_RADIUS 2 m (or the item's param2); it arms in any mode and drives a
+ * waypoint reached within WP_RADIUS 2 m (the item's param2 does not count); it arms in any mode and drives a
  * mission as soon as it is armed in AUTO; a take-off is done at once and a landing is a waypoint;
  * at the end of a mission it stops and stays in AUTO (MIS_DONE_BEHAVE 0, hold). Like a copter, no
  * streams until asked. It does not report a landed state (ArduRover has none: UNDEFINED).
@@ -92,9 +92,10 @@ final class RoverFirmware implements Firmware {
         return false;
     }
 
+    /** AR_WPNav takes WP_RADIUS whatever the item's param2 says (a plane's acceptance radius, 50 m in our waypoints). */
     @Override
     public double acceptanceRadius(MissionItem waypoint) {
-        return waypoint.param2() > 0 ? waypoint.param2() : PERFORMANCE.waypointRadius();
+        return PERFORMANCE.waypointRadius();
     }
 
     @Override

@@ -123,7 +123,7 @@ class SimVehicleSpec extends Specification {
         given:
         def d = streaming(new SimDriver(VehicleKind.parse('ardurover')))
         assert d.upload([MissionItem.at(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, HOME, 0, 0, 0, 0),
-                         rel(1, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 20, 0, 0), rel(2, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 20, 20, 0)]) ==
+                         rel(1, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 20, 0, 0, 0, 50), rel(2, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 20, 20, 0)]) ==
                 MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
         int from = d.mark()
 
@@ -131,11 +131,14 @@ class SimVehicleSpec extends Specification {
         assert d.vehicle.mode() == ROVER_MODE.ROVER_MODE_MANUAL
         assert d.arm().result == MAV_RESULT.MAV_RESULT_ACCEPTED
         assert d.setMode(ROVER_MODE.ROVER_MODE_AUTO).result == MAV_RESULT.MAV_RESULT_ACCEPTED
+        long start = d.now
         d.runUntil(60, 'the mission COMPLETE') { d.vehicle.missionState() == MISSION_STATE.MISSION_STATE_COMPLETE }
+        double seconds = (d.now - start) / 1e9
         d.run(5)
 
-        then: 'both waypoints reached in order, on the ground all the way, and it stands at the last one, in AUTO, armed'
+        then: 'both waypoints reached in order (within WP_RADIUS 2 m: the 50 m param2 of the first does not count for a rover), on the ground all the way, and it stands at the last one, in AUTO, armed'
         d.since(from, msg_mission_item_reached)*.seq == [1, 2]
+        seconds >= (40 - 2 * 2) / 2
         d.texts(from).contains('Mission Complete')
         horizontal(d.vehicle.position(), HOME.displace(20, 20, 0)) <= 2
         d.vehicle.position().hae() == HOME.hae()
