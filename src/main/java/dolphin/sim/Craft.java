@@ -95,14 +95,20 @@ final class Craft {
         return Math.hypot(ned[0], ned[1]);
     }
 
-    /** Moves towards {@code t}: horizontally at its speed, vertically at the climb or sink rate. */
+    /**
+     * Moves towards {@code t}: horizontally at its speed, vertically at the climb or sink rate. The
+     * height to change is the difference of heights, not the local "down" towards {@code t}, which over
+     * a kilometre includes the Earth's curvature (8 cm) and would bring a long leg at one height down
+     * to the ground.
+     */
     void fly(Position t, double dt) {
         double[] ned = position.displacementTo(t);
         double h = Math.hypot(ned[0], ned[1]);
         double f = h <= 0 ? 0 : Math.min(1, speed * dt / h);
         turnTowards(ned);
-        double dz = Math.max(-performance.sink() * dt, Math.min(performance.climb() * dt, -ned[2]));
-        moveTo(position.displace(ned[0] * f, ned[1] * f, -dz), dt);
+        double dz = Math.max(-performance.sink() * dt, Math.min(performance.climb() * dt, t.hae() - position.hae()));
+        Position p = position.displace(ned[0] * f, ned[1] * f, 0);
+        moveTo(Position.fromDegrees(p.latitudeDegrees(), p.longitudeDegrees(), position.hae() + dz), dt);
     }
 
     /** Along the ground towards {@code t}, whose height does not matter, at its speed. */

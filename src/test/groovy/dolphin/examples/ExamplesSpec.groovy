@@ -173,7 +173,7 @@ class ExamplesSpec extends Specification {
 
         where:
         example                | expected
-        'loiters'              | ['mission loiters on vehicle 1: item 5 of 5 reached', 'mission loiters on vehicle 1: done', 'loiters: DONE']
+        'loiters'              | ['mission loiters on vehicle 1: item 4 of 5 reached', 'mission loiters on vehicle 1: done', 'loiters: DONE']
         'camera'               | ['mission photos on vehicle 1: uploading 11 items', 'mission photos on vehicle 1: done', 'camera: DONE']
         'survey'               | ['mission survey on vehicle 1: cut short: RTL', 'mission return home on vehicle 1: done']
         'first-flight'         | ['mission first flight on vehicle 1: done', 'the flight ended DONE, battery *']

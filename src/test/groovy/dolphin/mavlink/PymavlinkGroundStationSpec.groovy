@@ -102,16 +102,17 @@ class PymavlinkGroundStationSpec extends Specification {
         }
         sims.every { it.streams() == [(1): INTERVAL_US * 1000, (33): INTERVAL_US * 1000] }
 
-        and: "the positions pymavlink decoded are the simulator's"
-        sims.every { sim ->
+        and: "the positions pymavlink decoded are the simulator's; the copter warming up sends zeros, as ArduPilot without a position estimate"
+        ready.vehicles().every { sim ->
             Map p = v[sim.sysid() as String].position as Map
             p.lat == Math.round(sim.position().latitudeDegrees() * 1e7) && p.lon == Math.round(sim.position().longitudeDegrees() * 1e7)
         }
+        (v['3'].position as Map).with { it.lat == 0 && it.lon == 0 }
 
-        and: 'arming: accepted by the ready copters, refused with the PreArm text by the one warming up; ACKs addressed to pymavlink (255)'
+        and: 'arming: accepted by the ready copters, saying so as ArduCopter does, refused with the PreArm text by the one warming up; ACKs addressed to pymavlink (255)'
         v['1'].arm.result == MAV_RESULT.MAV_RESULT_ACCEPTED
         v['2'].arm.result == MAV_RESULT.MAV_RESULT_ACCEPTED
-        v['1'].arm.statustext == [] && v['2'].arm.statustext == []
+        v['1'].arm.statustext*.text == ['Arming motors'] && v['2'].arm.statustext*.text == ['Arming motors']
         v['3'].arm.result == MAV_RESULT.MAV_RESULT_FAILED
         v['3'].arm.statustext*.text == ['PreArm: Need Position Estimate']
         v.every { id, x -> x.arm.target_system == 255 }
