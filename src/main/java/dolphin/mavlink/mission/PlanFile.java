@@ -16,6 +16,8 @@ import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 /**
  * QGroundControl's {@code .plan} (JSON): {@code {"fileType": "Plan", "version": 1, "groundStation",
@@ -103,9 +105,9 @@ public final class PlanFile {
     public static List<MissionItem> read(String text) {
         Object root;
         try {
-            root = new JsonSlurper().parseText(text);
+            root = new JsonSlurper().parseText(MissionFileText.withoutBom(text));
         } catch (JsonException | IllegalArgumentException e) {
-            throw new IllegalArgumentException("not a QGroundControl plan: the text is not JSON (" + e.getMessage() + ")", e);
+            throw new IllegalArgumentException("not a QGroundControl plan: the text is not JSON (" + oneLine(e) + ")", e);
         }
         if (!(root instanceof Map<?, ?> plan) || !"Plan".equals(plan.get("fileType"))) {
             throw new IllegalArgumentException("not a QGroundControl plan: \"fileType\" must be \"Plan\"");
@@ -145,8 +147,17 @@ public final class PlanFile {
         return items;
     }
 
+    /** The items of a file, UTF-8 with or without a byte-order mark; errors name the file. */
     public static List<MissionItem> read(Path file) throws IOException {
-        return read(Files.readString(file, StandardCharsets.UTF_8));
+        return MissionFileText.parse(file, PlanFile::read);
+    }
+
+    /** The parser's first line and the line it stopped at: its message also dumps the text around it. */
+    private static String oneLine(RuntimeException e) {
+        String message = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+        String first = message.lines().findFirst().orElse("").strip();
+        Matcher line = Pattern.compile("line number (\\d+)").matcher(message);
+        return line.find() ? first + ", at line " + line.group(1) : first;
     }
 
     private static MissionItem simpleItem(Map<?, ?> item, int seq, String where) {

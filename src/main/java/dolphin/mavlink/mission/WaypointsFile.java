@@ -62,7 +62,7 @@ public final class WaypointsFile {
      * @throws IllegalArgumentException naming the line, for a text that is not such a file
      */
     public static List<MissionItem> read(String text) {
-        String[] lines = text.split("\r?\n|\r", -1);
+        String[] lines = MissionFileText.withoutBom(text).split("\r?\n|\r", -1);
         int n = 0;
         while (n < lines.length && lines[n].isBlank()) {
             n++;
@@ -102,8 +102,9 @@ public final class WaypointsFile {
         return items;
     }
 
+    /** The items of a file, UTF-8 with or without a byte-order mark; errors name the file. */
     public static List<MissionItem> read(Path file) throws IOException {
-        return read(Files.readString(file, StandardCharsets.UTF_8));
+        return MissionFileText.parse(file, WaypointsFile::read);
     }
 
     private static String abbreviate(String s) {
