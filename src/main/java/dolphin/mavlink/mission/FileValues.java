@@ -62,20 +62,39 @@ final class FileValues {
 
     /** Degrees (any decimal text) to degE7, rounded half-even; NaN and infinities give 0 (no position). */
     static int degE7(String text) {
+        long e7 = parseDegE7(text);
+        if (Math.abs(e7) > 1_800_000_000L) {
+            throw new NumberFormatException(text + " degrees is out of range");
+        }
+        return (int) e7;
+    }
+
+    /**
+     * Degrees of latitude ({@code limit} 90) or longitude (180) to degE7, refused out of range.
+     *
+     * @throws NumberFormatException saying which, e.g. "95.2 is out of range for a latitude (-90 to 90)"
+     */
+    static int degE7(String text, double limit) {
+        long e7 = parseDegE7(text);
+        if (Math.abs(e7) > limit * 1e7) {
+            throw new NumberFormatException(text.strip() + " is out of range for a "
+                    + (limit == 90 ? "latitude (-90 to 90)" : "longitude (-180 to 180)"));
+        }
+        return (int) e7;
+    }
+
+    private static long parseDegE7(String text) {
         String t = text.strip();
         if (isNonFinite(t)) {
             return 0;
         }
-        BigDecimal d;
         try {
-            d = new BigDecimal(t).movePointRight(7).setScale(0, RoundingMode.HALF_EVEN);
+            return new BigDecimal(t).movePointRight(7).setScale(0, RoundingMode.HALF_EVEN).longValueExact();
         } catch (NumberFormatException e) {
             throw new NumberFormatException("'" + text + "' is not a number of degrees");
-        }
-        if (d.abs().compareTo(BigDecimal.valueOf(1_800_000_000L)) > 0) {
+        } catch (ArithmeticException e) {
             throw new NumberFormatException(text + " degrees is out of range");
         }
-        return d.intValueExact();
     }
 
     /**

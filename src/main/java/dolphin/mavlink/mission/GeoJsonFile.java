@@ -23,6 +23,11 @@ import java.util.Map;
  * {@code params} [p1, p2, p3, p4] (NaN as null); the home point also has {@code "home": true}.
  * An item has a position when its frame is a global one and its latitude and longitude are not
  * both 0 (ArduPilot's "no position"). The collection carries the mission's name as {@code name}.
+ *
+ * <p>A fence adds a Polygon for each polygon region and for each circle (GeoJSON has no circle: a
+ * ring of {@value #CIRCLE_SEGMENTS} points, with {@code radius} and {@code center} in its
+ * properties), each with {@code "fence": "inclusion"} or {@code "exclusion"}, and a Point for its
+ * return point ({@code "fence": "return point"}); rally points are Points with {@code "rally": n}.
  */
 public final class GeoJsonFile {
 
@@ -33,9 +38,18 @@ public final class GeoJsonFile {
     private GeoJsonFile() {
     }
 
+    /** Segments of the ring drawn for a fence circle. */
+    static final int CIRCLE_SEGMENTS = 64;
+
     /** The GeoJSON of a mission's items, item 0 the home (as {@link Mission#items} gives them). */
     public static String write(String name, List<MissionItem> items) {
         FileValues.requireHome(items);
+        return write(name, MissionFile.of(items));
+    }
+
+    /** The GeoJSON of a mission (if any) with its fence and rally points. */
+    public static String write(String name, MissionFile file) {
+        List<MissionItem> items = file.mission();
         List<Object> features = new ArrayList<>();
         List<Object> path = new ArrayList<>();
         for (int i = 0; i < items.size(); i++) {
@@ -62,6 +76,12 @@ public final class GeoJsonFile {
             properties.put("path", "flight path");
             features.add(feature(FileValues.ordered("type", "LineString", "coordinates", path), properties));
         }
+        addFence(file.fence(), features);
+        for (MissionItem it : file.rally().items()) {
+            features.add(feature(FileValues.ordered("type", "Point", "coordinates",
+                    Arrays.asList(degrees(it.y()), degrees(it.x()), number(it.z()))),
+                    FileValues.ordered("rally", it.seq(), "frame", it.frameName())));
+        }
         Map<String, Object> collection = new LinkedHashMap<>();
         collection.put("type", "FeatureCollection");
         collection.put("name", name);
@@ -71,6 +91,36 @@ public final class GeoJsonFile {
 
     public static void write(Path file, String name, List<MissionItem> items) throws IOException {
         Files.writeString(file, write(name, items), StandardCharsets.UTF_8);
+    }
+
+    private static void addFence(Fence fence, List<Object> features) {
+        for (FenceRegion r : fence.regions()) {
+            String kind = r.inclusion() ? "inclusion" : "exclusion";
+            List<Object> ring = new ArrayList<>();
+            Map<String, Object> properties = FileValues.ordered("fence", kind);
+            if (r instanceof FenceRegion.Polygon p) {
+                p.vertices().forEach(v -> ring.add(lonLat(v)));
+                properties.put("shape", "polygon");
+            } else if (r instanceof FenceRegion.Circle c) {
+                for (int k = 0; k < CIRCLE_SEGMENTS; k++) {
+                    double bearing = 2 * Math.PI * k / CIRCLE_SEGMENTS;
+                    ring.add(lonLat(c.center().displace(c.radius() * Math.cos(bearing), c.radius() * Math.sin(bearing), 0)));
+                }
+                properties.put("shape", "circle");
+                properties.put("center", lonLat(c.center()));
+                properties.put("radius", number((float) c.radius()));
+            }
+            ring.add(ring.get(0)); // GeoJSON closes its rings
+            features.add(feature(FileValues.ordered("type", "Polygon", "coordinates", List.of(ring)), properties));
+        }
+        fence.items().stream().filter(it -> it.command() == com.MAVLink.enums.MAV_CMD.MAV_CMD_NAV_FENCE_RETURN_POINT)
+                .forEach(it -> features.add(feature(FileValues.ordered("type", "Point", "coordinates",
+                        Arrays.asList(degrees(it.y()), degrees(it.x()), number(it.z()))),
+                        FileValues.ordered("fence", "return point", "frame", it.frameName()))));
+    }
+
+    private static List<Object> lonLat(dolphin.core.Position p) {
+        return Arrays.asList(degrees(MissionItem.degE7(p.longitudeDegrees())), degrees(MissionItem.degE7(p.latitudeDegrees())));
     }
 
     /** True when the item is at a place: a global frame, and not latitude 0 and longitude 0. */

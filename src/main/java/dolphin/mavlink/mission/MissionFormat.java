@@ -34,10 +34,18 @@ public enum MissionFormat {
 
     /** The file's text for a mission's items, item 0 the home (as {@link Mission#items} gives them). */
     public String write(String name, List<MissionItem> items) {
+        return write(name, MissionFile.of(items));
+    }
+
+    /**
+     * The file's text for a mission with its fence and rally points. A QGC WPL file holds one kind
+     * of items: this is the mission's, {@link WaypointsFile#writeItems} writes the fence's and rally points'.
+     */
+    public String write(String name, MissionFile file) {
         return switch (this) {
-            case PLAN -> PlanFile.write(items);
-            case WAYPOINTS -> WaypointsFile.write(items);
-            case GEOJSON -> GeoJsonFile.write(name, items);
+            case PLAN -> PlanFile.write(file);
+            case WAYPOINTS -> WaypointsFile.write(file.mission());
+            case GEOJSON -> GeoJsonFile.write(name, file);
         };
     }
 

@@ -2,7 +2,6 @@ package dolphin.mavlink.mission;
 
 import com.MAVLink.enums.MAV_AUTOPILOT;
 import com.MAVLink.enums.MAV_CMD;
-import com.MAVLink.enums.MAV_TYPE;
 import groovy.json.JsonException;
 import groovy.json.JsonGenerator;
 import groovy.json.JsonOutput;
@@ -22,43 +21,45 @@ import java.util.regex.Pattern;
 /**
  * QGroundControl's {@code .plan} (JSON): {@code {"fileType": "Plan", "version": 1, "groundStation",
  * "mission": {"version": 2, "firmwareType": 3 (ArduPilot), "vehicleType", "cruiseSpeed", "hoverSpeed",
- * "plannedHomePosition": [lat, lon, alt], "items": [...]}, "geoFence", "rallyPoints"}}.
+ * "plannedHomePosition": [lat, lon, alt], "items": [...]}, "geoFence", "rallyPoints"}}, and the older
+ * QGroundControl files it grew from (docs/mission-files.md).
  *
  * <p>The home (item 0) is {@code plannedHomePosition}; the other items are {@code SimpleItem}s
  * {@code {"type", "command", "frame", "params": [p1, p2, p3, p4, lat, lon, alt], "autoContinue",
  * "doJumpId": seq}}, with latitude and longitude in degrees (exactly the item's degE7) and the float
  * frames (see {@link FileValues}). NaN parameters are {@code null}, as QGroundControl writes them
- * (an infinity, which JSON cannot carry either, is null too and reads back as NaN).
+ * (an infinity, which JSON cannot carry either, is null too and reads back as NaN). Items are read
+ * by {@link PlanItems}, the geofence and rally points by {@link PlanAirspace}.
  *
- * <p>Reading flattens {@code ComplexItem}s (survey, corridor scan) into the SimpleItems QGroundControl
- * pre-expanded in {@code TransectStyleComplexItem.Items}, and ignores the geofence and rally points.
+ * <p>Versions are checked with the numbers QGroundControl accepts: a plan of version 1 whose mission
+ * is of version 2; a {@code .mission} of fileType "Mission" and version 2 (QGroundControl 3.x, the
+ * mission object at the root); the first {@code .mission} files, without fileType and of version "1.0".
  */
 public final class PlanFile {
 
     public static final String EXTENSION = ".plan";
     public static final String GROUND_STATION = "Dolphin";
-    /** QGroundControl's defaults for a new plan, in m/s. */
-    public static final double CRUISE_SPEED = 15;
-    public static final double HOVER_SPEED = 5;
+    public static final int PLAN_VERSION = 1;
+    public static final int MISSION_VERSION = 2;
 
     private static final JsonGenerator JSON = new JsonGenerator.Options().disableUnicodeEscaping().build();
 
     private PlanFile() {
     }
 
-    /** The plan of a copter mission (vehicleType MAV_TYPE_QUADROTOR). */
+    /** The plan of a copter mission without fence or rally points. */
     public static String write(List<MissionItem> items) {
-        return write(items, MAV_TYPE.MAV_TYPE_QUADROTOR);
+        return write(MissionFile.of(items));
     }
 
     /**
-     * The file's JSON for the items of a mission, item 0 the home (as {@link Mission#items} gives them).
-     *
-     * @param vehicleType a MAV_TYPE, which QGroundControl uses to pick its vehicle profile
+     * The file's JSON: the mission (item 0 the home, as {@link Mission#items} gives them), its
+     * fence and rally points, and the vehicle profile (firmware, vehicle type, speeds). A file
+     * without a mission gets its first fence or rally position as the planned home, at height 0.
      */
-    public static String write(List<MissionItem> items, int vehicleType) {
-        FileValues.requireHome(items);
-        MissionItem home = items.get(0);
+    public static String write(MissionFile file) {
+        List<MissionItem> items = file.mission();
+        MissionItem home = items.isEmpty() ? airspaceHome(file) : items.get(0);
         List<Object> simpleItems = new ArrayList<>();
         for (int i = 1; i < items.size(); i++) {
             MissionItem it = items.get(i);
@@ -72,22 +73,23 @@ public final class PlanFile {
             item.put("doJumpId", i);
             simpleItems.add(item);
         }
+        VehicleProfile v = file.vehicle();
         Map<String, Object> mission = new LinkedHashMap<>();
-        mission.put("version", 2);
-        mission.put("firmwareType", MAV_AUTOPILOT.MAV_AUTOPILOT_ARDUPILOTMEGA);
-        mission.put("vehicleType", vehicleType);
-        mission.put("cruiseSpeed", CRUISE_SPEED);
-        mission.put("hoverSpeed", HOVER_SPEED);
+        mission.put("version", MISSION_VERSION);
+        mission.put("firmwareType", v.firmwareType());
+        mission.put("vehicleType", v.vehicleType());
+        mission.put("cruiseSpeed", JsonOutput.unescaped(FileValues.number((float) v.cruiseSpeed())));
+        mission.put("hoverSpeed", JsonOutput.unescaped(FileValues.number((float) v.hoverSpeed())));
         mission.put("plannedHomePosition", Arrays.asList(degrees(home.x()), degrees(home.y()), number(home.z())));
         mission.put("items", simpleItems);
 
         Map<String, Object> plan = new LinkedHashMap<>();
         plan.put("fileType", "Plan");
-        plan.put("version", 1);
+        plan.put("version", PLAN_VERSION);
         plan.put("groundStation", GROUND_STATION);
         plan.put("mission", mission);
-        plan.put("geoFence", FileValues.ordered("version", 2, "polygons", List.of(), "circles", List.of()));
-        plan.put("rallyPoints", FileValues.ordered("version", 2, "points", List.of()));
+        plan.put("geoFence", PlanAirspace.writeFence(file.fence(), home));
+        plan.put("rallyPoints", PlanAirspace.writeRally(file.rally(), home));
         return JsonOutput.prettyPrint(JSON.toJson(plan)) + "\n";
     }
 
@@ -103,53 +105,134 @@ public final class PlanFile {
      * @throws IllegalArgumentException saying what is wrong, for a text that is not such a plan
      */
     public static List<MissionItem> read(String text) {
+        return readFile(text).mission();
+    }
+
+    /**
+     * Everything a plan (or an older QGroundControl mission file) holds.
+     *
+     * @throws IllegalArgumentException saying what is wrong and where (the JSON path), for a text
+     *         that is not such a file
+     */
+    public static MissionFile readFile(String text) {
         Object root;
         try {
             root = new JsonSlurper().parseText(MissionFileText.withoutBom(text));
         } catch (JsonException | IllegalArgumentException e) {
             throw new IllegalArgumentException("not a QGroundControl plan: the text is not JSON (" + oneLine(e) + ")", e);
         }
-        if (!(root instanceof Map<?, ?> plan) || !"Plan".equals(plan.get("fileType"))) {
-            throw new IllegalArgumentException("not a QGroundControl plan: \"fileType\" must be \"Plan\"");
+        if (!(root instanceof Map<?, ?> json)) {
+            throw new IllegalArgumentException("not a QGroundControl plan: the JSON is not an object");
         }
-        Map<?, ?> mission = map(plan.get("mission"), "mission");
-        List<?> home = list(mission.get("plannedHomePosition"), "mission.plannedHomePosition");
-        if (home.size() != 3) {
-            throw new IllegalArgumentException("mission.plannedHomePosition must be [lat, lon, alt], found " + home);
+        Object fileType = json.get("fileType");
+        if ("Plan".equals(fileType)) {
+            requireVersion(json, PLAN_VERSION, "version", "plans");
+            Map<?, ?> mission = PlanJson.map(json.get("mission"), "mission");
+            requireVersion(mission, MISSION_VERSION, "mission.version", "plan missions");
+            return mission(mission, "mission.")
+                    .withFence(PlanAirspace.readFence(json.get("geoFence")))
+                    .withRally(PlanAirspace.readRally(json.get("rallyPoints")));
         }
-        List<MissionItem> items = new ArrayList<>();
-        items.add(new MissionItem(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MissionItem.GLOBAL_INT, 0, 0, 0, 0,
-                degE7(home.get(0), "plannedHomePosition"), degE7(home.get(1), "plannedHomePosition"),
-                toFloat(home.get(2), "plannedHomePosition"), true));
-        List<?> entries = list(mission.get("items"), "mission.items");
-        for (int i = 0; i < entries.size(); i++) {
-            String where = "mission.items[" + i + "]";
-            Map<?, ?> entry = map(entries.get(i), where);
-            Object type = entry.get("type");
-            if ("SimpleItem".equals(type)) {
-                items.add(simpleItem(entry, items.size(), where));
-            } else if ("ComplexItem".equals(type)) {
-                Object transect = entry.get("TransectStyleComplexItem");
-                if (!(transect instanceof Map<?, ?> t) || !(t.get("Items") instanceof List<?> expanded)) {
-                    throw new IllegalArgumentException(where + ": ComplexItem '" + entry.get("complexItemType")
-                            + "' has no TransectStyleComplexItem.Items to import (only surveys and corridor scans"
-                            + " saved by QGroundControl carry their expanded items)");
-                }
-                for (int k = 0; k < expanded.size(); k++) {
-                    String w = where + ".TransectStyleComplexItem.Items[" + k + "]";
-                    items.add(simpleItem(map(expanded.get(k), w), items.size(), w));
-                }
-            } else {
-                throw new IllegalArgumentException(where + ": unknown item type " + type
-                        + " (expected SimpleItem or ComplexItem)");
-            }
+        if ("Mission".equals(fileType)) {
+            requireVersion(json, MISSION_VERSION, "version", ".mission files");
+            return mission(json, "");
         }
-        return items;
+        if (fileType == null && json.containsKey("MAV_AUTOPILOT")) {
+            return firstMissionFormat(json);
+        }
+        throw new IllegalArgumentException("not a QGroundControl plan: \"fileType\" must be \"Plan\""
+                + (fileType == null ? ", the file has none" : ", found " + fileType));
     }
 
     /** The items of a file, UTF-8 with or without a byte-order mark; errors name the file. */
     public static List<MissionItem> read(Path file) throws IOException {
         return MissionFileText.parse(file, PlanFile::read);
+    }
+
+    /** Everything a file holds, UTF-8 with or without a byte-order mark; errors name the file. */
+    public static MissionFile readFile(Path file) throws IOException {
+        return MissionFileText.parse(file, PlanFile::readFile);
+    }
+
+    /** A mission object of version 2 (a plan's "mission", or a .mission file's root). */
+    private static MissionFile mission(Map<?, ?> mission, String prefix) {
+        List<?> home = PlanJson.list(mission.get("plannedHomePosition"), prefix + "plannedHomePosition");
+        if (home.size() != 3) {
+            throw new IllegalArgumentException(prefix + "plannedHomePosition must be [lat, lon, alt], found " + home);
+        }
+        String hw = prefix + "plannedHomePosition";
+        List<MissionItem> items = new ArrayList<>();
+        items.add(new MissionItem(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MissionItem.GLOBAL_INT, 0, 0, 0, 0,
+                PlanJson.degE7(home.get(0), 90, hw + "[0]"), PlanJson.degE7(home.get(1), 180, hw + "[1]"),
+                PlanJson.toFloat(home.get(2), hw + "[2]"), true));
+        items.addAll(PlanItems.read(PlanJson.list(mission.get("items"), prefix + "items"), 1, "doJumpId", prefix + "items"));
+        VehicleProfile defaults = VehicleProfile.ARDUPILOT_COPTER;
+        VehicleProfile vehicle = new VehicleProfile(
+                optionalInt(mission, "firmwareType", defaults.firmwareType(), prefix),
+                optionalInt(mission, "vehicleType", defaults.vehicleType(), prefix),
+                optionalDouble(mission, "cruiseSpeed", defaults.cruiseSpeed(), prefix),
+                optionalDouble(mission, "hoverSpeed", defaults.hoverSpeed(), prefix));
+        return new MissionFile(items, Fence.NONE, RallyPoints.NONE, vehicle);
+    }
+
+    /**
+     * QGroundControl's first .mission files: {@code {"version": "1.0", "MAV_AUTOPILOT",
+     * "plannedHomePosition": {a missionItem}, "items": [{"type": "missionItem", "id", "param1".."param4",
+     * "coordinate"}], "complexItems": []}}. Their surveys carry no expanded items and are refused.
+     */
+    private static MissionFile firstMissionFormat(Map<?, ?> json) {
+        double version = PlanJson.version(json.get("version"), "version");
+        if (version != 1) {
+            throw new IllegalArgumentException("version " + json.get("version") + ": QGroundControl's .mission files"
+                    + " without fileType are of version 1.0");
+        }
+        Object complex = json.get("complexItems");
+        if (complex != null && !PlanJson.list(complex, "complexItems").isEmpty()) {
+            throw new IllegalArgumentException("complexItems: the surveys of a version 1.0 .mission file carry no"
+                    + " expanded items to import; open the file in QGroundControl and save it as a plan");
+        }
+        List<MissionItem> home = PlanItems.read(List.of(PlanJson.map(json.get("plannedHomePosition"),
+                "plannedHomePosition")), 0, "id", "plannedHomePosition");
+        MissionItem h = home.get(0);
+        List<MissionItem> items = new ArrayList<>();
+        items.add(new MissionItem(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MissionItem.GLOBAL_INT, 0, 0, 0, 0, h.x(), h.y(),
+                h.z(), true));
+        items.addAll(PlanItems.read(PlanJson.list(json.get("items"), "items"), 1, "id", "items"));
+        int firmware = optionalInt(json, "MAV_AUTOPILOT", MAV_AUTOPILOT.MAV_AUTOPILOT_ARDUPILOTMEGA, "");
+        return new MissionFile(items, Fence.NONE, RallyPoints.NONE, new VehicleProfile(firmware,
+                VehicleProfile.ARDUPILOT_COPTER.vehicleType(), VehicleProfile.CRUISE_SPEED, VehicleProfile.HOVER_SPEED));
+    }
+
+    private static void requireVersion(Map<?, ?> json, int expected, String where, String what) {
+        Object v = json.get(where.substring(where.lastIndexOf('.') + 1));
+        if (v == null) {
+            throw new IllegalArgumentException(where + ": missing; QGroundControl " + what + " are of version " + expected);
+        }
+        double version = PlanJson.version(v, where);
+        if (version != expected) {
+            throw new IllegalArgumentException(where + " " + v + " is not one QGroundControl reads: its " + what
+                    + " are of version " + expected);
+        }
+    }
+
+    private static int optionalInt(Map<?, ?> json, String key, int fallback, String prefix) {
+        return json.get(key) == null ? fallback : PlanJson.integer(json.get(key), prefix + key);
+    }
+
+    private static double optionalDouble(Map<?, ?> json, String key, double fallback, String prefix) {
+        return json.get(key) == null ? fallback : PlanJson.toDouble(json.get(key), prefix + key);
+    }
+
+    /** A planned home for a file of only a fence or rally points: their first position, at height 0. */
+    private static MissionItem airspaceHome(MissionFile file) {
+        List<MissionItem> points = new ArrayList<>(file.fence().items());
+        points.addAll(file.rally().items());
+        if (points.isEmpty()) {
+            throw new IllegalArgumentException("a plan needs a mission, a fence or rally points: the file has none");
+        }
+        MissionItem first = points.get(0);
+        return new MissionItem(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MissionItem.GLOBAL_INT, 0, 0, 0, 0, first.x(), first.y(),
+                0, true);
     }
 
     /** The parser's first line and the line it stopped at: its message also dumps the text around it. */
@@ -160,77 +243,11 @@ public final class PlanFile {
         return line.find() ? first + ", at line " + line.group(1) : first;
     }
 
-    private static MissionItem simpleItem(Map<?, ?> item, int seq, String where) {
-        if (!"SimpleItem".equals(item.get("type"))) {
-            throw new IllegalArgumentException(where + ": expected a SimpleItem, found type " + item.get("type"));
-        }
-        List<?> p = list(item.get("params"), where + ".params");
-        if (p.size() != 7) {
-            throw new IllegalArgumentException(where + ".params must have 7 values, found " + p.size());
-        }
-        String pw = where + ".params";
-        Object autoContinue = item.get("autoContinue");
-        return new MissionItem(seq, integer(item.get("command"), where + ".command"),
-                FileValues.itemFrame(integer(item.get("frame"), where + ".frame")),
-                toFloat(p.get(0), pw), toFloat(p.get(1), pw), toFloat(p.get(2), pw), toFloat(p.get(3), pw),
-                degE7(p.get(4), pw), degE7(p.get(5), pw), toFloat(p.get(6), pw),
-                autoContinue == null || Boolean.TRUE.equals(autoContinue));
-    }
-
     private static Object number(float f) {
         return FileValues.jsonNumber(f);
     }
 
     private static Object degrees(int degE7) {
         return FileValues.jsonDegrees(degE7);
-    }
-
-    private static float toFloat(Object v, String where) {
-        if (v == null) {
-            return Float.NaN;
-        }
-        if (!(v instanceof Number)) {
-            throw new IllegalArgumentException(where + ": expected a number or null, found " + v);
-        }
-        return FileValues.parseFloat(v.toString());
-    }
-
-    private static int degE7(Object v, String where) {
-        if (v == null) {
-            return 0;
-        }
-        if (!(v instanceof Number)) {
-            throw new IllegalArgumentException(where + ": expected degrees, found " + v);
-        }
-        try {
-            return FileValues.degE7(v.toString());
-        } catch (NumberFormatException | ArithmeticException e) {
-            throw new IllegalArgumentException(where + ": " + e.getMessage(), e);
-        }
-    }
-
-    private static int integer(Object v, String where) {
-        if (!(v instanceof Number n)) {
-            throw new IllegalArgumentException(where + ": expected an integer, found " + v);
-        }
-        try {
-            return FileValues.parseInt(n.toString());
-        } catch (NumberFormatException e) {
-            throw new IllegalArgumentException(where + ": " + e.getMessage(), e);
-        }
-    }
-
-    private static Map<?, ?> map(Object v, String where) {
-        if (!(v instanceof Map<?, ?> m)) {
-            throw new IllegalArgumentException(where + ": expected a JSON object, found " + (v == null ? "nothing" : v));
-        }
-        return m;
-    }
-
-    private static List<?> list(Object v, String where) {
-        if (!(v instanceof List<?> l)) {
-            throw new IllegalArgumentException(where + ": expected a JSON array, found " + (v == null ? "nothing" : v));
-        }
-        return l;
     }
 }

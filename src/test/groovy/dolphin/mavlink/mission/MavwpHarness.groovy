@@ -22,8 +22,13 @@ final class MavwpHarness {
     private MavwpHarness() {
     }
 
-    /** What mavwp loaded from each file, in order: maps with file, count, items. */
+    /** What mavwp loaded from each file, in order: maps with file, count, units, items. */
     static List<Map> load(List<Path> files) {
+        load(files, null)
+    }
+
+    /** Same, with the fence loader ({@code kind} "fence") or the rally loaders ("rally"). */
+    static List<Map> load(List<Path> files, String kind) {
         if (!Files.isExecutable(PYTHON)) {
             throw new IllegalStateException("the mavwp specs need the project's Python venv with the pinned pymavlink at " +
                     "$PYTHON; the Maven build creates it (harness/generate-bindings.sh runs harness/venv.sh), or run " +
@@ -32,7 +37,7 @@ final class MavwpHarness {
         Path dir = Files.createTempDirectory('mavwp')
         try {
             Path stdout = dir.resolve('stdout'), stderr = dir.resolve('stderr')
-            List<String> command = ([PYTHON, SCRIPT] + files).collect { it.toString() }
+            List<String> command = ([PYTHON, SCRIPT] + (kind ? ["--$kind"] : []) + files).collect { it.toString() }
             Process p = new ProcessBuilder(command).directory(PROJECT.toFile())
                     .redirectInput(ProcessBuilder.Redirect.from(new File('/dev/null')))
                     .redirectOutput(stdout.toFile()).redirectError(stderr.toFile()).start()

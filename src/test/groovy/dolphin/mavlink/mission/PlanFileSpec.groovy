@@ -65,7 +65,8 @@ class PlanFileSpec extends Specification {
 
     def "the vehicle type can be given"() {
         expect:
-        json(PlanFile.write(mission(), MAV_TYPE.MAV_TYPE_FIXED_WING)).mission.vehicleType == MAV_TYPE.MAV_TYPE_FIXED_WING
+        json(PlanFile.write(MissionFile.of(mission()).withVehicle(VehicleProfile.ardupilot(MAV_TYPE.MAV_TYPE_FIXED_WING))))
+                .mission.vehicleType == MAV_TYPE.MAV_TYPE_FIXED_WING
     }
 
     def "the home is plannedHomePosition [lat, lon, alt] and the items start at seq 1"() {
@@ -142,20 +143,32 @@ class PlanFileSpec extends Specification {
         where:
         text                                                                                      | reason
         'QGC WPL 110\n'                                                                           | 'the text is not JSON'
-        '[]'                                                                                      | '"fileType" must be "Plan"'
-        '{"fileType": "GeoFence"}'                                                                | '"fileType" must be "Plan"'
-        '{"fileType": "Plan"}'                                                                    | 'mission: expected a JSON object, found nothing'
-        '{"fileType": "Plan", "mission": {"items": []}}'                                          | 'mission.plannedHomePosition: expected a JSON array'
-        '{"fileType": "Plan", "mission": {"plannedHomePosition": [1, 2], "items": []}}'           | 'must be [lat, lon, alt]'
-        plan('{"type": "Thing"}')                                                                 | 'mission.items[0]: unknown item type Thing'
+        '[]'                                                                                      | 'the JSON is not an object'
+        '{"fileType": "GeoFence"}'                                                                | '"fileType" must be "Plan", found GeoFence'
+        '{"fileType": "Plan", "version": 1}'                                                      | 'mission: expected a JSON object, found nothing'
+        '{"fileType": "Plan", "version": 1, "mission": {"version": 2, "items": []}}'              | 'mission.plannedHomePosition: expected a JSON array'
+        '{"fileType": "Plan", "version": 1, "mission": {"version": 2, "plannedHomePosition": [1, 2], "items": []}}' | 'must be [lat, lon, alt]'
+        '{"fileType": "Plan", "mission": {}}'                                                     | 'version: missing; QGroundControl plans are of version 1'
+        '{"fileType": "Plan", "version": 42, "mission": {}}'                                      | 'version 42 is not one QGroundControl reads: its plans are of version 1'
+        '{"fileType": "Plan", "version": 1, "mission": {"version": 7}}'                           | 'mission.version 7 is not one QGroundControl reads'
+        '{"fileType": "Mission", "version": 3}'                                                   | 'version 3 is not one QGroundControl reads: its .mission files are of version 2'
+        '{"MAV_AUTOPILOT": 3, "version": "2.0", "items": []}'                                     | 'version 2.0: QGroundControl\'s .mission files without fileType are of version 1.0'
+        plan('{"type": "Thing"}')                                                                 | 'mission.items[0]: unknown item type "Thing"'
         plan('{"type": "SimpleItem", "command": 16, "frame": 3, "params": [0, 0, 0], "autoContinue": true}') | 'mission.items[0].params must have 7 values, found 3'
-        plan('{"type": "SimpleItem", "command": "WP", "frame": 3, "params": [0, 0, 0, 0, 0, 0, 0]}') | "mission.items[0].command: expected an integer, found WP"
-        plan('{"type": "SimpleItem", "command": 16, "frame": 3, "params": [0, 0, "x", 0, 0, 0, 0]}') | 'mission.items[0].params: expected a number or null, found x'
+        plan('{"type": "SimpleItem", "command": "WP", "frame": 3, "params": [0, 0, 0, 0, 0, 0, 0]}') | 'mission.items[0].command: expected an integer, found "WP"'
+        plan('{"type": "SimpleItem", "command": 16, "frame": 3, "params": [0, 0, "x", 0, 0, 0, 0]}') | 'mission.items[0].params[2]: expected a number or null, found "x"'
+        plan('{"type": "SimpleItem", "command": 16, "frame": 3, "params": [0, 0, 0, 0, 91.5, 0, 0]}') | 'mission.items[0].params[4] (latitude): 91.5 is out of range for a latitude (-90 to 90)'
+        plan('{"type": "SimpleItem", "command": 16, "frame": 3, "params": [0, 0, 0, 0, 0, -181, 0]}') | 'mission.items[0].params[5] (longitude): -181 is out of range for a longitude (-180 to 180)'
+        plan('{"type": "SimpleItem", "command": 177, "frame": 2, "params": [9, 1, 0, 0, 0, 0, 0], "doJumpId": 1}') | 'mission.items[0]: DO_JUMP to doJumpId 9, which no item of the mission has'
+        plan('{"type": "SimpleItem", "command": 16, "frame": 0, "params": [0, 0, 0, 0, 1, 2, null], "AltitudeMode": 3}') | 'mission.items[0]: the altitude is to be calculated above terrain, but the plan has neither'
         plan('{"type": "ComplexItem", "complexItemType": "fwLandingPattern"}')                     | "ComplexItem 'fwLandingPattern' has no TransectStyleComplexItem.Items"
+        plan('{"type": "ComplexItem", "complexItemType": "survey", "version": 9}')                 | 'mission.items[0]: survey version 9 is not one QGroundControl reads (2 to 5)'
+        plan('{"type": "SimpleItem", "command": 16, "frame": 3, "params": [0, 0, 0, 0], "coordinate": [1, 2]}') | 'an item with a coordinate [lat, lon, alt] has 4 params, found 4 params and 2 coordinate values'
+        plan('{"type": "SimpleItem", "command": 16, "frame": 3, "params": [0, 0, 0, 0, 0, 0, 0], "autoContinue": "yes"}') | 'mission.items[0].autoContinue: expected true or false, found "yes"'
     }
 
     static String plan(String item) {
-        '{"fileType": "Plan", "mission": {"plannedHomePosition": [1, 2, 3], "items": [' + item + ']}}'
+        '{"fileType": "Plan", "version": 1, "mission": {"version": 2, "plannedHomePosition": [1, 2, 3], "items": [' + item + ']}}'
     }
 
     /** A plan as QGroundControl 4 saves it: a take-off, a survey (ComplexItem), and RTL. */
