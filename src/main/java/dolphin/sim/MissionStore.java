@@ -3,7 +3,9 @@ package dolphin.sim;
 import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_FRAME;
 import dolphin.core.Position;
+import com.MAVLink.enums.MAV_MISSION_RESULT;
 import dolphin.mavlink.mission.MissionItem;
+import dolphin.mavlink.mission.MissionType;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Supplier;
@@ -13,7 +15,7 @@ import java.util.function.Supplier;
  * home (written items at seq 0 are dropped, and reading seq 0 gives the vehicle's current home as a
  * NAV_WAYPOINT in MAV_FRAME_GLOBAL, height above mean sea level); real items start at 1.
  */
-final class MissionStore {
+final class MissionStore implements ItemStore {
 
     private final List<MissionItem> items = new ArrayList<>();
     private final Supplier<Position> home;
@@ -25,13 +27,31 @@ final class MissionStore {
         items.add(null);
     }
 
-    int capacity() {
+    @Override
+    public int capacity() {
         return capacity;
     }
 
     /** Items stored, home included (what MISSION_COUNT reports on download). */
-    int count() {
+    @Override
+    public int count() {
         return items.size();
+    }
+
+    @Override
+    public MissionType type() {
+        return MissionType.MISSION;
+    }
+
+    @Override
+    public int check(MissionItem item) {
+        return MissionCheck.result(item);
+    }
+
+    /** Each item was checked as it came: the mission is stored as it arrived. */
+    @Override
+    public int complete() {
+        return MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
     }
 
     MissionItem get(int seq) {
@@ -39,14 +59,16 @@ final class MissionStore {
     }
 
     /** Keeps the first {@code n} items (home always stays), as MISSION_COUNT does at once. */
-    void truncate(int n) {
+    @Override
+    public void truncate(int n) {
         while (items.size() > Math.max(1, n)) {
             items.remove(items.size() - 1);
         }
     }
 
     /** Writes an item at its seq (seq 0 is home and is not written; seq may be at most count()). */
-    void put(MissionItem item) {
+    @Override
+    public void put(MissionItem item) {
         int seq = item.seq();
         if (seq == 0) {
             return;
@@ -66,7 +88,8 @@ final class MissionStore {
      * even in MISSION_ITEM_INT; items without a position come back in MAV_FRAME_GLOBAL too
      * (AP_Mission::mission_cmd_to_mavlink_int).
      */
-    MissionItem reported(int seq) {
+    @Override
+    public MissionItem reported(int seq) {
         MissionItem i = get(seq);
         int reference = MissionItem.altitudeReference(i.frame());
         int frame = reference == MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT || reference == MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT
@@ -75,7 +98,8 @@ final class MissionStore {
                 i.autocontinue());
     }
 
-    void clear() {
+    @Override
+    public void clear() {
         truncate(1);
     }
 

@@ -10,9 +10,9 @@ import com.MAVLink.common.msg_mission_request;
 import com.MAVLink.common.msg_mission_request_int;
 import com.MAVLink.common.msg_mission_request_list;
 import com.MAVLink.enums.MAV_MISSION_RESULT;
-import com.MAVLink.enums.MAV_MISSION_TYPE;
 import com.MAVLink.enums.MAV_SEVERITY;
 import dolphin.mavlink.mission.MissionItem;
+import dolphin.mavlink.mission.MissionType;
 
 /**
  * The vehicle side of the mission protocol, as ArduPilot's MissionItemProtocol does it: uploads
@@ -20,8 +20,9 @@ import dolphin.mavlink.mission.MissionItem;
  * second, cancelled after 8 s without one; a wrong seq is INVALID_SEQUENCE and the upload goes on;
  * another sender, or a download, during an upload is DENIED), downloads (MISSION_REQUEST_LIST,
  * MISSION_REQUEST_INT answered with MISSION_ITEM_INT, MISSION_REQUEST with MISSION_ITEM) and
- * MISSION_CLEAR_ALL. Only mission_type MISSION; fences and rally points are UNSUPPORTED. Runs on
- * the fleet's thread, under the vehicle's lock.
+ * MISSION_CLEAR_ALL. One transfer a list (mission, fence, rally points: {@link ItemStore}), as
+ * ArduPilot has one MissionItemProtocol a mission_type; a message of another mission_type is
+ * UNSUPPORTED. Runs on the fleet's thread, under the vehicle's lock.
  */
 final class MissionTransfer {
 
@@ -37,11 +38,12 @@ final class MissionTransfer {
         /** False while armed and flying a mission in AUTO: clearing is refused then. */
         boolean clearAllowed();
 
-        /** The stored mission changed (an upload finished, or it was cleared). */
-        void missionChanged();
+        /** The stored list changed (an upload finished, or it was cleared). */
+        void changed(MissionType type);
     }
 
-    private final MissionStore store;
+    private final ItemStore store;
+    private final MissionType type;
     private final Host host;
     private boolean uploading;
     private int uploaderSys;
@@ -52,8 +54,9 @@ final class MissionTransfer {
     private long lastRequest;
     private boolean floatWarned;
 
-    MissionTransfer(MissionStore store, Host host) {
+    MissionTransfer(ItemStore store, Host host) {
         this.store = store;
+        this.type = store.type();
         this.host = host;
     }
 
@@ -72,24 +75,24 @@ final class MissionTransfer {
                 floatWarned = true;
                 host.text(MAV_SEVERITY.MAV_SEVERITY_WARNING, "got MISSION_ITEM; GCS should send MISSION_ITEM_INT");
             }
-            item(i.sysid, i.compid, i.mission_type, fromFloat(i), now);
+            item(i.sysid, i.compid, i.mission_type, fromFloat(i, type), now);
         } else if (m instanceof msg_mission_request_list r) {
             if (refuseDownload(r.sysid, r.compid, r.mission_type)) {
                 return true;
             }
             msg_mission_count c = new msg_mission_count();
             c.count = store.count();
-            c.mission_type = MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION;
+            c.mission_type = (short) type.wire();
             c.target_system = (short) r.sysid;
             c.target_component = (short) r.compid;
             host.send(c);
         } else if (m instanceof msg_mission_request_int r) {
             if (!refuseDownload(r.sysid, r.compid, r.mission_type) && inRange(r.sysid, r.compid, r.seq)) {
-                host.send(store.reported(r.seq).toMessage(r.sysid, r.compid));
+                host.send(store.reported(r.seq).toMessage(r.sysid, r.compid, type));
             }
         } else if (m instanceof msg_mission_request r) {
             if (!refuseDownload(r.sysid, r.compid, r.mission_type) && inRange(r.sysid, r.compid, r.seq)) {
-                host.send(toFloat(store.reported(r.seq), r.sysid, r.compid));
+                host.send(toFloat(store.reported(r.seq), r.sysid, r.compid, type));
             }
         } else if (m instanceof msg_mission_clear_all c) {
             clear(c);
@@ -114,7 +117,7 @@ final class MissionTransfer {
     }
 
     private void count(msg_mission_count c, long now) {
-        if (c.mission_type != MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION) {
+        if (c.mission_type != type.wire()) {
             ack(c.sysid, c.compid, MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED, c.mission_type);
             return;
         }
@@ -130,7 +133,7 @@ final class MissionTransfer {
         store.truncate(c.count);
         if (c.count == 0) {
             ack(c.sysid, c.compid, MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED);
-            host.missionChanged();
+            host.changed(type);
             return;
         }
         uploading = true;
@@ -154,12 +157,11 @@ final class MissionTransfer {
             ack(sys, comp, MAV_MISSION_RESULT.MAV_MISSION_INVALID_SEQUENCE);
             return;
         }
-        int result = missionType != MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION ? MAV_MISSION_RESULT.MAV_MISSION_ERROR
-                : MissionCheck.result(item);
+        int result = missionType != type.wire() ? MAV_MISSION_RESULT.MAV_MISSION_ERROR : store.check(item);
         if (result != MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
             uploading = false;
             ack(sys, comp, result);
-            host.missionChanged();
+            host.changed(type);
             return;
         }
         store.put(item);
@@ -170,27 +172,30 @@ final class MissionTransfer {
             return;
         }
         uploading = false;
-        ack(sys, comp, MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED);
-        host.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Flight plan received");
-        host.missionChanged();
+        result = store.complete();
+        ack(sys, comp, result);
+        if (type == MissionType.MISSION) {
+            host.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Flight plan received");
+        }
+        host.changed(type);
     }
 
     private void clear(msg_mission_clear_all c) {
-        if (c.mission_type != MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION) {
+        if (c.mission_type != type.wire()) {
             ack(c.sysid, c.compid, MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED, c.mission_type);
             return;
         }
-        if (uploading || !host.clearAllowed()) {
+        if (uploading || (type == MissionType.MISSION && !host.clearAllowed())) {
             ack(c.sysid, c.compid, uploading ? MAV_MISSION_RESULT.MAV_MISSION_DENIED : MAV_MISSION_RESULT.MAV_MISSION_ERROR);
             return;
         }
         store.clear();
         ack(c.sysid, c.compid, MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED);
-        host.missionChanged();
+        host.changed(type);
     }
 
     private boolean refuseDownload(int sys, int comp, int missionType) {
-        if (missionType != MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION) {
+        if (missionType != type.wire()) {
             ack(sys, comp, MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED, missionType);
             return true;
         }
@@ -216,7 +221,7 @@ final class MissionTransfer {
     private void request(long now) {
         msg_mission_request r = new msg_mission_request();
         r.seq = next;
-        r.mission_type = MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION;
+        r.mission_type = (short) type.wire();
         r.target_system = (short) uploaderSys;
         r.target_component = (short) uploaderComp;
         host.send(r);
@@ -224,7 +229,7 @@ final class MissionTransfer {
     }
 
     private void ack(int sys, int comp, int result) {
-        ack(sys, comp, result, MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION);
+        ack(sys, comp, result, type.wire());
     }
 
     private void ack(int sys, int comp, int result, int missionType) {
@@ -236,8 +241,8 @@ final class MissionTransfer {
         host.send(a);
     }
 
-    private static MissionItem fromFloat(msg_mission_item i) {
-        boolean positional = MissionCheck.POSITIONAL.contains(i.command);
+    private static MissionItem fromFloat(msg_mission_item i, MissionType type) {
+        boolean positional = type != MissionType.MISSION || MissionCheck.POSITIONAL.contains(i.command);
         int x = positional ? clampE7(i.x) : Math.round(i.x);
         int y = positional ? clampE7(i.y) : Math.round(i.y);
         return new MissionItem(i.seq, i.command, i.frame, i.param1, i.param2, i.param3, i.param4, x, y, i.z,
@@ -250,9 +255,10 @@ final class MissionTransfer {
                 : Integer.MAX_VALUE;
     }
 
-    private static msg_mission_item toFloat(MissionItem item, int sys, int comp) {
+    private static msg_mission_item toFloat(MissionItem item, int sys, int comp, MissionType type) {
         msg_mission_item m = new msg_mission_item();
-        boolean positional = MissionCheck.POSITIONAL.contains(item.command()) || item.seq() == 0;
+        boolean positional = type != MissionType.MISSION || MissionCheck.POSITIONAL.contains(item.command())
+                || item.seq() == 0;
         m.target_system = (short) sys;
         m.target_component = (short) comp;
         m.seq = item.seq();
@@ -266,7 +272,7 @@ final class MissionTransfer {
         m.y = positional ? (float) (item.y() * 1e-7) : item.y();
         m.z = item.z();
         m.autocontinue = (short) (item.autocontinue() ? 1 : 0);
-        m.mission_type = MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION;
+        m.mission_type = (short) type.wire();
         return m;
     }
 }

@@ -7,15 +7,7 @@ import com.MAVLink.common.msg_command_ack;
 import com.MAVLink.common.msg_command_long;
 import com.MAVLink.common.msg_extended_sys_state;
 import com.MAVLink.common.msg_home_position;
-import com.MAVLink.common.msg_mission_ack;
-import com.MAVLink.common.msg_mission_clear_all;
-import com.MAVLink.common.msg_mission_count;
 import com.MAVLink.common.msg_mission_current;
-import com.MAVLink.common.msg_mission_item;
-import com.MAVLink.common.msg_mission_item_int;
-import com.MAVLink.common.msg_mission_request;
-import com.MAVLink.common.msg_mission_request_int;
-import com.MAVLink.common.msg_mission_request_list;
 import com.MAVLink.common.msg_mission_set_current;
 import com.MAVLink.common.msg_request_data_stream;
 import com.MAVLink.common.msg_set_mode;
@@ -30,7 +22,10 @@ import com.MAVLink.enums.MAV_SYS_STATUS_SENSOR;
 import com.MAVLink.minimal.msg_heartbeat;
 import com.MAVLink.standard.msg_global_position_int;
 import dolphin.core.Position;
+import dolphin.mavlink.mission.Fence;
 import dolphin.mavlink.mission.MissionItem;
+import dolphin.mavlink.mission.MissionType;
+import dolphin.mavlink.mission.RallyPoints;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -77,7 +72,7 @@ public final class SimVehicle {
     private double speed;
     private int commandsHandled;
     private final MissionStore missionStore;
-    private final MissionTransfer transfer;
+    private final MissionLists lists;
     private final MissionFlight flight;
 
     SimVehicle(int sysid, VehicleKind kind, Position home, SimOptions options, long now) {
@@ -92,7 +87,7 @@ public final class SimVehicle {
         this.nextHeartbeat = now;
         this.lastTick = now;
         this.missionStore = new MissionStore(() -> this.home, options.missionCapacity());
-        this.transfer = new MissionTransfer(missionStore, new TransferHost());
+        this.lists = new MissionLists(missionStore, options.missionCapacity(), new TransferHost());
         this.flight = new MissionFlight(firmware, missionStore, new FlightBody());
         if (firmware.defaultStreamHz() > 0) {
             for (int id : STREAMABLE) {
@@ -171,6 +166,16 @@ public final class SimVehicle {
         return missionStore.items();
     }
 
+    /** The stored fence (docs/airspace.md). */
+    public synchronized Fence fence() {
+        return lists.fence();
+    }
+
+    /** The stored rally points. */
+    public synchronized RallyPoints rallyPoints() {
+        return lists.rally();
+    }
+
     /** Camera items (IMAGE_START/STOP_CAPTURE, DO_DIGICAM_CONTROL, DO_SET_CAM_TRIGG_DIST) the missions ran. */
     public synchronized int cameraCommands() {
         return flight.cameraCommands();
@@ -188,7 +193,7 @@ public final class SimVehicle {
 
     /** Whether an upload is in progress. */
     public synchronized boolean missionUploading() {
-        return transfer.uploading();
+        return lists.uploading();
     }
 
     /** Moves towards {@code to} at {@code metresPerSecond} (straight line, heights included; never below the ground). */
@@ -212,7 +217,7 @@ public final class SimVehicle {
             battery = Math.max(0, battery - options.drainPercentPerMinute() * dt / 60);
         }
         move(dt);
-        transfer.tick(now);
+        lists.tick(now);
         flight.tick(dt);
         estimate.periodicReport(now, armed).ifPresent(s -> outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, s));
         outbox.flush();
@@ -266,8 +271,8 @@ public final class SimVehicle {
             setModeIfValid(s.custom_mode);
         } else if (m instanceof msg_request_data_stream r && r.target_system == sysid) {
             requestDataStream(r, now);
-        } else if (missionTarget(m) == sysid) {
-            transfer.handle(m, now);
+        } else if (lists.handle(m, sysid, now)) {
+            // a mission, fence or rally transfer
         } else if (m instanceof msg_mission_set_current s && s.target_system == sysid) {
             flight.setCurrent(s.seq);
         }
@@ -327,27 +332,6 @@ public final class SimVehicle {
         }
         flight.missionStart();
         return MAV_RESULT.MAV_RESULT_ACCEPTED;
-    }
-
-    private static int missionTarget(MAVLinkMessage m) {
-        if (m instanceof msg_mission_count x) {
-            return x.target_system;
-        } else if (m instanceof msg_mission_item_int x) {
-            return x.target_system;
-        } else if (m instanceof msg_mission_item x) {
-            return x.target_system;
-        } else if (m instanceof msg_mission_request_list x) {
-            return x.target_system;
-        } else if (m instanceof msg_mission_request_int x) {
-            return x.target_system;
-        } else if (m instanceof msg_mission_request x) {
-            return x.target_system;
-        } else if (m instanceof msg_mission_clear_all x) {
-            return x.target_system;
-        } else if (m instanceof msg_mission_ack x) {
-            return x.target_system;
-        }
-        return -1;
     }
 
     private int arm(long now) {
@@ -510,8 +494,10 @@ public final class SimVehicle {
         }
 
         @Override
-        public void missionChanged() {
-            flight.missionChanged();
+        public void changed(MissionType type) {
+            if (type == MissionType.MISSION) {
+                flight.missionChanged();
+            }
         }
     }
 

@@ -39,7 +39,16 @@ public final class MissionDownloadProtocol {
     }
 
     public CompletableFuture<TransferResult> download(MissionTransferConfig config, TransferProgress progress) {
-        Download d = new Download(comms, node, config, progress);
+        return download(MissionType.MISSION, config, progress);
+    }
+
+    /** Downloads the vehicle's fence, rally points or mission; from any thread. */
+    public CompletableFuture<TransferResult> download(MissionType type) {
+        return download(type, comms.missionTransferConfig(), TransferProgress.NONE);
+    }
+
+    public CompletableFuture<TransferResult> download(MissionType type, MissionTransferConfig config, TransferProgress progress) {
+        Download d = new Download(comms, node, config, progress, type);
         transfers.submit(d);
         return d.result;
     }
@@ -63,8 +72,9 @@ public final class MissionDownloadProtocol {
         private int count = -1;        // -1 until MISSION_COUNT
         private int tries;
 
-        Download(MAVLinkCommunications comms, MAVLinkNode node, MissionTransferConfig config, TransferProgress progress) {
-            super(comms, node, config, progress);
+        Download(MAVLinkCommunications comms, MAVLinkNode node, MissionTransferConfig config, TransferProgress progress,
+                 MissionType type) {
+            super(comms, node, config, progress, type);
         }
 
         @Override
@@ -81,7 +91,7 @@ public final class MissionDownloadProtocol {
             msg_mission_request_list m = new msg_mission_request_list();
             m.target_system = (short) node.getMavLinkId();
             m.target_component = (short) node.getAutopilotCompid();
-            m.mission_type = 0;
+            m.mission_type = (short) type.wire();
             tries++;
             send(m);
             arm(() -> {
@@ -99,7 +109,7 @@ public final class MissionDownloadProtocol {
             m.target_system = (short) node.getMavLinkId();
             m.target_component = (short) node.getAutopilotCompid();
             m.seq = items.size();
-            m.mission_type = 0;
+            m.mission_type = (short) type.wire();
             tries++;
             send(m);
             arm(() -> {
@@ -156,7 +166,7 @@ public final class MissionDownloadProtocol {
             ack.target_system = (short) node.getMavLinkId();
             ack.target_component = (short) node.getAutopilotCompid();
             ack.type = MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
-            ack.mission_type = 0;
+            ack.mission_type = (short) type.wire();
             send(ack);
             succeed(items);
         }

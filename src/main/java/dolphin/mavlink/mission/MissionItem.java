@@ -64,6 +64,10 @@ public record MissionItem(int seq, int command, int frame, float param1, float p
     }
 
     public msg_mission_item_int toMessage(int targetSystem, int targetComponent) {
+        return toMessage(targetSystem, targetComponent, MissionType.MISSION);
+    }
+
+    public msg_mission_item_int toMessage(int targetSystem, int targetComponent, MissionType type) {
         msg_mission_item_int m = new msg_mission_item_int();
         m.target_system = (short) targetSystem;
         m.target_component = (short) targetComponent;
@@ -79,7 +83,7 @@ public record MissionItem(int seq, int command, int frame, float param1, float p
         m.z = z;
         m.autocontinue = (short) (autocontinue ? 1 : 0);
         m.current = 0;
-        m.mission_type = 0;
+        m.mission_type = (short) type.wire();
         return m;
     }
 

@@ -15,14 +15,17 @@ abstract class MissionTransfer {
     final MAVLinkNode node;
     final MissionTransferConfig config;
     final TransferProgress progress;
+    final MissionType type;
     final CompletableFuture<TransferResult> result = new CompletableFuture<>();
     int resends;
     int ignoredAcks;
     private int timerGeneration;
     private Runnable onDone = () -> { };
 
-    MissionTransfer(MAVLinkCommunications comms, MAVLinkNode node, MissionTransferConfig config, TransferProgress progress) {
+    MissionTransfer(MAVLinkCommunications comms, MAVLinkNode node, MissionTransferConfig config, TransferProgress progress,
+                    MissionType type) {
         this.comms = comms;
+        this.type = type;
         this.node = node;
         this.config = config;
         this.progress = progress == null ? TransferProgress.NONE : progress;
@@ -34,7 +37,7 @@ abstract class MissionTransfer {
     /** Sends the first message. */
     abstract void start();
 
-    /** A mission message from the vehicle (already checked to be for us and of mission type 0). */
+    /** A mission message from the vehicle (already checked to be for us and of this transfer's mission type). */
     abstract void handle(MAVLinkMessage message);
 
     final void begin(Runnable whenDone) {
@@ -67,7 +70,10 @@ abstract class MissionTransfer {
     final void fail(String reason) {
         String lost = node.isConnected() ? "" : " (vehicle " + node.getId() + " is lost: no heartbeat within "
                 + node.getConnectionTimeout() + " s)";
-        finish(TransferResult.failed(what() + " vehicle " + node.getId() + " failed: " + reason + lost, resends, ignoredAcks));
+        String of = type == MissionType.MISSION ? "" : " of the " + type.label();
+        String[] w = what().split(" ", 2);
+        finish(TransferResult.failed(w[0] + of + " " + w[1] + " vehicle " + node.getId() + " failed: " + reason + lost,
+                resends, ignoredAcks));
     }
 
     private void finish(TransferResult r) {

@@ -80,8 +80,9 @@ public final class MissionTransfers {
     }
 
     private void handle(MAVLinkMessage message, int targetSystem, int missionType) {
-        // messages for another ground station, and fence or rally transfers, are not ours
-        if (active == null || missionType != 0 || (targetSystem != 0 && targetSystem != comms.config().sysid())) {
+        // messages for another ground station, or of another list than the transfer's, are not ours
+        if (active == null || missionType != active.type.wire()
+                || (targetSystem != 0 && targetSystem != comms.config().sysid())) {
             return;
         }
         active.handle(message);

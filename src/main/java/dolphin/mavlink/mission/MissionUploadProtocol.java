@@ -44,7 +44,17 @@ public final class MissionUploadProtocol {
     }
 
     public CompletableFuture<TransferResult> upload(List<MissionItem> items, MissionTransferConfig config, TransferProgress progress) {
-        Upload u = new Upload(comms, node, config, progress, List.copyOf(items));
+        return upload(MissionType.MISSION, items, config, progress);
+    }
+
+    /** Uploads a fence's or rally points' items (numbered from 0, no home), or a mission's; from any thread. */
+    public CompletableFuture<TransferResult> upload(MissionType type, List<MissionItem> items) {
+        return upload(type, items, comms.missionTransferConfig(), TransferProgress.NONE);
+    }
+
+    public CompletableFuture<TransferResult> upload(MissionType type, List<MissionItem> items, MissionTransferConfig config,
+                                                    TransferProgress progress) {
+        Upload u = new Upload(comms, node, config, progress, type, List.copyOf(items));
         transfers.submit(u);
         return u.result;
     }
@@ -93,8 +103,8 @@ public final class MissionUploadProtocol {
         private int highest = -1;       // the highest seq requested
 
         Upload(MAVLinkCommunications comms, MAVLinkNode node, MissionTransferConfig config, TransferProgress progress,
-               List<MissionItem> items) {
-            super(comms, node, config, progress);
+               MissionType type, List<MissionItem> items) {
+            super(comms, node, config, progress, type);
             this.items = items;
         }
 
@@ -119,7 +129,7 @@ public final class MissionUploadProtocol {
             c.target_system = (short) node.getMavLinkId();
             c.target_component = (short) node.getAutopilotCompid();
             c.count = items.size();
-            c.mission_type = 0;
+            c.mission_type = (short) type.wire();
             tries++;
             send(c);
             arm(this::countTimedOut);
@@ -137,7 +147,7 @@ public final class MissionUploadProtocol {
         private void sendItem(int seq) {
             lastSent = seq;
             tries++;
-            send(items.get(seq).toMessage(node.getMavLinkId(), node.getAutopilotCompid()));
+            send(items.get(seq).toMessage(node.getMavLinkId(), node.getAutopilotCompid(), type));
             arm(this::itemTimedOut);
         }
 
@@ -169,7 +179,7 @@ public final class MissionUploadProtocol {
 
         private void request(int seq) {
             if (seq < 0 || seq >= items.size()) {
-                fail("the vehicle requested item " + seq + " but the mission has " + items.size() + " items (0 to "
+                fail("the vehicle requested item " + seq + " but the " + type.label() + " has " + items.size() + " items (0 to "
                         + (items.size() - 1) + ")");
                 return;
             }
@@ -186,21 +196,21 @@ public final class MissionUploadProtocol {
             sendItem(seq);
         }
 
-        private void ack(int type) {
-            if (type == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
+        private void ack(int result) {
+            if (result == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
                 if (items.isEmpty() || (requested && highest == items.size() - 1)) {
                     progress.progress(items.size(), items.size());
                     succeed(items);
                 } else if (!requested) {
                     ignoredAcks++;      // a late ACK of an earlier transfer
                 } else {
-                    fail("the vehicle accepted the mission after requesting only items 0 to " + highest + " of "
+                    fail("the vehicle accepted the " + type.label() + " after requesting only items 0 to " + highest + " of "
                             + items.size());
                 }
-            } else if (type == MAV_MISSION_RESULT.MAV_MISSION_INVALID_SEQUENCE) {
+            } else if (result == MAV_MISSION_RESULT.MAV_MISSION_INVALID_SEQUENCE) {
                 ignoredAcks++;          // a duplicated or reordered item on a noisy link; the vehicle keeps going
             } else {
-                fail(describe(type, lastSent < 0 ? null : items.get(lastSent), items.size()));
+                fail(describe(result, lastSent < 0 ? null : items.get(lastSent), items.size()));
             }
         }
     }

@@ -1,6 +1,7 @@
 package dolphin.mavlink.mission
 
 import com.MAVLink.enums.MAV_CMD
+import com.MAVLink.enums.MAV_FRAME
 import dolphin.core.Position
 import dolphin.dsl.Engine
 import dolphin.dsl.EngineListener
@@ -65,6 +66,46 @@ class SimMissionTransferSpec extends Specification {
         0    | 5     | 3
         0.1  | 12    | 5
         lossPct = (int) (loss * 100)
+    }
+
+    def "a fence and rally points go up with their own mission_type, come back as ArduPilot stores them, and leave the mission alone"() {
+        given:
+        def fleet = h.fleet(1, VehicleKind.COPTER, 1, SimOptions.DEFAULT, FaultModel.NONE)
+        h.eventually(20) { assert h.node('1')?.home != null }
+        def node = h.node('1')
+        Position home = node.home
+        def mission = missionAround(home, 3, 20)
+        Fence fence = Fence.of([new FenceRegion.Polygon(true, [home.displace(-300, -300, 0), home.displace(-300, 300, 0),
+                                                               home.displace(300, 300, 0), home.displace(300, -300, 0)]),
+                                new FenceRegion.Circle(false, home.displace(100, 0, 0), 25.5)],
+                home.displace(0, 10, -30), MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT)
+        RallyPoints rally = RallyPoints.at([home.displace(50, 50, -40.3), home.displace(-50, 50, -45)])
+
+        when:
+        def up = [node.uploadProtocol.upload(mission), node.uploadProtocol.upload(MissionType.FENCE, fence.items()),
+                  node.uploadProtocol.upload(MissionType.RALLY, rally.items())]*.get(30, TimeUnit.SECONDS)
+        def downFence = node.downloadProtocol.download(MissionType.FENCE).get(30, TimeUnit.SECONDS)
+        def downRally = node.downloadProtocol.download(MissionType.RALLY).get(30, TimeUnit.SECONDS)
+        def downMission = node.downloadProtocol.download().get(30, TimeUnit.SECONDS)
+
+        then:
+        up.every { it.success() }
+        MissionVerification.firstDifference(MissionType.FENCE, fence.items(), downFence.items()) == Optional.empty()
+        MissionVerification.firstDifference(MissionType.RALLY, rally.items(), downRally.items()) == Optional.empty()
+        MissionVerification.firstDifference(mission, downMission.items()) == Optional.empty()
+        downFence.items()*.frame().toUnique() == [MAV_FRAME.MAV_FRAME_GLOBAL] // ArduPilot keeps no fence frame or altitude
+        downFence.items()*.z().toUnique() == [0f]
+        fleet.vehicle(1).fence() == fence
+        fleet.vehicle(1).rallyPoints() == rally
+        fleet.vehicle(1).mission().size() == mission.size()
+
+        when: 'a fence whose polygon stops short is refused as a whole, and the stored one stays'
+        def broken = node.uploadProtocol.upload(MissionType.FENCE, fence.items().take(2)).get(30, TimeUnit.SECONDS)
+
+        then:
+        !broken.success()
+        broken.error().startsWith('upload of the fence to vehicle 1 failed: item 1 (NAV_FENCE_POLYGON_VERTEX_INCLUSION): MAV_MISSION_ERROR')
+        fleet.vehicle(1).fence() == fence
     }
 
     def "with 30% loss both ways a download always returns what the vehicle holds, whatever became of the upload before it"() {

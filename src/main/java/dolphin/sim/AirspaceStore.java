@@ -1,0 +1,122 @@
+package dolphin.sim;
+
+import com.MAVLink.enums.MAV_CMD;
+import com.MAVLink.enums.MAV_FRAME;
+import com.MAVLink.enums.MAV_MISSION_RESULT;
+import dolphin.mavlink.mission.BadItemException;
+import dolphin.mavlink.mission.Fence;
+import dolphin.mavlink.mission.MissionItem;
+import dolphin.mavlink.mission.MissionType;
+import dolphin.mavlink.mission.RallyPoints;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * A simulated vehicle's fence or rally points, kept as ArduPilot keeps them (docs/airspace.md):
+ * an upload replaces the stored list only once complete and valid as a whole (AC_PolyFence_loader
+ * writes the new fence at the end; a broken one is MAV_MISSION_ERROR and the old fence stays), and a
+ * download reports what ArduPilot stores: a fence item's command, param1 and position, in
+ * MAV_FRAME_GLOBAL at altitude 0; a rally point's position with its height as a whole number of
+ * metres (a 16-bit integer in RallyLocation) in its altitude reference.
+ */
+final class AirspaceStore implements ItemStore {
+
+    private final MissionType type;
+    private final int capacity;
+    private List<MissionItem> stored = List.of();
+    private final List<MissionItem> incoming = new ArrayList<>();
+
+    AirspaceStore(MissionType type, int capacity) {
+        this.type = type;
+        this.capacity = capacity;
+    }
+
+    @Override
+    public MissionType type() {
+        return type;
+    }
+
+    @Override
+    public int capacity() {
+        return capacity;
+    }
+
+    @Override
+    public int count() {
+        return stored.size();
+    }
+
+    @Override
+    public void truncate(int n) {
+        incoming.clear();
+        if (n == 0) {
+            stored = List.of();
+        }
+    }
+
+    @Override
+    public void put(MissionItem item) {
+        incoming.add(item);
+    }
+
+    @Override
+    public int check(MissionItem item) {
+        boolean ours = type == MissionType.FENCE ? Fence.isFenceCommand(item.command())
+                : item.command() == MAV_CMD.MAV_CMD_NAV_RALLY_POINT;
+        if (!ours) {
+            return MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED;
+        }
+        if (!MissionCheck.GLOBAL_FRAMES.contains(item.frame()) || item.frame() == MAV_FRAME.MAV_FRAME_MISSION) {
+            return MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED_FRAME;
+        }
+        if (Math.abs(item.x()) > 900_000_000) {
+            return MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM5_X;
+        }
+        if (Math.abs(item.y()) > 1_800_000_000) {
+            return MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM6_Y;
+        }
+        if (type == MissionType.RALLY && !(Math.abs(item.z()) <= Short.MAX_VALUE)) {
+            return MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM7;
+        }
+        return MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
+    }
+
+    @Override
+    public int complete() {
+        try {
+            if (type == MissionType.FENCE) {
+                Fence.of(incoming);
+            } else {
+                RallyPoints.of(incoming);
+            }
+        } catch (BadItemException e) {
+            incoming.clear();
+            return MAV_MISSION_RESULT.MAV_MISSION_ERROR;
+        }
+        stored = List.copyOf(incoming);
+        incoming.clear();
+        return MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
+    }
+
+    @Override
+    public MissionItem reported(int seq) {
+        MissionItem i = stored.get(seq);
+        if (type == MissionType.FENCE) {
+            float p1 = i.command() == MAV_CMD.MAV_CMD_NAV_FENCE_RETURN_POINT ? 0 : i.param1();
+            return new MissionItem(seq, i.command(), MAV_FRAME.MAV_FRAME_GLOBAL, p1, 0, 0, 0, i.x(), i.y(), 0, false);
+        }
+        return new MissionItem(seq, i.command(), MissionItem.altitudeReference(i.frame()), 0, 0, 0, 0, i.x(), i.y(),
+                (short) i.z(), false);
+    }
+
+    @Override
+    public void clear() {
+        stored = List.of();
+        incoming.clear();
+    }
+
+    /** The stored items, numbered from 0. */
+    List<MissionItem> items() {
+        return stored;
+    }
+}

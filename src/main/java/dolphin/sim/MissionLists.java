@@ -1,0 +1,89 @@
+package dolphin.sim;
+
+import com.MAVLink.Messages.MAVLinkMessage;
+import com.MAVLink.common.msg_mission_ack;
+import com.MAVLink.common.msg_mission_clear_all;
+import com.MAVLink.common.msg_mission_count;
+import com.MAVLink.common.msg_mission_item;
+import com.MAVLink.common.msg_mission_item_int;
+import com.MAVLink.common.msg_mission_request;
+import com.MAVLink.common.msg_mission_request_int;
+import com.MAVLink.common.msg_mission_request_list;
+import dolphin.mavlink.mission.Fence;
+import dolphin.mavlink.mission.MissionType;
+import dolphin.mavlink.mission.RallyPoints;
+
+/**
+ * A simulated vehicle's three lists (mission, fence, rally points) and a mission-protocol transfer
+ * for each, with the mission protocol's messages routed by their mission_type; a type we do not
+ * keep goes to the mission's transfer, which answers UNSUPPORTED.
+ */
+final class MissionLists {
+
+    private final MissionTransfer mission;
+    private final MissionTransfer fence;
+    private final MissionTransfer rally;
+    private final AirspaceStore fenceStore;
+    private final AirspaceStore rallyStore;
+
+    MissionLists(MissionStore missionStore, int capacity, MissionTransfer.Host host) {
+        this.fenceStore = new AirspaceStore(MissionType.FENCE, capacity);
+        this.rallyStore = new AirspaceStore(MissionType.RALLY, capacity);
+        this.mission = new MissionTransfer(missionStore, host);
+        this.fence = new MissionTransfer(fenceStore, host);
+        this.rally = new MissionTransfer(rallyStore, host);
+    }
+
+    /** Handles a mission-protocol message addressed to {@code sysid}; false if it is not one. */
+    boolean handle(MAVLinkMessage m, int sysid, long now) {
+        int[] target = target(m);
+        if (target == null || target[0] != sysid) {
+            return false;
+        }
+        MissionType type = MissionType.of(target[1]);
+        MissionTransfer t = type == MissionType.FENCE ? fence : type == MissionType.RALLY ? rally : mission;
+        t.handle(m, now);
+        return true;
+    }
+
+    void tick(long now) {
+        mission.tick(now);
+        fence.tick(now);
+        rally.tick(now);
+    }
+
+    boolean uploading() {
+        return mission.uploading() || fence.uploading() || rally.uploading();
+    }
+
+    /** The stored fence (checked when its upload completed). */
+    Fence fence() {
+        return fenceStore.count() == 0 ? Fence.NONE : Fence.of(fenceStore.items());
+    }
+
+    RallyPoints rally() {
+        return RallyPoints.of(rallyStore.items());
+    }
+
+    /** {target_system, mission_type} of a mission-protocol message, or null for another message. */
+    private static int[] target(MAVLinkMessage m) {
+        if (m instanceof msg_mission_count x) {
+            return new int[] {x.target_system, x.mission_type};
+        } else if (m instanceof msg_mission_item_int x) {
+            return new int[] {x.target_system, x.mission_type};
+        } else if (m instanceof msg_mission_item x) {
+            return new int[] {x.target_system, x.mission_type};
+        } else if (m instanceof msg_mission_request_list x) {
+            return new int[] {x.target_system, x.mission_type};
+        } else if (m instanceof msg_mission_request_int x) {
+            return new int[] {x.target_system, x.mission_type};
+        } else if (m instanceof msg_mission_request x) {
+            return new int[] {x.target_system, x.mission_type};
+        } else if (m instanceof msg_mission_clear_all x) {
+            return new int[] {x.target_system, x.mission_type};
+        } else if (m instanceof msg_mission_ack x) {
+            return new int[] {x.target_system, x.mission_type};
+        }
+        return null;
+    }
+}
