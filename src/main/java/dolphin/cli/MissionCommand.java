@@ -3,9 +3,11 @@ package dolphin.cli;
 import dolphin.core.EnvironmentException;
 import dolphin.dsl.ScriptResult;
 import dolphin.mavlink.mission.Mission;
+import dolphin.mavlink.mission.MissionFile;
 import dolphin.mavlink.mission.MissionFormat;
 import dolphin.mavlink.mission.MissionItem;
 import dolphin.mavlink.mission.MissionTable;
+import dolphin.mavlink.mission.WaypointsFile;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
@@ -13,8 +15,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -109,6 +113,15 @@ final class MissionCommand implements Callable<Integer> {
                 stdout.println("mission " + m.getId() + ": " + items.size() + " items (item 0 is the home"
                         + (m.getHome() == null ? ": the first position, the mission names none" : "") + ")");
                 stdout.print(MissionTable.format(items));
+                if (!m.fence().isEmpty()) {
+                    stdout.println("fence of " + m.getId() + ": " + m.fence().describe()
+                            + (m.fenceEnabled() ? ", enabled at the start" : ", not enabled by the mission"));
+                    stdout.print(MissionTable.format(m.fence().items()));
+                }
+                if (!m.rally().isEmpty()) {
+                    stdout.println("rally points of " + m.getId() + ": " + m.rally().size());
+                    stdout.print(MissionTable.format(m.rally().items()));
+                }
             }
             stdout.flush();
             return 0;
@@ -116,14 +129,36 @@ final class MissionCommand implements Callable<Integer> {
         Set<String> taken = new HashSet<>();
         for (int i = 0; i < missions.size(); i++) {
             Mission m = missions.get(i);
-            Path file = dir.resolve(uniqueName(fileName(m.getId()), format.extension(), taken));
+            MissionFile contents = MissionFile.of(itemLists.get(i)).withFence(m.fence()).withRally(m.rally());
+            String base = fileName(m.getId());
+            Map<Path, String> files = new LinkedHashMap<>();
             try {
-                Files.writeString(file, format.write(m.getId(), itemLists.get(i)), StandardCharsets.UTF_8);
-            } catch (IOException e) {
-                err.println("dolphin mission: cannot write " + file + ": " + e.getMessage());
-                return Main.USAGE;
+                files.put(dir.resolve(uniqueName(base, format.extension(), taken)), format.write(m.getId(), contents));
+                if (format == MissionFormat.WAYPOINTS) {
+                    // a QGC WPL file holds one kind of items: the fence and rally points get files of their own
+                    if (!m.fence().isEmpty()) {
+                        files.put(dir.resolve(uniqueName(base + ".fence", format.extension(), taken)),
+                                WaypointsFile.writeItems(m.fence().items()));
+                    }
+                    if (!m.rally().isEmpty()) {
+                        files.put(dir.resolve(uniqueName(base + ".rally", format.extension(), taken)),
+                                WaypointsFile.writeItems(m.rally().items()));
+                    }
+                }
+            } catch (IllegalArgumentException e) {
+                err.println("dolphin mission: " + script + ": mission " + m.getId() + " cannot be written as "
+                        + format + ": " + e.getMessage());
+                return 1;
             }
-            stdout.println(file);
+            for (Map.Entry<Path, String> f : files.entrySet()) {
+                try {
+                    Files.writeString(f.getKey(), f.getValue(), StandardCharsets.UTF_8);
+                } catch (IOException e) {
+                    err.println("dolphin mission: cannot write " + f.getKey() + ": " + e.getMessage());
+                    return Main.USAGE;
+                }
+                stdout.println(f.getKey());
+            }
         }
         stdout.flush();
         return 0;

@@ -10,10 +10,13 @@ import dolphin.mavlink.codec.MessageTable;
 import dolphin.mavlink.dsl.PositionWords;
 import dolphin.core.EnvironmentException;
 import dolphin.mavlink.mission.Mission;
+import dolphin.mavlink.mission.MissionFile;
 import dolphin.mavlink.mission.MissionItem;
 import dolphin.mavlink.mission.RawItemPoint;
 import dolphin.mavlink.mission.TransferResult;
+import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
@@ -23,7 +26,8 @@ import org.codehaus.groovy.control.customizers.ImportCustomizer;
  * What the MAVLink platform adds to the language: the generated message classes and enums imported
  * into scripts, the words {@code mission { }}, {@code pos { }} and {@code moveDistance { }} (static
  * imports of {@code dolphin.mavlink.dsl.MissionDsl}, so IDEs see them), {@code move(position, { })}
- * ({@link PositionWords}), {@code sendMessage(vehicles, message)} and {@code downloadMission(vehicle)}. Usable without a link, e.g. to
+ * ({@link PositionWords}), {@code sendMessage(vehicles, message)}, {@code downloadMission(vehicle)} and
+ * {@code fenceBreached(vehicle)}. Usable without a link, e.g. to
  * check scripts or build missions without vehicles.
  */
 public final class MAVLinkLanguage implements DslExtension {
@@ -68,7 +72,7 @@ public final class MAVLinkLanguage implements DslExtension {
          * until the download ends; fails with the download's error.
          */
         public Mission downloadMission(Object vehicle) {
-            MAVLinkNode node = single(vehicle);
+            MAVLinkNode node = single("downloadMission", vehicle);
             TransferResult r;
             try {
                 r = node.getDownloadProtocol().download().get(DOWNLOAD_DEADLINE.toSeconds(), TimeUnit.SECONDS);
@@ -86,17 +90,68 @@ public final class MAVLinkLanguage implements DslExtension {
             return RawItemPoint.mission("mission of vehicle " + node.getId(), items);
         }
 
-        private static MAVLinkNode single(Object vehicle) {
+        /**
+         * Whether the vehicle is outside its fence now, as its last FENCE_STATUS said (docs/airspace.md);
+         * false before any, as ArduPilot sends FENCE_STATUS only with its fence on. A condition:
+         * {@code waitFor { fenceBreached(v) } then ...}, {@code survey / { fenceBreached(v) }}.
+         */
+        public boolean fenceBreached(Object vehicle) {
+            return single("fenceBreached", vehicle).state().fenceBreached();
+        }
+
+        /**
+         * A mission task from a mission file (docs/mission-files.md, "Missions from files"): any
+         * format {@link MissionFile#read(Path)} reads, its fence and rally points with it. The path is
+         * relative to the current directory. Item 0 of the file (its planned home) is not flown: the
+         * vehicle's home takes its place, as ArduPilot does, and no DO_SET_HOME is sent. The fence
+         * stays as the vehicle has it unless {@code enableFence: true}.
+         */
+        public Mission missionFromFile(String path) {
+            return missionFromFile(Map.of(), path);
+        }
+
+        public Mission missionFromFile(Map<String, Object> options, String path) {
+            for (String key : options.keySet()) {
+                if (!key.equals("enableFence") && !key.equals("name")) {
+                    throw new DslException("missionFromFile: unknown option '" + key + "' (expected enableFence, name)");
+                }
+            }
+            MissionFile file;
+            try {
+                file = MissionFile.read(Path.of(path));
+            } catch (java.nio.file.NoSuchFileException e) {
+                throw new DslException("missionFromFile: no file " + path + " (paths are relative to "
+                        + Path.of("").toAbsolutePath() + ")");
+            } catch (java.io.IOException e) {
+                throw new DslException("missionFromFile: cannot read " + path + ": " + e.getMessage());
+            } catch (IllegalArgumentException e) {
+                throw new DslException("missionFromFile: " + e.getMessage());
+            }
+            if (!file.hasMission()) {
+                throw new DslException("missionFromFile: " + path + " holds " + (file.fence().isEmpty() ? "rally points"
+                        : "a fence") + " but no mission");
+            }
+            String name = options.containsKey("name") ? String.valueOf(options.get("name"))
+                    : Path.of(path).getFileName().toString().replaceFirst("\\.[^.]*$", "");
+            Mission m = RawItemPoint.mission(name, null, file.mission());
+            m.setAirspace(file.fence(), file.rally(), Boolean.TRUE.equals(options.get("enableFence")));
+            context.listener().message("read " + (file.mission().size() - 1) + " mission items"
+                    + (file.fence().isEmpty() ? "" : ", a fence of " + file.fence().describe())
+                    + (file.rally().isEmpty() ? "" : ", " + file.rally().size() + (file.rally().size() == 1 ? " rally point" : " rally points")) + " from " + path);
+            return m;
+        }
+
+        private static MAVLinkNode single(String word, Object vehicle) {
             Object v = vehicle;
             if (v instanceof NodeSet set) {
                 java.util.Iterator<Node> it = set.iterator();
                 v = it.hasNext() ? it.next() : null;
                 if (v == null || it.hasNext()) {
-                    throw new DslException("downloadMission: expected one vehicle, got " + set);
+                    throw new DslException(word + ": expected one vehicle, got " + set);
                 }
             }
             if (!(v instanceof MAVLinkNode node)) {
-                throw new DslException("downloadMission: " + v + " is not a MAVLink vehicle");
+                throw new DslException(word + ": " + v + " is not a MAVLink vehicle");
             }
             return node;
         }

@@ -10,8 +10,10 @@ import com.MAVLink.common.msg_mission_request;
 import com.MAVLink.common.msg_mission_request_int;
 import com.MAVLink.common.msg_mission_request_list;
 import dolphin.mavlink.mission.Fence;
+import dolphin.mavlink.mission.MissionItem;
 import dolphin.mavlink.mission.MissionType;
 import dolphin.mavlink.mission.RallyPoints;
+import java.util.List;
 
 /**
  * A simulated vehicle's three lists (mission, fence, rally points) and a mission-protocol transfer
@@ -25,6 +27,7 @@ final class MissionLists {
     private final MissionTransfer rally;
     private final AirspaceStore fenceStore;
     private final AirspaceStore rallyStore;
+    private FenceView fenceView;
 
     MissionLists(MissionStore missionStore, int capacity, MissionTransfer.Host host) {
         this.fenceStore = new AirspaceStore(MissionType.FENCE, capacity);
@@ -56,9 +59,15 @@ final class MissionLists {
         return mission.uploading() || fence.uploading() || rally.uploading();
     }
 
-    /** The stored fence (checked when its upload completed). */
+    /** The stored fence (checked when its upload completed); made again only when it changes. */
     Fence fence() {
-        return fenceStore.count() == 0 ? Fence.NONE : Fence.of(fenceStore.items());
+        if (fenceView == null || fenceView.items() != fenceStore.items()) {
+            fenceView = new FenceView(fenceStore.items(), fenceStore.count() == 0 ? Fence.NONE : Fence.of(fenceStore.items()));
+        }
+        return fenceView.fence();
+    }
+
+    private record FenceView(List<MissionItem> items, Fence fence) {
     }
 
     RallyPoints rally() {

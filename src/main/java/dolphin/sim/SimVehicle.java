@@ -73,6 +73,7 @@ public final class SimVehicle {
     private int commandsHandled;
     private final MissionStore missionStore;
     private final MissionLists lists;
+    private final FenceGuard fenceGuard = new FenceGuard();
     private final MissionFlight flight;
 
     SimVehicle(int sysid, VehicleKind kind, Position home, SimOptions options, long now) {
@@ -219,6 +220,7 @@ public final class SimVehicle {
         move(dt);
         lists.tick(now);
         flight.tick(dt);
+        watchFence(now);
         estimate.periodicReport(now, armed).ifPresent(s -> outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, s));
         outbox.flush();
         if (silent) {
@@ -233,8 +235,33 @@ public final class SimVehicle {
             }
         }
         if (now >= nextHeartbeat) {
+            if (fenceGuard.enabled()) {
+                out.accept(fenceGuard.status());
+            }
             out.accept(heartbeat());
             nextHeartbeat = nextOnGrid(nextHeartbeat, SECOND, now);
+        }
+    }
+
+    /** A breach of an enabled fence: ArduPilot's message and its default action, RTL (FENCE_ACTION 1). */
+    private void watchFence(long now) {
+        if (!fenceGuard.enabled()) {
+            return;
+        }
+        switch (fenceGuard.check(lists.fence(), craft.position(), armed, now / 1_000_000)) {
+            case BREACHED -> {
+                outbox.text(MAV_SEVERITY.MAV_SEVERITY_NOTICE, "Polygon fence breached");
+                outbox.flush();
+                out.accept(fenceGuard.status());
+                changeMode(firmware.rtlMode());
+                announceMode();
+            }
+            case CLEARED -> {
+                outbox.text(MAV_SEVERITY.MAV_SEVERITY_NOTICE, "Fence breach cleared");
+                out.accept(fenceGuard.status());
+            }
+            default -> {
+            }
         }
     }
 
@@ -312,6 +339,10 @@ public final class SimVehicle {
                 yield MAV_RESULT.MAV_RESULT_ACCEPTED;
             }
             case MAV_CMD.MAV_CMD_MISSION_START -> missionStart(c);
+            case MAV_CMD.MAV_CMD_DO_FENCE_ENABLE -> {
+                fenceGuard.enable(c.param1 == 1);
+                yield MAV_RESULT.MAV_RESULT_ACCEPTED;
+            }
             case MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT -> flight.setCurrent((int) c.param1) ? MAV_RESULT.MAV_RESULT_ACCEPTED
                     : MAV_RESULT.MAV_RESULT_FAILED;
             case MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH -> setModeIfValid(firmware.rtlMode()) ? MAV_RESULT.MAV_RESULT_ACCEPTED

@@ -387,4 +387,46 @@ b = make()
         cleanup:
         script?.delete()
     }
+
+    def "a mission's fence and rally points are printed and exported: in the plan, in files of their own beside a .waypoints, in the GeoJSON"() {
+        given:
+        String fence = 'dsl-examples/fence.dolphin'
+        Path out = tmp.resolve('airspace')
+
+        when:
+        def printed = dolphin('mission', fence)
+        def wpl = dolphin('mission', fence, '--export', 'waypoints', '--out', out.toString())
+        def plan = dolphin('mission', fence, '--export', 'plan', '--out', out.toString())
+        def geo = dolphin('mission', fence, '--export', 'geojson', '--out', out.toString())
+        def mavwp = MavwpHarness.load([out.resolve('fenced_flight.fence.waypoints')], 'fence')[0]
+        def rally = MavwpHarness.load([out.resolve('fenced_flight.rally.waypoints')], 'rally')[0]
+        def json = new JsonSlurper().parse(out.resolve('fenced_flight.plan').toFile())
+        def features = new JsonSlurper().parse(out.resolve('fenced_flight.geojson').toFile()).features
+
+        then:
+        [printed, wpl, plan, geo]*.code == [0, 0, 0, 0]
+        printed.out.contains('fence of fenced flight: 2 regions (inclusion polygon of 4 vertices, exclusion circle of 30 m),'
+                + ' return point, enabled at the start')
+        printed.out.contains('rally points of fenced flight: 1')
+        wpl.out.readLines()*.replace(out.toString() + '/', '') ==
+                ['fenced_flight.waypoints', 'fenced_flight.fence.waypoints', 'fenced_flight.rally.waypoints']
+
+        and: "pymavlink's fence and rally loaders read what we wrote"
+        mavwp.items*.command == [5001] * 4 + [5004, 5000]
+        mavwp.items*.param1.take(5) == [4, 4, 4, 4, 30]
+        rally.items*.command == [5100]
+        rally.items[0].z == 850
+
+        and: 'the plan has them as QGroundControl does, heights above its home'
+        json.geoFence.polygons*.inclusion == [true]
+        json.geoFence.circles[0].circle.radius == 30
+        json.geoFence.breachReturn[2] == 30
+        json.rallyPoints.points == [[40.444, -7.375, 30]]
+
+        and: 'the GeoJSON draws them'
+        features.count { it.properties.fence == 'inclusion' } == 1
+        features.count { it.properties.fence == 'exclusion' && it.properties.shape == 'circle' } == 1
+        features.count { it.properties.rally == 0 } == 1
+    }
+
 }

@@ -22,7 +22,8 @@ class ExamplesSpec extends Specification {
     /** Examples this spec runs; the first feature checks that it is every file in dsl-examples/. */
     static final List<String> COVERED = [
             'two-drones-survey', 'listing2-single-vehicle', 'listing3-two-vehicles', 'listing4-keep-two-airborne',
-            'operators', 'loiters', 'survey', 'camera', 'watch-onerror', 'first-flight', 'battery-and-position', 'fleet']
+            'operators', 'loiters', 'survey', 'camera', 'watch-onerror', 'first-flight', 'battery-and-position', 'fleet',
+            'fence', 'from-file']
 
     @Shared
     Map<String, String> commandLines = [:]
@@ -177,6 +178,10 @@ class ExamplesSpec extends Specification {
         'camera'               | ['mission photos on vehicle 1: uploading 11 items', 'mission photos on vehicle 1: done', 'camera: DONE']
         'survey'               | ['mission survey on vehicle 1: cut short: RTL', 'mission return home on vehicle 1: done']
         'first-flight'         | ['mission first flight on vehicle 1: done', 'the flight ended DONE, battery *']
+        'from-file'            | ['read 5 mission items, a fence of 1 region (inclusion polygon of 4 vertices), return point,'
+                                          + ' 1 rally point from dsl-examples/square.plan',
+                                  'mission square on vehicle 1: fence verified', 'mission square on vehicle 1: rally points verified',
+                                  'mission square on vehicle 1: done', 'the square from the file: DONE, fence breached: false']
         'battery-and-position' | ['vehicle { 1 }: battery 100 %, position (40.444233°, -7.375234°, 820.000)',
                                   'vehicle { 2 }: battery 100 %, position (40.444233°, -7.375116°, 820.000)']
     }
@@ -194,6 +199,24 @@ class ExamplesSpec extends Specification {
                 r.lines.findIndexOf { it.startsWith('the fine survey failed: ') }
         r.lines.contains('watch: DONE')
         !r.lines.any { it.contains('mission fine survey on vehicle 1: started') }
+    }
+
+    @Timeout(100)
+    def "fence: the fence and rally point go up and are verified first; leaving the square is a breach, the copter returns, the handler sees it"() {
+        when:
+        def r = run('fence')
+
+        then:
+        r.code == 0
+        ScriptLines.inOrder(r.lines, 'mission fenced flight on vehicle 1: uploading the fence: 6 items',
+                'mission fenced flight on vehicle 1: fence verified',
+                'mission fenced flight on vehicle 1: uploading the rally points: 1 item',
+                'mission fenced flight on vehicle 1: rally points verified',
+                'mission fenced flight on vehicle 1: uploading 5 items', 'mission fenced flight on vehicle 1: item 2 of 4 reached',
+                'the mission stopped: mission fenced flight on vehicle 1: vehicle 1 breached its fence during item 3 of 4 (NAV_WAYPOINT) and left AUTO for RTL (its fence action)*',
+                'fence breached: *',
+                'back home: the fence did its job')
+        r.lines.last() == 'dsl-examples/fence.dolphin: completed'
     }
 
     @Timeout(100)

@@ -11,6 +11,7 @@ import com.MAVLink.enums.MAV_CMD
 import com.MAVLink.enums.MAV_MODE_FLAG
 import dolphin.core.Position
 import dolphin.mavlink.mission.MissionItem
+import dolphin.mavlink.mission.MissionType
 
 /**
  * Drives one {@link SimVehicle} directly, without sockets or real time: its clock is the nanoseconds
@@ -125,14 +126,14 @@ class SimDriver {
     }
 
     /** Uploads items (seq 0 first), answering each MISSION_REQUEST at once; the final MISSION_ACK's type. */
-    int upload(List<MissionItem> items) {
+    int upload(List<MissionItem> items, MissionType type = MissionType.MISSION) {
         int from = mark()
-        handle(new msg_mission_count(target_system: 1, target_component: 1, count: items.size()))
+        handle(new msg_mission_count(target_system: 1, target_component: 1, count: items.size(), mission_type: (short) type.wire()))
         for (int seen = from; ; seen++) {
             assert seen < sent.size(): "the upload stalled: ${sent.drop(from)*.message}"
             def m = sent[seen].message
             if (m instanceof msg_mission_request) {
-                handle(items[m.seq].toMessage(1, 1))
+                handle(items[m.seq].toMessage(1, 1, type))
             } else if (m instanceof msg_mission_ack) {
                 return m.type
             }

@@ -1,10 +1,12 @@
 package dolphin.sim
 
+import com.MAVLink.common.msg_fence_status
 import com.MAVLink.common.msg_home_position
 import com.MAVLink.common.msg_mission_current
 import com.MAVLink.common.msg_mission_item_reached
 import com.MAVLink.common.msg_sys_status
 import com.MAVLink.enums.COPTER_MODE
+import com.MAVLink.enums.FENCE_BREACH
 import com.MAVLink.enums.MAV_CMD
 import com.MAVLink.enums.MAV_MISSION_RESULT
 import com.MAVLink.enums.MAV_RESULT
@@ -12,7 +14,10 @@ import com.MAVLink.enums.MAV_SYS_STATUS_SENSOR
 import com.MAVLink.enums.MISSION_STATE
 import com.MAVLink.enums.ROVER_MODE
 import com.MAVLink.standard.msg_global_position_int
+import dolphin.mavlink.mission.Fence
+import dolphin.mavlink.mission.FenceRegion
 import dolphin.mavlink.mission.MissionItem
+import dolphin.mavlink.mission.MissionType
 import spock.lang.Specification
 
 import static dolphin.sim.MissionProtocolSpec.rel
@@ -83,6 +88,47 @@ class SimVehicleSpec extends Specification {
 
         then: 'at 15, 45 and 75 s'
         d.texts() == ['PreArm: Need Position Estimate'] * 3
+    }
+
+    def "with its fence on, a copter leaving the fence says so, reports FENCE_STATUS and returns (RTL); off, it flies on"() {
+        given: 'a 100 m square around home, and a mission whose second waypoint is 150 m north'
+        def d = new SimDriver(VehicleKind.COPTER)
+        Fence fence = Fence.of([new FenceRegion.Polygon(true, [HOME.displace(-100, -100, 0), HOME.displace(-100, 100, 0),
+                                                               HOME.displace(100, 100, 0), HOME.displace(100, -100, 0)])],
+                null, MissionItem.GLOBAL_INT)
+        assert d.upload(fence.items(), MissionType.FENCE) == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
+        assert d.upload([MissionItem.at(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, HOME, 0, 0, 0, 0),
+                         rel(1, MAV_CMD.MAV_CMD_NAV_TAKEOFF, 0, 0, 10), rel(2, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 50, 0, 10),
+                         rel(3, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 150, 0, 10)]) == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
+        if (enabled) {
+            assert d.command(MAV_CMD.MAV_CMD_DO_FENCE_ENABLE, [1]).result == MAV_RESULT.MAV_RESULT_ACCEPTED
+        }
+        d.setMode(COPTER_MODE.COPTER_MODE_GUIDED)
+        d.arm()
+        d.setMode(COPTER_MODE.COPTER_MODE_AUTO)
+        assert d.command(MAV_CMD.MAV_CMD_MISSION_START).result == MAV_RESULT.MAV_RESULT_ACCEPTED
+        int from = d.mark()
+
+        when:
+        d.runUntil(120, 'the breach or the last waypoint') {
+            d.texts(from).contains('Polygon fence breached') || d.since(from, msg_mission_item_reached)*.seq.contains(3)
+        }
+
+        then:
+        d.vehicle.fence() == fence
+        if (enabled) {
+            assert d.vehicle.mode() == COPTER_MODE.COPTER_MODE_RTL
+            assert horizontal(HOME, d.vehicle.position()) < 110 // turned back at the boundary
+            def breach = d.since(from, msg_fence_status).find { it.breach_status == 1 }
+            assert breach.breach_count == 1 && breach.breach_type == FENCE_BREACH.FENCE_BREACH_BOUNDARY
+        } else {
+            assert d.vehicle.mode() == COPTER_MODE.COPTER_MODE_AUTO
+            assert d.since(from, msg_fence_status).empty
+            assert !d.texts(from).contains('Polygon fence breached')
+        }
+
+        where:
+        enabled << [true, false]
     }
 
     def "a copter flying a waypoint below the ground stops where it touches, says so and never goes lower"() {

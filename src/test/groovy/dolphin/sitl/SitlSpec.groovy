@@ -7,6 +7,7 @@ import dolphin.mavlink.CommandResult
 import dolphin.mavlink.MAVLinkNode
 import dolphin.mavlink.VehicleFamily
 import dolphin.mavlink.mission.Mission
+import dolphin.mavlink.mission.MissionType
 import dolphin.mavlink.mission.MissionVerification
 import java.time.Duration
 import java.util.concurrent.ConcurrentHashMap
@@ -142,6 +143,33 @@ class SitlSpec extends Specification {
         node.position.distanceTo(HOME) < 15
         roundTripDifference(node, r.engine.variable('holds'), false) == null
         roundTripDifference(node, r.engine.variable('everything'), true) == null
+    }
+
+    def "a fenced flight: ArduCopter takes the fence and the rally point (read back equal), and leaving the fence is its breach, RTL and the script's error"() {
+        given:
+        nodes.each { assert sitl.command(it, MAV_CMD.MAV_CMD_BATTERY_RESET, 1, 100, 0, 0, 0, 0, 0).accepted() }
+        SitlHarness.within(300) { assert nodes.every { !it.armed } }
+        String script = 'dsl-examples/fence.dolphin'
+
+        when:
+        def r = sitl.run(new File(script).text, script, RUN_DEADLINE)
+        List<String> lines = r.lines
+        int n = vehicleOf(lines, 'fenced flight')
+        MAVLinkNode node = sitl.comms.node("${n}")
+        Mission m = r.engine.variable('outAndBack')
+
+        then:
+        r.result.outcome() == ScriptResult.Outcome.COMPLETED
+        inOrder(lines, "mission fenced flight on vehicle ${n}: fence verified", "mission fenced flight on vehicle ${n}: rally points verified",
+                "mission fenced flight on vehicle ${n}: item 2 of 4 reached",
+                "the mission stopped: mission fenced flight on vehicle ${n}: vehicle ${n} breached its fence during item 3 of 4 (NAV_WAYPOINT) and left AUTO for RTL (its fence action)*",
+                'back home: the fence did its job')
+
+        and: 'what ArduPilot holds is what was sent, as far as it keeps it'
+        MissionVerification.firstDifference(MissionType.FENCE, m.fence().items(),
+                node.downloadProtocol.download(MissionType.FENCE).get(120, TimeUnit.SECONDS).orThrow()).orElse(null) == null
+        MissionVerification.firstDifference(MissionType.RALLY, m.rally().items(),
+                node.downloadProtocol.download(MissionType.RALLY).get(120, TimeUnit.SECONDS).orThrow()).orElse(null) == null
     }
 
     /** Uploads the mission first when asked; then downloads the vehicle's and compares it with the items built for it. */

@@ -7,6 +7,7 @@ import dolphin.mavlink.mission.CameraStopPoint
 import dolphin.mavlink.mission.ChangeSpeed
 import dolphin.mavlink.mission.DelayCommand
 import dolphin.mavlink.mission.DroneCommand
+import dolphin.mavlink.mission.Fence
 import dolphin.mavlink.mission.GoToPoint
 import dolphin.mavlink.mission.HeightCheck
 import dolphin.mavlink.mission.JumpToItem
@@ -16,6 +17,7 @@ import dolphin.mavlink.mission.LoiterTimePoint
 import dolphin.mavlink.mission.LoiterTurnsPoint
 import dolphin.mavlink.mission.Mission
 import dolphin.mavlink.mission.MissionPoint
+import dolphin.mavlink.mission.RallyPoints
 import dolphin.mavlink.mission.SurveyArea
 import dolphin.mavlink.mission.SurveyDirection
 import dolphin.mavlink.mission.TakeOffPoint
@@ -78,6 +80,8 @@ class MissionBuilder {
             captureUntilStop          : ['([interval])'],
             stopCapturing             : ['()'],
             jumpToItem                : ['(item[, repetitions])'],
+            fence                     : ['{ inclusion polygon(p1, p2, p3, ...); exclusion circle(center, radius); returnPoint p; enable true }'],
+            rally                     : ['(position, ...)'],
     ].asImmutable() as Map<String, List<String>>
 
     /** The most items a MAVLink mission can have (seq and count are 16-bit). */
@@ -91,6 +95,11 @@ class MissionBuilder {
     private final Map<MissionPoint, DslException> origins = new IdentityHashMap<>()
     private Position lastRegistered
     private final List<DroneCommand> commands = []
+    private Fence missionFence = Fence.NONE
+    private boolean fenceEnabled
+    private final List<Position> rallyPoints = []
+    /** Where the rally points were given, for a height error. */
+    private DslException rallyOrigin
     /** Jumps, with the error to throw (made at the jump's line) if the target does not exist. */
     private final Map<JumpToItem, DslException> jumps = [:]
     /** The closure this builder runs, to reach the script's variables and words. */
@@ -377,6 +386,27 @@ class MissionBuilder {
         jumps[j] = new DslException("${w}: there is no item ${target}")
     }
 
+    // ---- airspace (docs/airspace.md)
+
+    /** The mission's geofence, uploaded before it; {@code enable true} switches it on at the start. */
+    void fence(@DelegatesTo(value = FenceBuilder, strategy = Closure.DELEGATE_FIRST) Closure body) {
+        if (!missionFence.isEmpty()) {
+            throw new DslException('fence: the mission has a fence already: one fence { } block a mission')
+        }
+        FenceBuilder b = FenceBuilder.build(body)
+        missionFence = b.fence()
+        fenceEnabled = b.enabled()
+    }
+
+    /** Rally points, uploaded before the mission: where the vehicle may return instead of home. */
+    void rally(Position... points) {
+        if (points == null || points.length == 0) {
+            throw new DslException('rally: expected one or more positions')
+        }
+        points.each { Position p -> rallyPoints << Args.position('rally', p) }
+        rallyOrigin = new DslException('rally')
+    }
+
     // ---- building
 
     @PackageScope
@@ -386,6 +416,17 @@ class MissionBuilder {
                     + " (goPos, move, takeOff, surveyArea, ...)")
         }
         Mission m = new Mission(missionName, missionHome, commands, belowHomeAllowed)
+        if (missionHome != null && !belowHomeAllowed) {
+            Position low = rallyPoints.find { Position p -> p.hae() < missionHome.hae() + HeightCheck.CLEARANCE }
+            if (low != null) {
+                DslException e = new DslException("rally: the rally point ${low} is lower than home plus " +
+                        "${HeightCheck.CLEARANCE as int} m (${missionHome.hae() + HeightCheck.CLEARANCE} m); a vehicle returning there" +
+                        " would fly into the ground. Say 'allowBelowHome true' if it is meant")
+                e.stackTrace = rallyOrigin.stackTrace
+                throw e
+            }
+        }
+        m.setAirspace(missionFence, RallyPoints.at(rallyPoints), fenceEnabled)
         HeightCheck.firstTooLow(m, missionHome).ifPresent { HeightCheck.TooLow low ->
             DslException e = new DslException(low.message())
             e.stackTrace = origins[low.point()].stackTrace

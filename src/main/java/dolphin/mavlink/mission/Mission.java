@@ -24,6 +24,9 @@ public final class Mission extends PlatformTask {
     private final Position home;
     private final boolean belowHomeAllowed;
     private final List<DroneCommand> droneCommands = new ArrayList<>();
+    private volatile Fence fence = Fence.NONE;
+    private volatile RallyPoints rally = RallyPoints.NONE;
+    private volatile boolean fenceEnabled;
 
     /** @param home the home the script named, or null */
     public Mission(String name, Position home, List<DroneCommand> commands) {
@@ -53,6 +56,28 @@ public final class Mission extends PlatformTask {
 
     public List<DroneCommand> getCommandList() {
         return List.copyOf(droneCommands);
+    }
+
+    /**
+     * The geofence and rally points uploaded with the mission (docs/airspace.md), and whether the
+     * fence is switched on when the mission starts (the script's choice: {@code fence { enable true }}).
+     */
+    public void setAirspace(Fence fence, RallyPoints rally, boolean fenceEnabled) {
+        this.fence = fence;
+        this.rally = rally;
+        this.fenceEnabled = fenceEnabled;
+    }
+
+    public Fence fence() {
+        return fence;
+    }
+
+    public RallyPoints rally() {
+        return rally;
+    }
+
+    public boolean fenceEnabled() {
+        return fenceEnabled;
     }
 
     /** The home the script named ({@code home ...}), or null. */

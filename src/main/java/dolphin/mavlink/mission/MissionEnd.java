@@ -47,6 +47,8 @@ final class MissionEnd {
 
     /** How far a vehicle must move for a landing to count as progressing. */
     static final double PROGRESS_METRES = 1;
+    /** How many of the vehicle's last texts may tell of a fence breach. */
+    private static final int RECENT_TEXTS = 5;
 
     private final List<MissionItem> items;
     private final String vehicle;
@@ -155,8 +157,22 @@ final class MissionEnd {
                 return Verdict.RUNNING;
             }
         }
+        if (fenceBreached(s)) {
+            return Verdict.failed("vehicle " + vehicle + " breached its fence during " + item(current) + " and left AUTO"
+                    + " for " + s.modeName() + " (its fence action)" + where(s));
+        }
         return Verdict.failed("vehicle " + vehicle + " left AUTO for " + s.modeName() + " during " + item(current)
                 + ", before the mission ended" + where(s));
+    }
+
+    /**
+     * FENCE_STATUS says so, or one of the vehicle's last few texts ("Polygon fence breached": ArduPilot
+     * says it before it changes mode, while FENCE_STATUS comes with its next telemetry).
+     */
+    private static boolean fenceBreached(VehicleState s) {
+        List<String> texts = s.statusTexts();
+        return s.fenceBreached() || texts.subList(Math.max(0, texts.size() - RECENT_TEXTS), texts.size()).stream()
+                .anyMatch(t -> t.endsWith("fence breached") || t.endsWith("fences breached"));
     }
 
     /** The item under way: the vehicle's current item while it reports one, else the one after the last reached. */

@@ -15,6 +15,7 @@ import dolphin.mavlink.MAVLinkNode;
 import dolphin.mavlink.VehicleFamily;
 import dolphin.mavlink.VehicleState;
 import java.time.Duration;
+import java.util.ArrayDeque;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -41,6 +42,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     /** The commands of PREPARE and START. */
     private CommandSteps steps;
     private List<MissionItem> items;
+    /** The lists still to upload and verify, in order (fence, rally points, mission); the first is in transfer. */
+    private final ArrayDeque<Map.Entry<MissionType, List<MissionItem>>> lists = new ArrayDeque<>();
     private MissionEnd end;
     private TreeMap<Integer, List<DroneCommand>> keyed;
     private volatile State state = State.PREPARE;
@@ -165,10 +168,25 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         if (waitingFor != null) {
             progress("vehicle ready after " + (now - prepareStart) / 1_000_000_000L + " s");
         }
-        progress("uploading " + items.size() + " items");
-        pending = watch(node.getUploadProtocol().upload(items));
-        enter(State.UPLOAD, config.upload());
+        if (!mission.fence().isEmpty()) {
+            lists.add(Map.entry(MissionType.FENCE, mission.fence().items()));
+        }
+        if (!mission.rally().isEmpty()) {
+            lists.add(Map.entry(MissionType.RALLY, mission.rally().items()));
+        }
+        lists.add(Map.entry(MissionType.MISSION, items));
+        startUpload();
         return CompletionState.IN_PROGRESS;
+    }
+
+    /** Uploads the next list: the fence and rally points go before the mission (docs/airspace.md). */
+    private void startUpload() {
+        var next = lists.peek();
+        uploadError = null;
+        progress("uploading " + (next.getKey() == MissionType.MISSION ? "" : "the " + next.getKey().label() + ": ")
+                + next.getValue().size() + (next.getValue().size() == 1 ? " item" : " items"));
+        pending = watch(node.getUploadProtocol().upload(next.getKey(), next.getValue()));
+        enter(State.UPLOAD, config.upload());
     }
 
     private void queuePreparation() {
@@ -212,12 +230,22 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             uploadError = r.error();
         }
         if (config.verify()) {
-            pending = watch(node.getDownloadProtocol().download());
+            pending = watch(node.getDownloadProtocol().download(lists.peek().getKey()));
             enter(State.VERIFY, config.upload());
         } else {
-            enterArm();
+            nextList();
         }
         return CompletionState.IN_PROGRESS;
+    }
+
+    /** The list in transfer is done: the next one, or ARM after the mission. */
+    private void nextList() {
+        lists.poll();
+        if (lists.isEmpty()) {
+            enterArm();
+        } else {
+            startUpload();
+        }
     }
 
     private CompletionState verify() {
@@ -228,13 +256,15 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         if (!r.success()) {
             return fail(uploadError != null ? uploadError : "verifying the upload failed: " + r.error());
         }
-        var difference = MissionVerification.firstDifference(items, r.items());
+        MissionType type = lists.peek().getKey();
+        var difference = MissionVerification.firstDifference(type, lists.peek().getValue(), r.items());
         if (difference.isPresent()) {
             return fail(uploadError != null ? uploadError
-                    : "the vehicle holds another mission than the one uploaded: " + difference.get());
+                    : "the vehicle holds another " + type.label() + " than the one uploaded: " + difference.get());
         }
-        progress(uploadError == null ? "upload verified" : "upload verified by download (" + uploadError + ")");
-        enterArm();
+        String what = type == MissionType.MISSION ? "upload" : type.label();
+        progress(uploadError == null ? what + " verified" : what + " verified by download (" + uploadError + ")");
+        nextList();
         return CompletionState.IN_PROGRESS;
     }
 
@@ -274,6 +304,10 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             progress("armed");
             // From the first item, whatever the vehicle ran before: ArduPilot keeps its mission's current item
             // across an upload, and a copter on the ground refuses AUTO unless that item leads to a take-off.
+            if (mission.fenceEnabled()) {
+                steps.add(new CommandSteps.Step("MAV_CMD_DO_FENCE_ENABLE 1", () -> comms.command(node,
+                        MAV_CMD.MAV_CMD_DO_FENCE_ENABLE, 1, 0), st -> false));
+            }
             steps.add(new CommandSteps.Step("MAV_CMD_DO_SET_MISSION_CURRENT 1", () -> comms.command(node,
                     MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT, 1, 1), st -> st.missionSeq() == 1));
             steps.add(new CommandSteps.Step("AUTO", () -> setMode("AUTO"), st -> isMode(st, "AUTO")));

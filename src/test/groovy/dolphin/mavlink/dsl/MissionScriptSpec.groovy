@@ -270,7 +270,7 @@ class MissionScriptSpec extends Specification {
         !m1.executor.is(m1.executor)
     }
 
-    def "every command of C.6 rows 1 to 30, and allowBelowHome, is a builder method, has its forms for errors and is documented"() {
+    def "every command of C.6 rows 1 to 30, allowBelowHome, fence and rally, is a builder method, has its forms for errors and is documented"() {
         given:
         Set<String> methods = MissionBuilder.declaredMethods
                 .findAll { Modifier.isPublic(it.modifiers) && !it.synthetic && !it.name.startsWith('\$') }*.name
@@ -283,7 +283,8 @@ class MissionScriptSpec extends Specification {
                     'moveAndLoiterTurns', 'moveAndLoiterTime', 'moveAndLoiterFromHome', 'moveAndLoiterTurnsFromHome',
                     'moveAndLoiterTimeFromHome', 'loiterPos', 'loiterTurns', 'loiterTime', 'landingPoint', 'returnHome',
                     'returnHomeAndLoiter', 'returnHomeAndLand', 'speed', 'altitude', 'delay', 'surveyArea', 'capturePhoto',
-                    'captureSeveralPhotos', 'captureUntilStop', 'stopCapturing', 'jumpToItem', 'allowBelowHome'].toSet()
+                    'captureSeveralPhotos', 'captureUntilStop', 'stopCapturing', 'jumpToItem', 'allowBelowHome', 'fence',
+                    'rally'].toSet()
         methods.every { doc.contains("`${it}(") }
     }
 
