@@ -129,7 +129,8 @@ final class MissionCommand implements Callable<Integer> {
         Set<String> taken = new HashSet<>();
         for (int i = 0; i < missions.size(); i++) {
             Mission m = missions.get(i);
-            MissionFile contents = MissionFile.of(itemLists.get(i)).withFence(m.fence()).withRally(m.rally());
+            MissionFile contents = MissionFile.of(itemLists.get(i)).withFence(m.fence()).withRally(m.rally())
+                    .withVehicle(m.vehicleProfile());
             String base = fileName(m.getId());
             Map<Path, String> files = new LinkedHashMap<>();
             try {

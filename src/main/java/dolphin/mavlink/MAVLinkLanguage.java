@@ -7,6 +7,7 @@ import dolphin.dsl.DslException;
 import dolphin.dsl.DslExtension;
 import dolphin.dsl.ScriptContext;
 import dolphin.mavlink.codec.MessageTable;
+import dolphin.mavlink.dsl.MissionRecorder;
 import dolphin.mavlink.dsl.PositionWords;
 import dolphin.core.EnvironmentException;
 import dolphin.mavlink.mission.Mission;
@@ -135,6 +136,8 @@ public final class MAVLinkLanguage implements DslExtension {
                     : Path.of(path).getFileName().toString().replaceFirst("\\.[^.]*$", "");
             Mission m = RawItemPoint.mission(name, null, file.mission());
             m.setAirspace(file.fence(), file.rally(), Boolean.TRUE.equals(options.get("enableFence")));
+            m.setVehicleProfile(file.vehicle());
+            context.words().forEach(w -> MissionRecorder.report(w, m));
             context.listener().message("read " + (file.mission().size() - 1) + " mission items"
                     + (file.fence().isEmpty() ? "" : ", a fence of " + file.fence().describe())
                     + (file.rally().isEmpty() ? "" : ", " + file.rally().size() + (file.rally().size() == 1 ? " rally point" : " rally points")) + " from " + path);

@@ -429,4 +429,25 @@ b = make()
         features.count { it.properties.rally == 0 } == 1
     }
 
+
+    def "a mission read from a plane's plan is exported as a plane's plan, with the file's speeds"() {
+        given:
+        Path planePlan = tmp.resolve('plane.plan')
+        Files.writeString(planePlan, new File('dsl-examples/square.plan').text.replace('"vehicleType": 2', '"vehicleType": 1')
+                .replace('"cruiseSpeed": 15', '"cruiseSpeed": 22'))
+        String s = script("m = missionFromFile('${planePlan}')")
+        Path out = tmp.resolve('plane-out')
+
+        when:
+        def r = dolphin('mission', s, '--export', 'plan', '--out', out.toString())
+        def json = new JsonSlurper().parse(out.resolve('plane.plan').toFile())
+
+        then:
+        r.code == 0
+        json.mission.vehicleType == 1
+        json.mission.cruiseSpeed == 22
+        json.geoFence.polygons.size() == 1
+        json.rallyPoints.points.size() == 1
+    }
+
 }

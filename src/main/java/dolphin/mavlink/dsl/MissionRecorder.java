@@ -8,7 +8,8 @@ import java.util.Objects;
 import java.util.function.Consumer;
 
 /**
- * Hands every Mission that a script builds with {@code mission { }} to a consumer, as it is built:
+ * Hands every Mission that a script builds with {@code mission { }} or {@code missionFromFile} to a
+ * consumer, as it is built:
  * how {@code dolphin mission} collects a script's missions in a dry run. Add it to an engine next
  * to the MAVLink language:
  *
@@ -38,7 +39,7 @@ public final class MissionRecorder implements DslExtension {
      * Called by {@code mission { }} for each platform word object of the run, with the mission it
      * built: hands the mission over when the object is a recorder's.
      */
-    static void report(Object word, Mission mission) {
+    public static void report(Object word, Mission mission) {
         if (word instanceof Hook hook && mission != null) {
             hook.consumer.accept(mission);
         }

@@ -27,6 +27,7 @@ public final class Mission extends PlatformTask {
     private volatile Fence fence = Fence.NONE;
     private volatile RallyPoints rally = RallyPoints.NONE;
     private volatile boolean fenceEnabled;
+    private volatile VehicleProfile vehicleProfile = VehicleProfile.ARDUPILOT_COPTER;
 
     /** @param home the home the script named, or null */
     public Mission(String name, Position home, List<DroneCommand> commands) {
@@ -78,6 +79,15 @@ public final class Mission extends PlatformTask {
 
     public boolean fenceEnabled() {
         return fenceEnabled;
+    }
+
+    /** The vehicle a mission file was made for, kept for export; an ArduPilot copter for a script's mission. */
+    public VehicleProfile vehicleProfile() {
+        return vehicleProfile;
+    }
+
+    public void setVehicleProfile(VehicleProfile profile) {
+        this.vehicleProfile = profile;
     }
 
     /** The home the script named ({@code home ...}), or null. */
