@@ -105,7 +105,8 @@ public final class MAVLinkLanguage implements DslExtension {
          * format {@link MissionFile#read(Path)} reads, its fence and rally points with it. The path is
          * relative to the current directory. Item 0 of the file (its planned home) is not flown: the
          * vehicle's home takes its place, as ArduPilot does, and no DO_SET_HOME is sent. The fence
-         * stays as the vehicle has it unless {@code enableFence: true}.
+         * stays as the vehicle has it unless {@code enableFence: true}; items lower than home plus the
+         * clearance are refused at the flight unless {@code allowBelowHome: true}.
          */
         public Mission missionFromFile(String path) {
             return missionFromFile(Map.of(), path);
@@ -113,8 +114,9 @@ public final class MAVLinkLanguage implements DslExtension {
 
         public Mission missionFromFile(Map<String, Object> options, String path) {
             for (String key : options.keySet()) {
-                if (!key.equals("enableFence") && !key.equals("name")) {
-                    throw new DslException("missionFromFile: unknown option '" + key + "' (expected enableFence, name)");
+                if (!List.of("enableFence", "name", "allowBelowHome").contains(key)) {
+                    throw new DslException("missionFromFile: unknown option '" + key
+                            + "' (expected enableFence, allowBelowHome, name)");
                 }
             }
             MissionFile file;
@@ -134,7 +136,7 @@ public final class MAVLinkLanguage implements DslExtension {
             }
             String name = options.containsKey("name") ? String.valueOf(options.get("name"))
                     : Path.of(path).getFileName().toString().replaceFirst("\\.[^.]*$", "");
-            Mission m = RawItemPoint.mission(name, null, file.mission());
+            Mission m = RawItemPoint.mission(name, null, file.mission(), Boolean.TRUE.equals(options.get("allowBelowHome")));
             m.setAirspace(file.fence(), file.rally(), Boolean.TRUE.equals(options.get("enableFence")));
             m.setVehicleProfile(file.vehicle());
             context.words().forEach(w -> MissionRecorder.report(w, m));

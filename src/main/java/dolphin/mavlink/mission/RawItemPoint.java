@@ -25,13 +25,16 @@ public final class RawItemPoint extends MissionPoint {
     /** A mission of raw items: item 0 is its home (when positional), items 1.. its points. */
     public static Mission mission(String name, List<MissionItem> items) {
         dolphin.core.Position home = !items.isEmpty() && positional(items.get(0)) ? items.get(0).position() : null;
-        return mission(name, home, items);
+        return mission(name, home, items, false);
     }
 
-    /** A mission of items 1, 2, ... with the given home (null: the vehicle's own, and no DO_SET_HOME). */
-    public static Mission mission(String name, dolphin.core.Position home, List<MissionItem> items) {
+    /**
+     * A mission of items 1, 2, ... with the given home (null: the vehicle's own, and no DO_SET_HOME),
+     * items lower than home plus the clearance allowed or not (HeightCheck).
+     */
+    public static Mission mission(String name, dolphin.core.Position home, List<MissionItem> items, boolean belowHomeAllowed) {
         List<DroneCommand> points = items.stream().skip(1).<DroneCommand>map(RawItemPoint::new).toList();
-        return new Mission(name, home, points);
+        return new Mission(name, home, points, belowHomeAllowed);
     }
 
     private static boolean positional(MissionItem i) {

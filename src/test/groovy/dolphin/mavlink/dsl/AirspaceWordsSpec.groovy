@@ -118,6 +118,9 @@ class AirspaceWordsSpec extends Specification {
         plain.items(HOME).size() == 7
         plain.items(HOME)[6].command() == MAV_CMD.MAV_CMD_DO_JUMP
         plain.fence().isEmpty() && !plain.fenceEnabled()
+        !plain.belowHomeAllowed()
+        run("low = missionFromFile('${RAW}', allowBelowHome: true)").outcome == COMPLETED
+        (h.engine.variable('low') as Mission).belowHomeAllowed()
         h.messages.any { it.contains('read 5 mission items, a fence of 1 region') }
     }
 
@@ -135,7 +138,7 @@ class AirspaceWordsSpec extends Specification {
         "'no/such.plan'"                                  | 'missionFromFile: no file no/such.plan'
         "'${FENCE_ONLY}'"                                 | 'holds a fence but no mission'
         "'${WRONG}'"                                      | 'mission.version 7 is not one QGroundControl reads'
-        "'dsl-examples/square.plan', fence: true"         | "missionFromFile: unknown option 'fence' (expected enableFence, name)"
+        "'dsl-examples/square.plan', fence: true"         | "missionFromFile: unknown option 'fence' (expected enableFence, allowBelowHome, name)"
     }
 
     static final String SHARED = '../shared/mission-files/'
