@@ -23,7 +23,9 @@ final class AirspaceStore implements ItemStore {
 
     private final MissionType type;
     private final int capacity;
-    private List<MissionItem> stored = List.of();
+    /** What is stored, checked as a whole when its upload completed; the other stays empty. */
+    private Fence fence = Fence.NONE;
+    private RallyPoints rally = RallyPoints.NONE;
     private final List<MissionItem> incoming = new ArrayList<>();
 
     AirspaceStore(MissionType type, int capacity) {
@@ -43,14 +45,14 @@ final class AirspaceStore implements ItemStore {
 
     @Override
     public int count() {
-        return stored.size();
+        return items().size();
     }
 
     @Override
     public void truncate(int n) {
         incoming.clear();
         if (n == 0) {
-            stored = List.of();
+            clear();
         }
     }
 
@@ -66,14 +68,12 @@ final class AirspaceStore implements ItemStore {
         if (!ours) {
             return MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED;
         }
-        if (!MissionCheck.GLOBAL_FRAMES.contains(item.frame()) || item.frame() == MAV_FRAME.MAV_FRAME_MISSION) {
+        if (item.frame() == MAV_FRAME.MAV_FRAME_MISSION) {
             return MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED_FRAME;
         }
-        if (Math.abs(item.x()) > 900_000_000) {
-            return MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM5_X;
-        }
-        if (Math.abs(item.y()) > 1_800_000_000) {
-            return MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM6_Y;
+        int position = MissionCheck.position(item);
+        if (position != MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
+            return position;
         }
         if (type == MissionType.RALLY && !(Math.abs(item.z()) <= Short.MAX_VALUE)) {
             return MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM7;
@@ -85,22 +85,21 @@ final class AirspaceStore implements ItemStore {
     public int complete() {
         try {
             if (type == MissionType.FENCE) {
-                Fence.of(incoming);
+                fence = Fence.of(incoming);
             } else {
-                RallyPoints.of(incoming);
+                rally = RallyPoints.of(incoming);
             }
+            return MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
         } catch (BadItemException e) {
-            incoming.clear();
             return MAV_MISSION_RESULT.MAV_MISSION_ERROR;
+        } finally {
+            incoming.clear();
         }
-        stored = List.copyOf(incoming);
-        incoming.clear();
-        return MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
     }
 
     @Override
     public MissionItem reported(int seq) {
-        MissionItem i = stored.get(seq);
+        MissionItem i = items().get(seq);
         if (type == MissionType.FENCE) {
             float p1 = i.command() == MAV_CMD.MAV_CMD_NAV_FENCE_RETURN_POINT ? 0 : i.param1();
             return new MissionItem(seq, i.command(), MAV_FRAME.MAV_FRAME_GLOBAL, p1, 0, 0, 0, i.x(), i.y(), 0, false);
@@ -111,12 +110,21 @@ final class AirspaceStore implements ItemStore {
 
     @Override
     public void clear() {
-        stored = List.of();
+        fence = Fence.NONE;
+        rally = RallyPoints.NONE;
         incoming.clear();
     }
 
+    Fence fence() {
+        return fence;
+    }
+
+    RallyPoints rally() {
+        return rally;
+    }
+
     /** The stored items, numbered from 0. */
-    List<MissionItem> items() {
-        return stored;
+    private List<MissionItem> items() {
+        return type == MissionType.FENCE ? fence.items() : rally.items();
     }
 }

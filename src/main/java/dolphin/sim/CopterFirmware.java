@@ -108,7 +108,7 @@ final class CopterFirmware implements Firmware {
 
     @Override
     public Manoeuvre takeoff(Craft craft, double altitude) {
-        return new VerticalTakeoff(craft, altitude);
+        return new Takeoff(craft, altitude, craft::climbTo);
     }
 
     @Override

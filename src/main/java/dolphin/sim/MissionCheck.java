@@ -48,6 +48,18 @@ final class MissionCheck {
             return OTHERS.contains(item.command()) ? MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
                     : MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED;
         }
+        int position = position(item);
+        if (position != MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
+            return position;
+        }
+        if (!Float.isFinite(item.z()) || Math.abs(item.z()) >= ALT_MAX_METRES) {
+            return MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM7;
+        }
+        return MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
+    }
+
+    /** A global frame (or MISSION), latitude and longitude in range: ACCEPTED, or the error for the first that is not. */
+    static int position(MissionItem item) {
         if (!GLOBAL_FRAMES.contains(item.frame())) {
             return MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED_FRAME;
         }
@@ -56,9 +68,6 @@ final class MissionCheck {
         }
         if (Math.abs((long) item.y()) > 1_800_000_000L) {
             return MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM6_Y;
-        }
-        if (!Float.isFinite(item.z()) || Math.abs(item.z()) >= ALT_MAX_METRES) {
-            return MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM7;
         }
         return MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
     }

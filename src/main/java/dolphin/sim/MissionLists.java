@@ -10,10 +10,8 @@ import com.MAVLink.common.msg_mission_request;
 import com.MAVLink.common.msg_mission_request_int;
 import com.MAVLink.common.msg_mission_request_list;
 import dolphin.mavlink.mission.Fence;
-import dolphin.mavlink.mission.MissionItem;
 import dolphin.mavlink.mission.MissionType;
 import dolphin.mavlink.mission.RallyPoints;
-import java.util.List;
 
 /**
  * A simulated vehicle's three lists (mission, fence, rally points) and a mission-protocol transfer
@@ -27,7 +25,6 @@ final class MissionLists {
     private final MissionTransfer rally;
     private final AirspaceStore fenceStore;
     private final AirspaceStore rallyStore;
-    private FenceView fenceView;
 
     MissionLists(MissionStore missionStore, int capacity, MissionTransfer.Host host) {
         this.fenceStore = new AirspaceStore(MissionType.FENCE, capacity);
@@ -59,19 +56,13 @@ final class MissionLists {
         return mission.uploading() || fence.uploading() || rally.uploading();
     }
 
-    /** The stored fence (checked when its upload completed); made again only when it changes. */
+    /** The stored fence (checked when its upload completed). */
     Fence fence() {
-        if (fenceView == null || fenceView.items() != fenceStore.items()) {
-            fenceView = new FenceView(fenceStore.items(), fenceStore.count() == 0 ? Fence.NONE : Fence.of(fenceStore.items()));
-        }
-        return fenceView.fence();
-    }
-
-    private record FenceView(List<MissionItem> items, Fence fence) {
+        return fenceStore.fence();
     }
 
     RallyPoints rally() {
-        return RallyPoints.of(rallyStore.items());
+        return rallyStore.rally();
     }
 
     /** {target_system, mission_type} of a mission-protocol message, or null for another message. */

@@ -107,7 +107,7 @@ final class PlaneFirmware implements Firmware {
 
     @Override
     public Manoeuvre takeoff(Craft craft, double altitude) {
-        return new RollingTakeoff(craft, altitude);
+        return new Takeoff(craft, altitude, craft::climbAhead);
     }
 
     @Override

@@ -2,23 +2,33 @@ package dolphin.sim;
 
 import com.MAVLink.enums.MAV_LANDED_STATE;
 
-/** A plane's NAV_TAKEOFF: ahead along its heading at its speed, climbing to the item's height. */
-final class RollingTakeoff implements Manoeuvre {
+/**
+ * NAV_TAKEOFF: climbs to the item's height the firmware's way, a copter straight up at its climb
+ * rate ({@link Craft#climbTo}), a plane ahead along its heading at its speed ({@link Craft#climbAhead}).
+ */
+final class Takeoff implements Manoeuvre {
+
+    /** One step of the climb towards an altitude. */
+    interface Climb {
+        void step(double altitude, double dt);
+    }
 
     private static final double TOLERANCE = 0.05;
 
     private final Craft craft;
     private final double altitude;
+    private final Climb climb;
 
-    RollingTakeoff(Craft craft, double altitude) {
+    Takeoff(Craft craft, double altitude, Climb climb) {
         this.craft = craft;
         this.altitude = altitude;
+        this.climb = climb;
     }
 
     @Override
     public boolean step(double dt) {
         if (altitude - craft.position().hae() > TOLERANCE) {
-            craft.climbAhead(altitude, dt);
+            climb.step(altitude, dt);
         }
         return altitude - craft.position().hae() <= TOLERANCE;
     }
