@@ -25,6 +25,12 @@ public record Position(double lat, double lon, double hae) {
         return Math.sqrt(sq(a[0] - b[0]) + sq(a[1] - b[1]) + sq(a[2] - b[2]));
     }
 
+    /** Distance on the ground in metres: to {@code other} brought to this position's height. */
+    public double horizontalDistanceTo(Position other) {
+        double[] ned = Wgs84.ned(this, other.atHeight(hae));
+        return Math.hypot(ned[0], ned[1]);
+    }
+
     public boolean near(Position other, double radius) {
         return distanceTo(other) <= radius;
     }
@@ -32,6 +38,11 @@ public record Position(double lat, double lon, double hae) {
     /** (north, east, down) metres from this position to {@code other}. */
     public double[] displacementTo(Position other) {
         return Wgs84.ned(this, other);
+    }
+
+    /** The same place at another height. */
+    public Position atHeight(double height) {
+        return new Position(lat, lon, height);
     }
 
     /** This position moved by (north, east, down) metres. */

@@ -397,7 +397,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
         handler.on(msg_extended_sys_state.class, (n, m) -> changed(n, s -> s.withLandedState(m.landed_state)));
         handler.on(msg_mission_current.class, (n, m) -> changed(n, s -> s.withMissionCurrent(m.seq, m.total, m.mission_state)));
         handler.on(msg_ekf_status_report.class, (n, m) -> changed(n, s -> s.withEkfFlags(m.flags)));
-        handler.on(msg_fence_status.class, (n, m) -> changed(n, s -> s.withFenceStatus(m.breach_status != 0, m.breach_count)));
+        handler.on(msg_fence_status.class, (n, m) -> changed(n, s -> s.withFenceBreached(m.breach_status != 0)));
         handler.on(msg_statustext.class, (n, m) -> {
             String text = m.getText();
             LOG.info("vehicle {}: {}", n.getId(), text);

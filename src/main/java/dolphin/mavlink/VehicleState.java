@@ -23,20 +23,20 @@ import java.util.List;
  * @param missionState MISSION_CURRENT.mission_state (MISSION_STATE), 0 when unknown
  * @param statusTexts the last STATUSTEXT lines, oldest first
  * @param ekfFlags EKF_STATUS_REPORT.flags (ArduPilot's EKF_STATUS_FLAGS), -1 before the first
- * @param fenceBreaches FENCE_STATUS: breach_count while the vehicle is outside its fence, -(breach_count + 1)
- *        while inside; -1 before the first (ArduPilot sends FENCE_STATUS only with its fence on)
+ * @param fenceBreached FENCE_STATUS.breach_status: the vehicle is outside its fence; false before the first
+ *        (ArduPilot sends FENCE_STATUS only with its fence on)
  */
 public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, VehicleFamily family,
                            msg_sys_status systemStatus, long systemStatusNanos,
                            Position position, double relativeAlt, long positionNanos, Position home,
                            int landedState, int missionSeq, int missionTotal, int missionState,
-                           List<String> statusTexts, int ekfFlags, int fenceBreaches) {
+                           List<String> statusTexts, int ekfFlags, boolean fenceBreached) {
 
     public static final int STATUS_LINES = 20;
     private static final int ARMED_FLAG = 128;
 
     public static VehicleState initial(VehicleFamily family) {
-        return new VehicleState(null, 0, family, null, 0, null, 0, 0, null, 0, -1, -1, 0, List.of(), -1, -1);
+        return new VehicleState(null, 0, family, null, 0, null, 0, 0, null, 0, -1, -1, 0, List.of(), -1, false);
     }
 
     public boolean armed() {
@@ -58,49 +58,43 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
 
     public VehicleState withHeartbeat(msg_heartbeat hb, long nanos) {
         return new VehicleState(hb, nanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreaches);
+                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
     }
 
     public VehicleState withSystemStatus(msg_sys_status s, long nanos) {
         return new VehicleState(heartbeat, heartbeatNanos, family, s, nanos, position, relativeAlt,
-                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreaches);
+                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
     }
 
     public VehicleState withPosition(Position p, double relAlt, long nanos) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, p, relAlt,
-                nanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreaches);
+                nanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
     }
 
     public VehicleState withHome(Position h) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, h, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreaches);
+                positionNanos, h, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
     }
 
     public VehicleState withLandedState(int landed) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, home, landed, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreaches);
+                positionNanos, home, landed, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
     }
 
     public VehicleState withMissionCurrent(int seq, int total, int state) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, home, landedState, seq, total, state, statusTexts, ekfFlags, fenceBreaches);
+                positionNanos, home, landedState, seq, total, state, statusTexts, ekfFlags, fenceBreached);
     }
 
     public VehicleState withEkfFlags(int flags) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, flags, fenceBreaches);
+                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, flags, fenceBreached);
     }
 
-    /** From FENCE_STATUS (see {@link #fenceBreaches}). */
-    public VehicleState withFenceStatus(boolean breached, int breachCount) {
+    /** From FENCE_STATUS.breach_status. */
+    public VehicleState withFenceBreached(boolean breached) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags,
-                breached ? breachCount : -breachCount - 1);
-    }
-
-    /** Whether the vehicle's last FENCE_STATUS said it is outside its fence. */
-    public boolean fenceBreached() {
-        return fenceBreaches >= 0;
+                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, breached);
     }
 
     public VehicleState withStatusText(String line) {
@@ -110,6 +104,6 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
             lines.remove(0);
         }
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, home, landedState, missionSeq, missionTotal, missionState, List.copyOf(lines), ekfFlags, fenceBreaches);
+                positionNanos, home, landedState, missionSeq, missionTotal, missionState, List.copyOf(lines), ekfFlags, fenceBreached);
     }
 }

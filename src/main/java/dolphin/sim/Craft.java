@@ -91,8 +91,7 @@ final class Craft {
 
     /** The horizontal distance to {@code p}. */
     double distanceTo(Position p) {
-        double[] ned = position.displacementTo(p);
-        return Math.hypot(ned[0], ned[1]);
+        return position.horizontalDistanceTo(p);
     }
 
     /**
@@ -108,7 +107,7 @@ final class Craft {
         turnTowards(ned);
         double dz = Math.max(-performance.sink() * dt, Math.min(performance.climb() * dt, t.hae() - position.hae()));
         Position p = position.displace(ned[0] * f, ned[1] * f, 0);
-        moveTo(Position.fromDegrees(p.latitudeDegrees(), p.longitudeDegrees(), position.hae() + dz), dt);
+        moveTo(p.atHeight(position.hae() + dz), dt);
     }
 
     /** Along the ground towards {@code t}, whose height does not matter, at its speed. */
@@ -118,7 +117,7 @@ final class Craft {
         double f = h <= 0 ? 0 : Math.min(1, speed * dt / h);
         turnTowards(ned);
         Position p = position.displace(ned[0] * f, ned[1] * f, 0);
-        position = Position.fromDegrees(p.latitudeDegrees(), p.longitudeDegrees(), ground);
+        position = p.atHeight(ground);
     }
 
     /** Straight up (or down) towards {@code hae} at the climb or sink rate. */
@@ -155,7 +154,7 @@ final class Craft {
             return;
         }
         double rate = dt > 0 ? (position.hae() - p.hae()) / dt : 0;
-        position = Position.fromDegrees(p.latitudeDegrees(), p.longitudeDegrees(), ground);
+        position = p.atHeight(ground);
         contact = true;
         report.accept(String.format(Locale.ROOT, "SIM Hit ground at %f m/s", rate));
     }

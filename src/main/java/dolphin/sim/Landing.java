@@ -30,7 +30,7 @@ final class Landing implements Manoeuvre {
     @Override
     public boolean step(double dt) {
         if (!above) {
-            Position target = Position.fromDegrees(over.latitudeDegrees(), over.longitudeDegrees(), craft.position().hae());
+            Position target = over.atHeight(craft.position().hae());
             craft.fly(target, dt);
             above = craft.distanceTo(target) <= craft.performance().precisionRadius();
             return false;

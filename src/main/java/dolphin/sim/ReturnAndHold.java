@@ -24,7 +24,7 @@ final class ReturnAndHold implements Manoeuvre {
     @Override
     public boolean step(double dt) {
         if (hold == null) {
-            Position over = Position.fromDegrees(home.latitudeDegrees(), home.longitudeDegrees(), craft.position().hae());
+            Position over = home.atHeight(craft.position().hae());
             if (!firmware.reach(craft, over, craft.performance().waypointRadius(), dt)) {
                 return false;
             }

@@ -29,7 +29,7 @@ final class ReturnAndLand implements Manoeuvre {
             return false;
         }
         if (landing == null) {
-            Position over = Position.fromDegrees(home.latitudeDegrees(), home.longitudeDegrees(), craft.position().hae());
+            Position over = home.atHeight(craft.position().hae());
             craft.fly(over, dt);
             if (craft.distanceTo(over) <= craft.performance().waypointRadius()) {
                 landing = new Landing(craft, null);

@@ -252,16 +252,23 @@ public final class SimVehicle {
             case BREACHED -> {
                 outbox.text(MAV_SEVERITY.MAV_SEVERITY_NOTICE, "Polygon fence breached");
                 outbox.flush();
-                out.accept(fenceGuard.status());
+                sendFenceStatus();
                 changeMode(firmware.rtlMode());
                 announceMode();
             }
             case CLEARED -> {
                 outbox.text(MAV_SEVERITY.MAV_SEVERITY_NOTICE, "Fence breach cleared");
-                out.accept(fenceGuard.status());
+                sendFenceStatus();
             }
             default -> {
             }
+        }
+    }
+
+    /** FENCE_STATUS at once on a change, unless the vehicle is silent (its telemetry lost). */
+    private void sendFenceStatus() {
+        if (!silent) {
+            out.accept(fenceGuard.status());
         }
     }
 

@@ -293,7 +293,7 @@ class MissionBuilder {
      */
     void altitude(Number height) {
         Position from = lastPosition('altitude')
-        waypoint('altitude', new Position(from.lat(), from.lon(), Args.number('altitude', 'height', height)))
+        waypoint('altitude', from.atHeight(Args.number('altitude', 'height', height)))
     }
 
     /** NAV_DELAY: wait this many seconds before the next navigation command. */
@@ -490,7 +490,7 @@ class MissionBuilder {
             throw new DslException("${word}: there is no height to return at yet: the mission goes nowhere before it;"
                     + " go somewhere first (takeOff, goPos, move, ...), or use returnHomeAndLand()")
         }
-        new Position(h.lat(), h.lon(), lastRegistered.hae())
+        h.atHeight(lastRegistered.hae())
     }
 
     private Position homeFor(String word) {

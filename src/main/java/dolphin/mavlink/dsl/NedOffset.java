@@ -23,6 +23,6 @@ public record NedOffset(double north, double east, double down) {
      */
     public static Position offset(Position from, double north, double east, double down) {
         Position p = from.displace(north, east, 0);
-        return new Position(p.lat(), p.lon(), from.hae() - down);
+        return p.atHeight(from.hae() - down);
     }
 }

@@ -2,7 +2,6 @@ package dolphin.mavlink.mission;
 
 import com.MAVLink.enums.MAV_CMD;
 import dolphin.core.Position;
-import dolphin.core.Wgs84;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
@@ -196,22 +195,16 @@ public final class Fence {
         return returnPoint == null ? sb.toString() : sb.append(", return point").toString();
     }
 
-    /** Distance on the ground between two positions (heights ignored). */
-    static double horizontalDistance(Position a, Position b) {
-        double[] ned = Wgs84.ned(a, new Position(b.lat(), b.lon(), a.hae()));
-        return Math.hypot(ned[0], ned[1]);
-    }
-
     private static Position horizontal(MissionItem it) {
         return Position.fromDegrees(it.x() * 1e-7, it.y() * 1e-7, 0);
     }
 
     static void requireInRange(int index, MissionItem it) {
-        if (Math.abs(it.x()) > 900_000_000) {
+        if (Math.abs((long) it.x()) > 900_000_000L) {
             throw new BadItemException(index, "item " + index + " (" + it.commandName() + "): latitude "
                     + FileValues.degrees(it.x()) + " is out of range (-90 to 90)");
         }
-        if (Math.abs(it.y()) > 1_800_000_000) {
+        if (Math.abs((long) it.y()) > 1_800_000_000L) {
             throw new BadItemException(index, "item " + index + " (" + it.commandName() + "): longitude "
                     + FileValues.degrees(it.y()) + " is out of range (-180 to 180)");
         }

@@ -75,7 +75,7 @@ public sealed interface FenceRegion permits FenceRegion.Polygon, FenceRegion.Cir
 
         @Override
         public boolean contains(Position p) {
-            return Fence.horizontalDistance(center, p) <= radius;
+            return center.horizontalDistanceTo(p) <= radius;
         }
 
         @Override

@@ -86,7 +86,8 @@ final class PlanItems {
     }
 
     private void add(Map<?, ?> item, int firstSeq, String where) {
-        float[] p = params(item, where);
+        List<?> all = allParams(item, where);
+        float[] p = params(all, where);
         int frame = PlanJson.integer(item.get("frame"), where + ".frame");
         float z = p[6];
         Object mode = item.get("AltitudeMode");
@@ -106,17 +107,16 @@ final class PlanItems {
         String pw = where + ".params";
         items.add(new MissionItem(firstSeq + items.size(), PlanJson.integer(item.get("command"), where + ".command"),
                 FileValues.itemFrame(frame), p[0], p[1], p[2], p[3],
-                PlanJson.degE7(p4(item, 4, pw), 90, pw + "[4] (latitude)"),
-                PlanJson.degE7(p4(item, 5, pw), 180, pw + "[5] (longitude)"), z,
+                PlanJson.degE7(all.get(4), 90, pw + "[4] (latitude)"),
+                PlanJson.degE7(all.get(5), 180, pw + "[5] (longitude)"), z,
                 autoContinue == null || Boolean.TRUE.equals(autoContinue)));
         Object jumpId = item.get(jumpIdKey);
         jumpIds.add(jumpId == null ? null : PlanJson.integer(jumpId, where + "." + jumpIdKey));
         paths.add(where);
     }
 
-    /** Params 1 to 4 and 7 as floats (5 and 6, degrees, are read exactly by {@link #p4}). */
-    private static float[] params(Map<?, ?> item, String where) {
-        List<?> all = allParams(item, where);
+    /** Params 1 to 4 and 7 as floats (5 and 6, degrees, are read exactly as degE7 by the caller). */
+    private static float[] params(List<?> all, String where) {
         String pw = where + ".params";
         float[] p = new float[7];
         for (int i = 0; i < 7; i++) {
@@ -126,10 +126,6 @@ final class PlanItems {
             p[i] = PlanJson.toFloat(all.get(i), pw + "[" + i + "]");
         }
         return p;
-    }
-
-    private static Object p4(Map<?, ?> item, int index, String where) {
-        return allParams(item, where).get(index);
     }
 
     /** The seven params of any form: params[7], or params[4] / param1..param4 and coordinate [lat, lon, alt]. */

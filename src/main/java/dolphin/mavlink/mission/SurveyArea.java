@@ -94,7 +94,7 @@ public final class SurveyArea extends MissionPoint {
 
     /** The horizontal position of p at the given height (no drift from the tangent-plane steps). */
     private static Position atHeight(Position p, double hae) {
-        return new Position(p.lat(), p.lon(), hae);
+        return p.atHeight(hae);
     }
 
     public double length() {
