@@ -4,7 +4,10 @@
 # bench/fleet.dolphin on every vehicle, each cut at 90 % battery by its own guard. Plain Java main
 # (dolphin.bench.FleetBench), real time. See bench/README.md.
 #
-#   bench/fleet.sh [--no-build] [SIZE...]      # default sizes: 50 250 1000
+#   bench/fleet.sh [--no-build] [--web] [SIZE...]      # default sizes: 50 250 1000
+#
+# With --web (needs Debian's chromium), each size runs twice: without the web view, then with it
+# and a page open in a headless chromium; the summary gives the ratios (issue 13).
 #
 # Prints the summary, also in bench/target/results/fleet-summary.txt; every reaction time is in
 # fleet.json there. Exit status 1 if a run did not complete or a vehicle was not cut.
@@ -15,6 +18,8 @@ root="$(dirname "$bench")"
 out="$bench/target/results"
 
 if [ "${1:-}" = "--no-build" ]; then shift; else "$bench/build.sh"; fi
+web=()
+if [ "${1:-}" = "--web" ]; then web=(--web); shift; fi
 sizes=("$@")
 [ ${#sizes[@]} -gt 0 ] || sizes=(50 250 1000)
 jar="${DOLPHIN_JAR:-$root/target/dolphin.jar}"
@@ -24,4 +29,4 @@ done
 mkdir -p "$out"
 echo "== fleet scale: ${sizes[*]} vehicles" >&2
 java -Dorg.slf4j.simpleLogger.defaultLogLevel=warn -cp "$bench/target/classes:$bench/target/lib/*:$jar:$root/target/lib/*" \
-  dolphin.bench.FleetBench "$out" "$bench/fleet.dolphin" "$(command -v java)" "$jar:$root/target/lib/*" "${sizes[@]}"
+  dolphin.bench.FleetBench "$out" "$bench/fleet.dolphin" "$(command -v java)" "$jar:$root/target/lib/*" "${web[@]}" "${sizes[@]}"

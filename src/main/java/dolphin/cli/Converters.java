@@ -5,6 +5,7 @@ import dolphin.mavlink.codec.SigningKey;
 import dolphin.mavlink.link.LinkUrl;
 import dolphin.mavlink.mission.MissionFormat;
 import dolphin.sim.VehicleKind;
+import dolphin.web.WebAddress;
 import java.io.IOException;
 import java.nio.file.Path;
 import picocli.CommandLine.ITypeConverter;
@@ -21,6 +22,18 @@ final class Converters {
         public LinkUrl convert(String value) {
             try {
                 return LinkUrl.parse(value);
+            } catch (IllegalArgumentException e) {
+                throw new TypeConversionException(e.getMessage());
+            }
+        }
+    }
+
+    /** {@code [HOST:]PORT} of the web view. */
+    static final class Web implements ITypeConverter<WebAddress> {
+        @Override
+        public WebAddress convert(String value) {
+            try {
+                return WebAddress.parse(value);
             } catch (IllegalArgumentException e) {
                 throw new TypeConversionException(e.getMessage());
             }

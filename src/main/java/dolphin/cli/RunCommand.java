@@ -15,6 +15,9 @@ import dolphin.mavlink.mission.MissionTransferConfig;
 import dolphin.sim.FaultModel;
 import dolphin.sim.SimFleet;
 import dolphin.sim.VehicleKind;
+import dolphin.web.WebAddress;
+import dolphin.web.WebView;
+import dolphin.web.WebViewException;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.net.InetSocketAddress;
@@ -99,6 +102,16 @@ final class RunCommand implements Callable<Integer> {
                     + "checks passing) before it fails quoting the vehicle's PreArm text (default: ${DEFAULT-VALUE}).")
     private long readyTimeoutSeconds;
 
+    @Option(names = "--web", paramLabel = "[HOST:]PORT", converter = Converters.Web.class,
+            description = "Serve a live view of the run (map, task trees, event log) at http://HOST:PORT/; HOST defaults "
+                    + "to 127.0.0.1 (loopback only); another address needs the token printed at start. Port 0 takes a free port.")
+    private WebAddress web;
+
+    @Option(names = "--web-tiles", paramLabel = "URL",
+            description = "Map tiles for --web, e.g. https://tile.openstreetmap.org/{z}/{x}/{y}.png (default: none, a plain "
+                    + "background with a scale; the vehicles, tracks and missions are drawn either way).")
+    private String webTiles;
+
     /** How the vehicles' status is shown. */
     enum StatusMode { auto, live, plain }
 
@@ -143,7 +156,8 @@ final class RunCommand implements Callable<Integer> {
             }
             Engine engine = new Engine(new MAVLinkPlatform(comms), clock);
             Screen screen = screen(out, clock);
-            try (RunConsole console = new RunConsole(screen, comms::nodes, SystemClock.REAL);
+            try (AutoCloseable view = startWebView(comms, engine, out, err);
+                 RunConsole console = new RunConsole(screen, comms::nodes, SystemClock.REAL);
                  AutoCloseable logs = screen instanceof LiveScreen live ? TerminalErr.captureIfShared(live::above) : () -> { }) {
                 engine.addListener(console);
                 console.start();
@@ -158,6 +172,26 @@ final class RunCommand implements Callable<Integer> {
             if (fleet != null) {
                 fleet.close();
             }
+        }
+    }
+
+    /**
+     * The web view when asked for; when it cannot start (port in use, unknown host) the run goes on
+     * without it, as a flight should not wait on a viewer.
+     */
+    private AutoCloseable startWebView(MAVLinkCommunications comms, Engine engine, PrintWriter out, PrintWriter err) {
+        if (web == null) {
+            return () -> { };
+        }
+        try {
+            WebView view = WebView.start(new WebView.Config(web, webTiles), comms, engine, SystemClock.REAL);
+            out.println("web view: " + view.address());
+            out.flush();
+            return view;
+        } catch (WebViewException e) {
+            err.println("dolphin run: web view not started: " + e.getMessage() + "; the run goes on without it");
+            err.flush();
+            return () -> { };
         }
     }
 
@@ -182,6 +216,13 @@ final class RunCommand implements Callable<Integer> {
         Main.checkSpeedup(spec, speedup);
         if (speedup != 1 && sim == 0) {
             throw new ParameterException(spec.commandLine(), "--speedup needs --sim: real vehicles run in real time");
+        }
+        if (webTiles != null && web == null) {
+            throw new ParameterException(spec.commandLine(), "--web-tiles needs --web");
+        }
+        if (webTiles != null && !(webTiles.contains("{z}") && webTiles.contains("{x}") && webTiles.contains("{y}"))) {
+            throw new ParameterException(spec.commandLine(), "--web-tiles '" + webTiles
+                    + "': expected a tile URL with {z}, {x} and {y}, e.g. https://tile.openstreetmap.org/{z}/{x}/{y}.png");
         }
         if (sysid < 1 || sysid > 255) {
             throw new ParameterException(spec.commandLine(), "--sysid must be in 1..255, got " + sysid);

@@ -11,6 +11,11 @@ public final class ActionTask extends LocalTask {
     }
 
     @Override
+    public String kind() {
+        return "action";
+    }
+
+    @Override
     public TaskExecutor getExecutor() {
         return executor(ex -> {
             code.run();

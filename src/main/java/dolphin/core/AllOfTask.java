@@ -19,6 +19,11 @@ public final class AllOfTask extends GuardedTask {
     }
 
     @Override
+    public String kind() {
+        return "allOf";
+    }
+
+    @Override
     public TaskExecutor getExecutor() {
         return new CompositeExecutor(this, TaskGuard.tasks(guards)) {
             private final List<Integer> remaining = new ArrayList<>();

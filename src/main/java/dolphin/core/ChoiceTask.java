@@ -19,6 +19,11 @@ public final class ChoiceTask extends GuardedTask {
     }
 
     @Override
+    public String kind() {
+        return guards.size() == 1 ? "waitFor" : "oneOf";
+    }
+
+    @Override
     public TaskExecutor getExecutor() {
         return new CompositeExecutor(this, TaskGuard.tasks(guards)) {
             private TaskExecutor chosen;

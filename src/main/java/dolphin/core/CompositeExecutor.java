@@ -13,6 +13,11 @@ abstract class CompositeExecutor extends TaskExecutor {
     }
 
     @Override
+    List<TaskExecutor> children() {
+        return children;
+    }
+
+    @Override
     protected void onInitialize(Allocation allocation) {
         for (int i = 0; i < children.size(); i++) {
             children.get(i).initialize(context(), allocation.child(i));

@@ -25,6 +25,11 @@ public final class ConcurrentTask implements Task {
     }
 
     @Override
+    public String kind() {
+        return "concurrent";
+    }
+
+    @Override
     public TaskExecutor getExecutor() {
         return new CompositeExecutor(this, List.of(a, b)) {
             @Override

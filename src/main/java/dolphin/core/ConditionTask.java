@@ -11,6 +11,11 @@ public final class ConditionTask extends LocalTask {
     }
 
     @Override
+    public String kind() {
+        return "condition";
+    }
+
+    @Override
     public TaskExecutor getExecutor() {
         return executor(ex -> condition.holds() ? CompletionState.DONE : CompletionState.IN_PROGRESS);
     }

@@ -24,6 +24,11 @@ public final class ConstrainedTask extends WrapperTask {
     }
 
     @Override
+    public String kind() {
+        return "until";
+    }
+
+    @Override
     public TaskExecutor getExecutor() {
         return new CompositeExecutor(this, List.of(inner)) {
             @Override

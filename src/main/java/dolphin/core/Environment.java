@@ -153,6 +153,7 @@ public final class Environment {
         }
         TaskExecutor executor = task.getExecutor();
         executor.initialize(new TaskContext(clock, listener), allocation);
+        listener.executeStarted(TaskTree.of(executor));
         long nextTick = clock.nanoTime();
         try {
             executor.start();

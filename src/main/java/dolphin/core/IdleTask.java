@@ -14,6 +14,11 @@ public final class IdleTask extends LocalTask {
     }
 
     @Override
+    public String kind() {
+        return "idle";
+    }
+
+    @Override
     public TaskExecutor getExecutor() {
         return executor(ex -> ex.timeElapsed() >= seconds ? CompletionState.DONE : CompletionState.IN_PROGRESS);
     }

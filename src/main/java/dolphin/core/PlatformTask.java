@@ -21,6 +21,11 @@ public abstract class PlatformTask implements Task {
     public abstract List<NodeFilter> getRequirements();
 
     @Override
+    public String kind() {
+        return "platform task";
+    }
+
+    @Override
     public abstract PlatformTaskExecutor getExecutor();
 
     /** For each requirement, the first matching vehicle in {@code available}; all or nothing. */

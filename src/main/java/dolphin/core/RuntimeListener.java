@@ -8,4 +8,8 @@ public interface RuntimeListener {
 
     default void taskEvent(TaskEvent event) {
     }
+
+    /** An execute's task tree, allocated, just before its root starts; its nodes' events follow. */
+    default void executeStarted(TaskTree tree) {
+    }
 }

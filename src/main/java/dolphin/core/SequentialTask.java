@@ -30,6 +30,11 @@ public final class SequentialTask implements Task {
     }
 
     @Override
+    public String kind() {
+        return "sequence";
+    }
+
+    @Override
     public TaskExecutor getExecutor() {
         return new CompositeExecutor(this, List.of(first, second)) {
             @Override

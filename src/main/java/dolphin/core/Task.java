@@ -11,6 +11,14 @@ public interface Task {
 
     String getId();
 
+    /**
+     * The word a viewer shows for this kind of task ({@code sequence}, {@code concurrent},
+     * {@code until}, {@code mission}...); its {@link #getId()} says which one.
+     */
+    default String kind() {
+        return "task";
+    }
+
     /** A new executor for one occurrence of this task. */
     TaskExecutor getExecutor();
 

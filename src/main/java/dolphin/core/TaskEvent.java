@@ -4,9 +4,10 @@ import java.util.List;
 
 /**
  * A change in a task's life: STARTED, COMPLETED (by itself, DONE or ERROR in {@code state}) or
- * STOPPED (cut short by its parent, a condition or the engine).
+ * STOPPED (cut short by its parent, a condition or the engine). {@code occurrence} names the executor, as
+ * in the {@link TaskTree} of its execute.
  */
-public record TaskEvent(Kind kind, Task task, List<String> vehicles, CompletionState state, double time) {
+public record TaskEvent(Kind kind, Task task, List<String> vehicles, CompletionState state, double time, long occurrence) {
 
     public enum Kind { STARTED, COMPLETED, STOPPED }
 

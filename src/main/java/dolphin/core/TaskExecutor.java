@@ -1,6 +1,7 @@
 package dolphin.core;
 
 import java.util.List;
+import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * Runs one occurrence of a task: INITIALIZING, READY, EXECUTING, COMPLETED. Executors are driven
@@ -14,7 +15,10 @@ public abstract class TaskExecutor {
 
     public enum State { INITIALIZING, READY, EXECUTING, COMPLETED }
 
+    private static final AtomicLong OCCURRENCES = new AtomicLong();
+
     private final Task task;
+    private final long occurrence = OCCURRENCES.incrementAndGet();
     private volatile State state = State.INITIALIZING;
     private volatile CompletionState completionState = CompletionState.UNDEFINED;
     private volatile boolean stopped;
@@ -28,6 +32,16 @@ public abstract class TaskExecutor {
 
     public final Task getTask() {
         return task;
+    }
+
+    /** This occurrence's number, unique in the JVM: what task events and {@link TaskTree}s name it by. */
+    public final long occurrence() {
+        return occurrence;
+    }
+
+    /** The executors this one drives, made with it (so a task tree's shape is known when it starts). */
+    List<TaskExecutor> children() {
+        return List.of();
     }
 
     public final State getState() {
@@ -150,6 +164,6 @@ public abstract class TaskExecutor {
 
     private void emit(TaskEvent.Kind kind) {
         context.listener().taskEvent(new TaskEvent(kind, task,
-                getVehicles().stream().map(Node::getId).toList(), completionState, clock().seconds()));
+                getVehicles().stream().map(Node::getId).toList(), completionState, clock().seconds(), occurrence));
     }
 }

@@ -21,6 +21,11 @@ public final class TimeConstrainedTask extends WrapperTask {
     }
 
     @Override
+    public String kind() {
+        return "during";
+    }
+
+    @Override
     public TaskExecutor getExecutor() {
         return new CompositeExecutor(this, List.of(inner)) {
             @Override

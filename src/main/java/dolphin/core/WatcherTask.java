@@ -18,6 +18,11 @@ public final class WatcherTask extends WrapperTask {
     }
 
     @Override
+    public String kind() {
+        return "watch";
+    }
+
+    @Override
     public TaskExecutor getExecutor() {
         return new CompositeExecutor(this, List.of(inner)) {
             @Override

@@ -6,6 +6,7 @@ import dolphin.core.Platform;
 import dolphin.core.RuntimeListener;
 import dolphin.core.SystemClock;
 import dolphin.core.TaskEvent;
+import dolphin.core.TaskTree;
 import groovy.lang.Binding;
 import groovy.lang.Closure;
 import groovy.lang.GroovyClassLoader;
@@ -270,6 +271,11 @@ public final class Engine implements AutoCloseable {
         @Override
         public void taskEvent(TaskEvent event) {
             each(l -> l.taskEvent(event));
+        }
+
+        @Override
+        public void executeStarted(TaskTree tree) {
+            each(l -> l.executeStarted(tree));
         }
 
         void scriptStarted(String name) {

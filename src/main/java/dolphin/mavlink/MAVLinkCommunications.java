@@ -56,6 +56,8 @@ public final class MAVLinkCommunications implements AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(MAVLinkCommunications.class);
     private static final long SECOND = 1_000_000_000L;
+    /** GLOBAL_POSITION_INT.hdg when the vehicle does not know its heading (UINT16_MAX). */
+    private static final int UNKNOWN_HEADING = 65535;
 
     /** Sees every frame in and out, on the communications thread (for forwarding, logs and tests). */
     public interface FrameObserver {
@@ -391,7 +393,8 @@ public final class MAVLinkCommunications implements AutoCloseable {
         handler.on(msg_sys_status.class, (n, m) -> changed(n, s -> s.withSystemStatus(m, clock.nanoTime())));
         // ArduPilot sends 0, 0 until its EKF has a position estimate: that is no position yet.
         handler.on(msg_global_position_int.class, (n, m) -> changed(n, s -> s.withPosition(m.lat == 0 && m.lon == 0 ? null
-                : Position.fromDegrees(m.lat * 1e-7, m.lon * 1e-7, m.alt * 1e-3), m.relative_alt * 1e-3, clock.nanoTime())));
+                : Position.fromDegrees(m.lat * 1e-7, m.lon * 1e-7, m.alt * 1e-3), m.relative_alt * 1e-3,
+                m.hdg == UNKNOWN_HEADING ? Double.NaN : m.hdg / 100.0, clock.nanoTime())));
         handler.on(msg_home_position.class, (n, m) -> changed(n, s -> s.withHome(
                 Position.fromDegrees(m.latitude * 1e-7, m.longitude * 1e-7, m.altitude * 1e-3))));
         handler.on(msg_extended_sys_state.class, (n, m) -> changed(n, s -> s.withLandedState(m.landed_state)));

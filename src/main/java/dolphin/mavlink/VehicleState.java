@@ -16,6 +16,7 @@ import java.util.List;
  * @param systemStatus the last SYS_STATUS; null before the first
  * @param position the last GLOBAL_POSITION_INT, height above mean sea level; null before the first
  * @param relativeAlt metres above home from the same message
+ * @param heading degrees from north (0..360) from the same message, NaN when the vehicle does not know it
  * @param home the vehicle's home from HOME_POSITION; null until reported
  * @param landedState MAV_LANDED_STATE from EXTENDED_SYS_STATE (0 = undefined)
  * @param missionSeq the current mission item (MISSION_CURRENT.seq), -1 before the first
@@ -28,7 +29,7 @@ import java.util.List;
  */
 public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, VehicleFamily family,
                            msg_sys_status systemStatus, long systemStatusNanos,
-                           Position position, double relativeAlt, long positionNanos, Position home,
+                           Position position, double relativeAlt, double heading, long positionNanos, Position home,
                            int landedState, int missionSeq, int missionTotal, int missionState,
                            List<String> statusTexts, int ekfFlags, boolean fenceBreached) {
 
@@ -36,7 +37,7 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
     private static final int ARMED_FLAG = 128;
 
     public static VehicleState initial(VehicleFamily family) {
-        return new VehicleState(null, 0, family, null, 0, null, 0, 0, null, 0, -1, -1, 0, List.of(), -1, false);
+        return new VehicleState(null, 0, family, null, 0, null, 0, Double.NaN, 0, null, 0, -1, -1, 0, List.of(), -1, false);
     }
 
     public boolean armed() {
@@ -58,43 +59,43 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
 
     public VehicleState withHeartbeat(msg_heartbeat hb, long nanos) {
         return new VehicleState(hb, nanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
+                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
     }
 
     public VehicleState withSystemStatus(msg_sys_status s, long nanos) {
         return new VehicleState(heartbeat, heartbeatNanos, family, s, nanos, position, relativeAlt,
-                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
+                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
     }
 
-    public VehicleState withPosition(Position p, double relAlt, long nanos) {
-        return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, p, relAlt,
+    public VehicleState withPosition(Position p, double relAlt, double hdg, long nanos) {
+        return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, p, relAlt, hdg,
                 nanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
     }
 
     public VehicleState withHome(Position h) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, h, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
+                heading, positionNanos, h, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
     }
 
     public VehicleState withLandedState(int landed) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, home, landed, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
+                heading, positionNanos, home, landed, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
     }
 
     public VehicleState withMissionCurrent(int seq, int total, int state) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, home, landedState, seq, total, state, statusTexts, ekfFlags, fenceBreached);
+                heading, positionNanos, home, landedState, seq, total, state, statusTexts, ekfFlags, fenceBreached);
     }
 
     public VehicleState withEkfFlags(int flags) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, flags, fenceBreached);
+                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, flags, fenceBreached);
     }
 
     /** From FENCE_STATUS.breach_status. */
     public VehicleState withFenceBreached(boolean breached) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, breached);
+                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, breached);
     }
 
     public VehicleState withStatusText(String line) {
@@ -104,6 +105,6 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
             lines.remove(0);
         }
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                positionNanos, home, landedState, missionSeq, missionTotal, missionState, List.copyOf(lines), ekfFlags, fenceBreached);
+                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, List.copyOf(lines), ekfFlags, fenceBreached);
     }
 }

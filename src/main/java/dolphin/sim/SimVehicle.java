@@ -628,8 +628,11 @@ public final class SimVehicle {
                     p.lon = MissionItem.degE7(position.longitudeDegrees());
                     p.alt = (int) Math.round(position.hae() * 1000);
                     p.relative_alt = (int) Math.round((position.hae() - home.hae()) * 1000);
+                    // centidegrees 0..35999, as ArduPilot sends its yaw
+                    p.hdg = (int) Math.floorMod(Math.round(Math.toDegrees(craft.heading()) * 100), 36000);
+                } else {
+                    p.hdg = 65535;
                 }
-                p.hdg = 65535;
                 yield Optional.of(p);
             }
             case msg_home_position.MAVLINK_MSG_ID_HOME_POSITION -> {

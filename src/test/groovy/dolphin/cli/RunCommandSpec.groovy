@@ -165,6 +165,34 @@ class RunCommandSpec extends Specification {
         script?.delete()
     }
 
+    def "--web serves the live view of the run and prints its address"() {
+        when:
+        def r = dolphin('run', EXAMPLE, '--sim', '2', '--speedup', '5', '--web', '0')
+
+        then:
+        r.code == 0
+        r.out =~ /web view: http:\/\/127\.0\.0\.1:\d+\//
+        r.out.contains("${EXAMPLE}: completed")
+    }
+
+    def "--web on a port in use: the run goes on without the view, and says why"() {
+        given:
+        def taken = new ServerSocket(0, 1, InetAddress.getByName('127.0.0.1'))
+
+        when:
+        def r = dolphin('run', EXAMPLE, '--sim', '2', '--speedup', '5', '--web', "${taken.localPort}")
+
+        then:
+        r.code == 0
+        r.err.contains("dolphin run: web view not started: --web 127.0.0.1:${taken.localPort}: port ${taken.localPort} is in use "
+                + 'on 127.0.0.1 (another program, or another dolphin run, listens there); the run goes on without it')
+        !r.out.contains('web view:')
+        r.out.contains("${EXAMPLE}: completed")
+
+        cleanup:
+        taken.close()
+    }
+
     def "bad command lines are usage errors: a message and exit 2"() {
         when:
         def r = dolphin(args as String[])
@@ -186,6 +214,10 @@ class RunCommandSpec extends Specification {
         ['run', EXAMPLE, '--sim', '600', '--link', 'udpin:127.0.0.1:0'] | '--sim 600: 600 vehicles from system id 1 need at least 3 links'
         ['run', EXAMPLE, '--status', 'fancy']                      | "Invalid value for option '--status'"
         ['run', EXAMPLE, '--forward', 'udpout:nowhere']            | "bad connection string 'udpout:nowhere': expected HOST:PORT"
+        ['run', EXAMPLE, '--web', 'eighty']                        | "'eighty': expected [HOST:]PORT, e.g. 8080 or 0.0.0.0:8080"
+        ['run', EXAMPLE, '--web', '127.0.0.1:99999']               | 'the port must be between 0 and 65535, got 99999'
+        ['run', EXAMPLE, '--web-tiles', 'https://t.example/{z}/{x}/{y}.png'] | '--web-tiles needs --web'
+        ['run', EXAMPLE, '--web', '0', '--web-tiles', 'https://t.example/tiles.png'] | 'expected a tile URL with {z}, {x} and {y}'
         ['sim', '--count', '0']                                    | '--count must be at least 1'
         ['sim', '--count', '300']                                  | '300 vehicles from system id 1 need at least 2 links'
         ['sim', '--link', 'udpin:0.0.0.0:14559']                   | '--link for sim must be udpout:HOST:PORT'

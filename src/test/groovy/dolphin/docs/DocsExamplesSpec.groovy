@@ -212,8 +212,9 @@ class DocsExamplesSpec extends Specification {
 
     /**
      * The arguments as they run here: files written (--out, --tlog) and read (--signing-key) in the
-     * document's working directory; the default port 14559 replaced by a free one; tcp links aimed at
-     * a closed port and serial links at a device that does not exist.
+     * document's working directory; the default port 14559 replaced by a free one, and the web view's
+     * port by 0 (a free one, on loopback); tcp links aimed at a closed port and serial links at a
+     * device that does not exist.
      */
     List<String> localise(Block b, List<String> args, int port) {
         List<String> result = []
@@ -221,6 +222,8 @@ class DocsExamplesSpec extends Specification {
             String before = i > 0 ? args[i - 1] : ''
             if (before in ['--out', '--tlog', '--signing-key']) {
                 result << workDir(b).resolve(a).toString()
+            } else if (before == '--web') {
+                result << '0'
             } else if (a.startsWith('tcp:')) {
                 int closed = new ServerSocket(0).withCloseable { it.localPort }
                 result << "tcp:127.0.0.1:${closed}".toString()

@@ -12,6 +12,8 @@ import dolphin.mavlink.MAVLinkNode;
 import dolphin.mavlink.MAVLinkPlatform;
 import dolphin.mavlink.codec.Frame;
 import dolphin.mavlink.link.Link;
+import dolphin.web.WebAddress;
+import dolphin.web.WebView;
 import java.lang.management.ManagementFactory;
 import java.lang.management.MemoryMXBean;
 import java.nio.file.Files;
@@ -37,7 +39,10 @@ import java.util.stream.Collectors;
  * the DO_SET_MODE (RTL) frame sent to that vehicle, both seen on the communications thread.
  * The simulator process, which produces the same traffic, is the reference measured in the same run.
  *
- * <pre>FleetBench OUT_DIR SCRIPT JAVA CLASSPATH SIZE...</pre>
+ * <p>With {@code --web}, each size runs twice: without the web view, then with it and a page open in
+ * a headless chromium (the same as a person watching), and the summary gives the ratios.
+ *
+ * <pre>FleetBench OUT_DIR SCRIPT JAVA CLASSPATH [--web] SIZE...</pre>
  */
 public final class FleetBench {
 
@@ -65,15 +70,21 @@ public final class FleetBench {
 
     public static void main(String[] args) throws Exception {
         if (args.length < 5) {
-            System.err.println("usage: FleetBench OUT_DIR SCRIPT JAVA CLASSPATH SIZE...");
+            System.err.println("usage: FleetBench OUT_DIR SCRIPT JAVA CLASSPATH [--web] SIZE...");
             System.exit(2);
         }
         Path out = Path.of(args[0]);
         Files.createDirectories(out);
         FleetBench bench = new FleetBench(out, Files.readString(Path.of(args[1])), args[2], args[3]);
+        boolean web = args[4].equals("--web");
         int failures = 0;
-        for (int i = 4; i < args.length; i++) {
-            failures += bench.run(Integer.parseInt(args[i]));
+        for (int i = web ? 5 : 4; i < args.length; i++) {
+            int n = Integer.parseInt(args[i]);
+            failures += bench.run(n, false);
+            if (web) {
+                failures += bench.run(n, true);
+                bench.compare(n);
+            }
         }
         bench.write();
         System.exit(failures == 0 ? 0 : 1);
@@ -107,7 +118,7 @@ public final class FleetBench {
         }
     }
 
-    int run(int n) throws Exception {
+    int run(int n, boolean web) throws Exception {
         int links = (n + PER_LINK - 1) / PER_LINK;
         MemoryMXBean memory = ManagementFactory.getMemoryMXBean();
         long heapBefore = usedHeap(memory);
@@ -125,15 +136,21 @@ public final class FleetBench {
         }
         Process sim = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
         int failures = 0;
+        WebView view = null;
+        Process browser = null;
         try {
             check(waitFor(Duration.ofSeconds(120), () -> comms.nodes().size() == n
                     && comms.nodes().stream().allMatch(v -> v.state().batteryPercent() >= 0 && v.state().position() != null)),
                     n + " vehicles discovered with telemetry");
             long heapVehicles = usedHeap(memory) - heapBefore;
 
+            Engine engine = new Engine(new MAVLinkPlatform(comms), clock);
+            if (web) {
+                view = WebView.start(new WebView.Config(WebAddress.parse("0"), null), comms, engine, clock);
+                browser = openPage(view);
+            }
             Cpu idle = Cpu.measure(sim, comms, () -> Thread.sleep(IDLE_WINDOW.toMillis()));
 
-            Engine engine = new Engine(new MAVLinkPlatform(comms), clock);
             engine.bind("fleetSize", n);
             var run = engine.run(script, "bench/fleet.dolphin");
             check(waitFor(Duration.ofSeconds(300), () -> comms.nodes().stream().allMatch(
@@ -149,13 +166,48 @@ public final class FleetBench {
                         + (early ? ", a cut came during the measuring window" : ""));
                 failures++;
             }
-            report(n, links, heapVehicles, heapFlying, idle, guarded, ms);
+            report(n, links, web, heapVehicles, heapFlying, idle, guarded, ms);
         } finally {
+            if (browser != null) {
+                browser.destroy();
+                browser.waitFor();
+            }
+            if (view != null) {
+                view.close();
+            }
             sim.destroy();
             sim.waitFor();
             comms.close();
         }
         return failures;
+    }
+
+    /** Debian's chromium, headless, on the page; returns once the page streams. */
+    private static Process openPage(WebView view) throws Exception {
+        Path profile = Files.createTempDirectory("fleet-bench-chromium");
+        Process browser = new ProcessBuilder("chromium", "--headless=new", "--no-sandbox", "--disable-gpu",
+                "--user-data-dir=" + profile, "--window-size=1440,900", view.address())
+                .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+        check(waitFor(Duration.ofSeconds(60), () -> view.viewers() > 0), "the page to open the stream");
+        return browser;
+    }
+
+    /** The with-web run against the run without it, for one size. */
+    void compare(int n) {
+        Map<String, Object> plain = results.get(results.size() - 2);
+        Map<String, Object> web = results.get(results.size() - 1);
+        double cpu = (double) web.get("runtimeCoresFlying") / (double) plain.get("runtimeCoresFlying");
+        double idle = (double) web.get("runtimeCoresStreaming") / (double) plain.get("runtimeCoresStreaming");
+        double p99 = (double) web.get("reactionP99Ms") / (double) plain.get("reactionP99Ms");
+        line(String.format(Locale.ROOT, "%5d vehicles, web view with a page open against none: runtime CPU x%.2f flying with guards, "
+                + "x%.2f streaming only; reaction p99 %.2f ms against %.2f ms (x%.2f)", n, cpu, idle,
+                (double) web.get("reactionP99Ms"), (double) plain.get("reactionP99Ms"), p99));
+        Map<String, Object> r = new LinkedHashMap<>();
+        r.put("vehicles", n);
+        r.put("webCpuRatioFlying", cpu);
+        r.put("webCpuRatioStreaming", idle);
+        r.put("webReactionP99Ratio", p99);
+        results.add(r);
     }
 
     /** CPU of this process (the runtime) and of the simulator process over a window. */
@@ -200,11 +252,12 @@ public final class FleetBench {
         }
     }
 
-    private void report(int n, int links, long heapVehicles, long heapFlying, Cpu idle, Cpu flying, List<Double> ms) {
+    private void report(int n, int links, boolean web, long heapVehicles, long heapFlying, Cpu idle, Cpu flying, List<Double> ms) {
         double p50 = percentile(ms, 50);
         double p99 = percentile(ms, 99);
         double max = ms.isEmpty() ? Double.NaN : ms.get(ms.size() - 1);
-        line(String.format(Locale.ROOT, "%5d vehicles, %d link(s): %,.0f frames/s in while flying with guards", n, links, flying.framesInPerSecond()));
+        line(String.format(Locale.ROOT, "%5d vehicles, %d link(s)%s: %,.0f frames/s in while flying with guards", n, links,
+                web ? ", web view with a page open" : "", flying.framesInPerSecond()));
         line(String.format(Locale.ROOT, "      runtime CPU: %.3f cores streaming only, %.3f cores flying with guards (%.3f ms/s per vehicle); "
                         + "simulator (reference, same traffic): %.3f and %.3f cores; runtime/simulator %.2f",
                 idle.runtimeCores(), flying.runtimeCores(), flying.runtimeCores() * 1000 / n, idle.simCores(), flying.simCores(),
@@ -218,6 +271,7 @@ public final class FleetBench {
         Map<String, Object> r = new LinkedHashMap<>();
         r.put("vehicles", n);
         r.put("links", links);
+        r.put("web", web);
         r.put("framesInPerSecond", flying.framesInPerSecond());
         r.put("runtimeCoresStreaming", idle.runtimeCores());
         r.put("runtimeCoresFlying", flying.runtimeCores());

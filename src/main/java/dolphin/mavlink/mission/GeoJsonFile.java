@@ -47,8 +47,13 @@ public final class GeoJsonFile {
         return write(name, MissionFile.of(items));
     }
 
-    /** The GeoJSON of a mission (if any) with its fence and rally points. */
+    /** The GeoJSON of a mission (if any) with its fence and rally points, indented for a file. */
     public static String write(String name, MissionFile file) {
+        return JsonOutput.prettyPrint(compact(name, file)) + "\n";
+    }
+
+    /** The same GeoJSON on one line, for a stream (the web view's). */
+    public static String compact(String name, MissionFile file) {
         List<MissionItem> items = file.mission();
         List<Object> features = new ArrayList<>();
         List<Object> path = new ArrayList<>();
@@ -86,7 +91,7 @@ public final class GeoJsonFile {
         collection.put("type", "FeatureCollection");
         collection.put("name", name);
         collection.put("features", features);
-        return JsonOutput.prettyPrint(JSON.toJson(collection)) + "\n";
+        return JSON.toJson(collection);
     }
 
     public static void write(Path file, String name, List<MissionItem> items) throws IOException {

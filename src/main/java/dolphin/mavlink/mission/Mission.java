@@ -95,6 +95,11 @@ public final class Mission extends PlatformTask {
         return home;
     }
 
+    @Override
+    public String kind() {
+        return "mission";
+    }
+
     /** The number of items, the home placeholder included: what MISSION_COUNT says. */
     public int missionPoints() {
         return 1 + droneCommands.stream().filter(c -> c instanceof MissionPoint).mapToInt(c -> ((MissionPoint) c).messageCount()).sum();

@@ -19,7 +19,7 @@ class ReadinessSpec extends Specification {
         hb.base_mode = (short) (m.armed ? 129 : 1)
         def s = VehicleState.initial(VehicleFamily.COPTER).withHeartbeat(hb, 0)
         if (m.position) {
-            s = s.withPosition(HOME, 0, 0)
+            s = s.withPosition(HOME, 0, Double.NaN, 0)
         }
         if (m.home) {
             s = s.withHome(HOME)

@@ -1,0 +1,140 @@
+package dolphin.web;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Supplier;
+
+/**
+ * Turns samples of the fleet and the program into {@link Frame}s, a few times a second, on the
+ * sampler thread. A frame keeps each vehicle's, mission's and the trees' JSON with the number of
+ * the frame that last changed it, so a viewer that has frame N is sent only what changed after N,
+ * however many frames it missed. Tracks (each vehicle's path, thinned as it grows) are sent whole
+ * only in a snapshot; a viewer extends them from the positions that follow.
+ */
+final class FleetFeed {
+
+    /** A piece of JSON and the frame that last changed it. */
+    record Stamped(String json, long frame) {
+    }
+
+    /** What the viewers are sent, as of one sample; immutable. */
+    record Frame(long number, double time, Map<String, Stamped> vehicles, Map<String, Stamped> missions, Stamped executes) {
+    }
+
+    private final Supplier<List<VehicleSample>> fleet;
+    private final TaskBoard board;
+    private final Map<String, Stamped> vehicles = new LinkedHashMap<>();
+    private final Map<String, Stamped> missions = new LinkedHashMap<>();
+    private final Map<String, Object> missionKeys = new HashMap<>();
+    private final Map<String, Track> tracks = new LinkedHashMap<>();
+    private long number;
+    private long boardVersion = -1;
+    private Stamped executes = new Stamped("[]", 0);
+    private volatile Frame latest = new Frame(0, 0, Map.of(), Map.of(), executes);
+
+    FleetFeed(Supplier<List<VehicleSample>> fleet, TaskBoard board) {
+        this.fleet = fleet;
+        this.board = board;
+    }
+
+    /** Samples the fleet and the program into the next frame (sampler thread). */
+    Frame sample(double time) {
+        List<VehicleSample> samples = fleet.get();
+        synchronized (this) {
+            long n = ++number;
+            for (VehicleSample s : samples) {
+                VehicleView v = s.view();
+                String json = Json.write(v.json());
+                Stamped before = vehicles.get(v.id());
+                if (before == null || !before.json().equals(json)) {
+                    vehicles.put(v.id(), new Stamped(json, n));
+                }
+                if (v.position() != null) {
+                    tracks.computeIfAbsent(v.id(), id -> new Track()).add(v.position());
+                }
+                if (s.missionKey() != null && s.missionKey() != missionKeys.get(v.id())) {
+                    missionKeys.put(v.id(), s.missionKey());
+                    String drawn = s.missionGeoJson().get();
+                    if (drawn != null) {
+                        missions.put(v.id(), new Stamped(drawn, n));
+                    }
+                }
+            }
+            long version = board.version();
+            if (version != boardVersion) {
+                boardVersion = version;
+                executes = new Stamped(Json.write(board.json()), n);
+            }
+            latest = new Frame(n, time, Map.copyOf(vehicles), Map.copyOf(missions), executes);
+            return latest;
+        }
+    }
+
+    Frame latest() {
+        return latest;
+    }
+
+    /** Every vehicle's track as JSON: {"1": [[lat, lon], ...], ...}. */
+    synchronized String tracksJson() {
+        Map<String, Object> all = new LinkedHashMap<>();
+        tracks.forEach((id, t) -> all.put(id, t.points()));
+        return Json.write(all);
+    }
+
+    /**
+     * The JSON of what changed in {@code frame} after frame {@code after} (0: everything), with the
+     * log entries {@code log} and {@code extra} members (raw JSON, each starting with a comma).
+     */
+    static String update(Frame frame, long after, EventLog.Since log, String extra) {
+        StringBuilder b = new StringBuilder(256);
+        b.append("{\"frame\":").append(frame.number()).append(",\"time\":").append(Math.round(frame.time() * 10) / 10.0);
+        b.append(",\"vehicles\":[");
+        appendChanged(b, frame.vehicles(), after, false);
+        b.append("],\"missions\":{");
+        appendChanged(b, frame.missions(), after, true);
+        b.append('}');
+        if (frame.executes().frame() > after || after == 0) {
+            b.append(",\"executes\":").append(frame.executes().json());
+        }
+        b.append(",\"log\":").append(Json.write(logJson(log.entries())));
+        if (log.lost() > 0) {
+            b.append(",\"logLost\":").append(log.lost());
+        }
+        b.append(extra);
+        return b.append('}').toString();
+    }
+
+    private static void appendChanged(StringBuilder b, Map<String, Stamped> items, long after, boolean keyed) {
+        boolean first = true;
+        for (Map.Entry<String, Stamped> e : items.entrySet()) {
+            if (e.getValue().frame() <= after) {
+                continue;
+            }
+            if (!first) {
+                b.append(',');
+            }
+            first = false;
+            if (keyed) {
+                b.append(Json.write(e.getKey())).append(':');
+            }
+            b.append(e.getValue().json());
+        }
+    }
+
+    private static List<Object> logJson(List<EventLog.Entry> entries) {
+        List<Object> list = new ArrayList<>(entries.size());
+        for (EventLog.Entry e : entries) {
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("seq", e.seq());
+            m.put("time", Math.round(e.time() * 10) / 10.0);
+            m.put("kind", e.kind());
+            m.put("vehicle", e.vehicle());
+            m.put("text", e.text());
+            list.add(m);
+        }
+        return list;
+    }
+}

@@ -1,0 +1,59 @@
+package dolphin.web;
+
+import dolphin.core.Node;
+import dolphin.core.Task;
+import dolphin.mavlink.MAVLinkNode;
+import dolphin.mavlink.mission.GeoJsonFile;
+import dolphin.mavlink.mission.Mission;
+import dolphin.mavlink.mission.MissionExecutor;
+import dolphin.mavlink.mission.MissionFile;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.function.Supplier;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/** Samples the MAVLink platform's vehicles: each node's snapshot, whether the script holds it, its mission. */
+final class MavlinkFleet implements Supplier<List<VehicleSample>> {
+
+    private static final Logger LOG = LoggerFactory.getLogger(MavlinkFleet.class);
+
+    private final Supplier<List<MAVLinkNode>> nodes;
+    private final Supplier<? extends Iterable<Node>> picked;
+    private final TaskBoard board;
+
+    MavlinkFleet(Supplier<List<MAVLinkNode>> nodes, Supplier<? extends Iterable<Node>> picked, TaskBoard board) {
+        this.nodes = nodes;
+        this.picked = picked;
+        this.board = board;
+    }
+
+    @Override
+    public List<VehicleSample> get() {
+        Set<String> bound = new HashSet<>();
+        picked.get().forEach(n -> bound.add(n.getId()));
+        List<VehicleSample> samples = new ArrayList<>();
+        for (MAVLinkNode n : nodes.get()) {
+            VehicleView view = VehicleView.of(n.getId(), n.getType(), n.isConnected(), bound.contains(n.getId()), n.state(),
+                    board.taskOf(n.getId()));
+            MissionExecutor executor = n.getExecutor();
+            samples.add(new VehicleSample(view, executor, () -> draw(executor.getTask(), n)));
+        }
+        return samples;
+    }
+
+    /** The mission, its fence and rally points as GeoJSON (docs/embedding.md); null if it cannot be drawn. */
+    private static String draw(Task task, MAVLinkNode node) {
+        if (!(task instanceof Mission m)) {
+            return null;
+        }
+        try {
+            return GeoJsonFile.compact(m.getId(), MissionFile.of(m.items(node.getHome())).withFence(m.fence()).withRally(m.rally()));
+        } catch (RuntimeException e) {
+            LOG.debug("mission {} of vehicle {} not drawn: {}", m.getId(), node.getId(), e.getMessage());
+            return null;
+        }
+    }
+}

@@ -1,0 +1,123 @@
+package dolphin.web
+
+import com.MAVLink.enums.MISSION_STATE
+import com.MAVLink.minimal.msg_heartbeat
+import dolphin.core.Position
+import dolphin.core.TaskTree
+import dolphin.mavlink.VehicleFamily
+import dolphin.mavlink.VehicleState
+import groovy.json.JsonSlurper
+import spock.lang.Specification
+
+/** Frames from samples, and what a viewer that has frame N is sent: no sockets, no threads, no clock. */
+class FleetFeedSpec extends Specification {
+
+    static final Position HOME = Position.fromDegrees(40.444233, -7.375234, 820)
+
+    TaskBoard board = new TaskBoard(0)
+    List<VehicleSample> samples = []
+    int drawn
+    FleetFeed feed = new FleetFeed({ samples } as java.util.function.Supplier, board)
+
+    static VehicleState state(Position at, boolean armed = true, int item = 2) {
+        def hb = new msg_heartbeat(base_mode: (short) (armed ? 128 : 0), custom_mode: 3)
+        VehicleState.initial(VehicleFamily.COPTER).withHeartbeat(hb, 0).withPosition(at, at.hae() - 820, 90.0, 0)
+                .withHome(HOME).withMissionCurrent(item, 5, MISSION_STATE.MISSION_STATE_ACTIVE)
+    }
+
+    VehicleSample sample(String id, Position at, Object mission = null) {
+        new VehicleSample(VehicleView.of(id, 'UAV', true, id == '1', state(at), board.taskOf(id)), mission,
+                { drawn++; '{"type":"FeatureCollection","name":"m","features":[]}' })
+    }
+
+    static Map parse(String json) {
+        new JsonSlurper().parseText(json) as Map
+    }
+
+    def "a vehicle's view: position, heading, mode, item, picked"() {
+        given:
+        samples = [sample('1', HOME.displace(10, 0, -50))]
+
+        when:
+        def frame = feed.sample(1.0)
+        def v = parse(frame.vehicles()['1'].json())
+
+        then:
+        v.id == '1' && v.type == 'UAV' && v.family == 'ArduCopter'
+        Math.abs((v.position[0] as double) - HOME.displace(10, 0, -50).latitudeDegrees()) < 1e-7
+        v.position[2] == 870.0
+        v.relativeAlt == 50.0
+        v.heading == 90.0
+        v.mode == 'AUTO' && v.armed && v.picked
+        v.item == 2 && v.total == 5
+        v.home == [40.444233, -7.375234, 820.0]
+    }
+
+    def "a viewer that has frame N is sent only the vehicles that changed after N, however many frames it missed"() {
+        given:
+        samples = [sample('1', HOME), sample('2', HOME)]
+        def first = feed.sample(1.0)
+
+        when: 'vehicle 2 moves in frame 2, nothing in frame 3'
+        samples = [sample('1', HOME), sample('2', HOME.displace(5, 0, 0))]
+        feed.sample(1.25)
+        def third = feed.sample(1.5)
+
+        then:
+        parse(FleetFeed.update(third, first.number(), new EventLog(1).since(0), '')).vehicles*.id == ['2']
+        parse(FleetFeed.update(third, third.number() - 1, new EventLog(1).since(0), '')).vehicles.isEmpty()
+        parse(FleetFeed.update(third, 0, new EventLog(1).since(0), '')).vehicles*.id as Set == ['1', '2'] as Set
+        third.number() == first.number() + 2
+    }
+
+    def "a mission is drawn once per executor, and sent when new"() {
+        given:
+        def executor = new Object()
+        samples = [sample('1', HOME, executor)]
+        def first = feed.sample(1)
+
+        when:
+        def second = feed.sample(2)
+
+        then:
+        drawn == 1
+        parse(FleetFeed.update(first, 0, new EventLog(1).since(0), '')).missions.keySet() == ['1'] as Set
+        parse(FleetFeed.update(second, first.number(), new EventLog(1).since(0), '')).missions.isEmpty()
+
+        when: 'a new mission on the vehicle'
+        samples = [sample('1', HOME, new Object())]
+        def third = feed.sample(3)
+
+        then:
+        drawn == 2
+        parse(FleetFeed.update(third, second.number(), new EventLog(1).since(0), '')).missions.keySet() == ['1'] as Set
+    }
+
+    def "the trees are sent when they changed, with the log entries and how many were lost"() {
+        given:
+        def first = feed.sample(1)
+        board.executeStarted(new TaskTree(7, 'idle', 'idle 1.0 s', [], []))
+        def second = feed.sample(2)
+        def log = new EventLog(2)
+        (1..3).each { log.add(it, 'message', null, "m${it}") }
+
+        expect:
+        !parse(FleetFeed.update(second, second.number(), log.since(3), '')).containsKey('executes')
+        def update = parse(FleetFeed.update(second, first.number(), log.since(0), ',"extra":1'))
+        update.executes*.label == ['idle 1.0 s']
+        update.log*.text == ['m2', 'm3']
+        update.logLost == 1
+        update.extra == 1
+    }
+
+    def "tracks grow from the positions sampled"() {
+        given:
+        (0..<10).each { i ->
+            samples = [sample('1', HOME.displace(i * 3, 0, 0))]
+            feed.sample(i)
+        }
+
+        expect:
+        (parse(feed.tracksJson())['1'] as List).size() == 10
+    }
+}

@@ -1,0 +1,137 @@
+package dolphin.web
+
+import dolphin.core.SystemClock
+import dolphin.dsl.Engine
+import dolphin.dsl.ScriptResult
+import dolphin.mavlink.MAVLinkCommunications
+import dolphin.mavlink.MAVLinkConfig
+import dolphin.mavlink.MAVLinkPlatform
+import dolphin.sim.SimFleet
+import dolphin.sim.VehicleKind
+import java.nio.file.Files
+import java.nio.file.Path
+import java.time.Duration
+import org.openqa.selenium.By
+import org.openqa.selenium.OutputType
+import org.openqa.selenium.WebDriver
+import org.openqa.selenium.chrome.ChromeDriver
+import org.openqa.selenium.support.ui.WebDriverWait
+import spock.lang.Requires
+import spock.lang.Specification
+import spock.lang.Timeout
+
+/**
+ * The page in a real browser (issue 13's acceptance): Debian's chromium, driven by Selenium, watches
+ * the report's two-vehicle scenario (dsl-examples/two-drones-survey.dolphin) on the simulated fleet.
+ * The browser is on the page before the script starts, so every phase is seen as it happens. It
+ * saves target/web-view-survey.png (the surveys flying) and target/web-view.png (the end).
+ */
+@Requires({ Chromium.available() })
+@Timeout(180)
+class WebViewBrowserSpec extends Specification {
+
+    static final double SPEEDUP = 20
+
+    SystemClock clock = new SystemClock(SPEEDUP)
+    MAVLinkCommunications comms
+    SimFleet fleet
+    Engine engine
+    WebView view
+    ChromeDriver browser
+
+    def setup() {
+        comms = new MAVLinkCommunications(MAVLinkConfig.of('udpin:127.0.0.1:0'), clock)
+        comms.start()
+        fleet = new SimFleet(SimFleet.Config.of(2, VehicleKind.COPTER,
+                new InetSocketAddress('127.0.0.1', comms.links()[0].localPort())), clock)
+        fleet.start()
+        engine = new Engine(new MAVLinkPlatform(comms), clock)
+        view = WebView.start(new WebView.Config(WebAddress.parse('0'), null), comms, engine, SystemClock.REAL)
+        browser = Chromium.start()
+    }
+
+    def cleanup() {
+        browser?.quit()
+        engine?.close()
+        view?.close()
+        fleet?.close()
+        comms?.close()
+    }
+
+    def "the page shows both vehicles moving, the surveys running, stopped at the battery cut, the returns done, and the cut in the log"() {
+        given: 'the page open and live before the script starts'
+        browser.get(view.address())
+        waitUntil(10) { $('#connection[data-state="live"]') }
+
+        when:
+        def run = engine.run(Path.of('dsl-examples/two-drones-survey.dolphin'))
+
+        then: 'both vehicles appear in the table and on the map'
+        waitUntil(30) { positions().keySet() == ['1', '2'] as Set }
+        waitUntil(10) { browser.executeScript('return document.querySelectorAll("path.dolphin-vehicle").length') == 2 }
+
+        and: 'the surveys run, each on its vehicle'
+        waitUntil(30) { node('Survey Area 1', 'running') && node('Survey Area 2', 'running') }
+        node('Survey Area 1', 'running').contains('on 1')
+
+        and: 'both vehicles move'
+        def first = positions()
+        waitUntil(30) {
+            def now = positions()
+            ['1', '2'].every { id -> Math.abs(now[id][0] - first[id][0]) + Math.abs(now[id][1] - first[id][1]) > 2e-5 }
+        }
+
+        screenshot('web-view-survey.png')
+
+        and: 'the surveys are stopped at the battery cut, then the return missions are done'
+        waitUntil(60) { node('Survey Area 1', 'stopped') && node('Survey Area 2', 'stopped') }
+        waitUntil(60) { node('Return to base 1', 'done') && node('Return to base 2', 'done') }
+
+        and: 'the log shows the cut'
+        waitUntil(10) { logText().contains('vehicle { 1 } cut short at battery') && logText().contains('vehicle { 2 } cut short at battery') }
+        logText().contains('task Survey Area 1 stopped')
+
+        and: 'the script completes'
+        run.await(Duration.ofSeconds(60)).outcome() == ScriptResult.Outcome.COMPLETED
+        waitUntil(10) { logText().contains('two-drones-survey.dolphin: completed') }
+
+        cleanup:
+        screenshot('web-view.png')
+    }
+
+    /** Saves what the browser shows in target/, for a person to look at. */
+    private void screenshot(String name) {
+        if (browser != null) {
+            Path shot = Path.of('target', name)
+            Files.createDirectories(shot.parent)
+            Files.write(shot, browser.getScreenshotAs(OutputType.BYTES))
+        }
+    }
+
+    // The page redraws its table and tree every frame: each read is one script, never a stale element.
+
+    private Map<String, List<Double>> positions() {
+        List rows = browser.executeScript('''return [...document.querySelectorAll('#vehicles tbody tr')]
+                .filter(r => r.dataset.lat !== 'null').map(r => [r.dataset.vehicle, +r.dataset.lat, +r.dataset.lon])''') as List
+        rows.collectEntries { [it[0], [it[1] as double, it[2] as double]] }
+    }
+
+    /** The text of the task tree's node with this label in this state, or null. */
+    private String node(String label, String state) {
+        browser.executeScript('return [...document.querySelectorAll("li.node")].filter(n => n.dataset.label === arguments[0] '
+                + '&& n.dataset.state === arguments[1]).map(n => n.querySelector(".row").innerText)[0] || null', label, state)
+    }
+
+    private String logText() {
+        browser.executeScript('return document.getElementById("log").innerText')
+    }
+
+    private def $(String css) {
+        browser.executeScript('return document.querySelector(arguments[0]) !== null', css) ?: null
+    }
+
+    /** Polls the page every 100 ms until the condition is truthy, failing after {@code seconds}. */
+    private void waitUntil(int seconds, Closure<?> condition) {
+        new WebDriverWait(browser, Duration.ofSeconds(seconds), Duration.ofMillis(100)).until { WebDriver d -> condition() ?: null }
+    }
+}
