@@ -26,6 +26,7 @@ final class FleetFeed {
 
     private final Supplier<List<VehicleSample>> fleet;
     private final TaskBoard board;
+    private final Map<String, VehicleView> views = new HashMap<>();
     private final Map<String, Stamped> vehicles = new LinkedHashMap<>();
     private final Map<String, Stamped> missions = new LinkedHashMap<>();
     private final Map<String, Object> missionKeys = new HashMap<>();
@@ -47,10 +48,8 @@ final class FleetFeed {
             long n = ++number;
             for (VehicleSample s : samples) {
                 VehicleView v = s.view();
-                String json = Json.write(v.json());
-                Stamped before = vehicles.get(v.id());
-                if (before == null || !before.json().equals(json)) {
-                    vehicles.put(v.id(), new Stamped(json, n));
+                if (!v.equals(views.put(v.id(), v))) {
+                    vehicles.put(v.id(), new Stamped(v.json(), n));
                 }
                 if (v.position() != null) {
                     tracks.computeIfAbsent(v.id(), id -> new Track()).add(v.position());

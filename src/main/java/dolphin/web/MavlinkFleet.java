@@ -10,6 +10,7 @@ import dolphin.mavlink.mission.MissionFile;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.function.Supplier;
 import org.slf4j.Logger;
@@ -34,10 +35,11 @@ final class MavlinkFleet implements Supplier<List<VehicleSample>> {
     public List<VehicleSample> get() {
         Set<String> bound = new HashSet<>();
         picked.get().forEach(n -> bound.add(n.getId()));
+        Map<String, String> tasks = board.vehicleTasks();
         List<VehicleSample> samples = new ArrayList<>();
         for (MAVLinkNode n : nodes.get()) {
             VehicleView view = VehicleView.of(n.getId(), n.getType(), n.isConnected(), bound.contains(n.getId()), n.state(),
-                    board.taskOf(n.getId()));
+                    tasks.getOrDefault(n.getId(), ""));
             MissionExecutor executor = n.getExecutor();
             samples.add(new VehicleSample(view, executor, () -> draw(executor.getTask(), n)));
         }

@@ -67,9 +67,9 @@ final class TaskBoard {
         return version;
     }
 
-    /** The last platform task on a vehicle and its state ("Survey Area 1 running"), or "". */
-    synchronized String taskOf(String vehicle) {
-        return vehicleTasks.getOrDefault(vehicle, "");
+    /** The last platform task on each vehicle and its state ("Survey Area 1 running"), by vehicle id. */
+    synchronized Map<String, String> vehicleTasks() {
+        return Map.copyOf(vehicleTasks);
     }
 
     /** The executes as JSON-ready maps, oldest first. */

@@ -8,6 +8,7 @@ const TRACK_MAX_POINTS = 5000;
 const TABLE_ROWS = 100;       // rows of the vehicle table; the rest are counted
 const LABELS_UP_TO = 50;      // vehicles with a permanent label on the map
 const LOG_LINES = 500;
+const SVG_UP_TO = 200;        // beyond, vehicles and tracks are drawn on one canvas: cheaper for a big fleet
 
 const map = L.map('map', { zoomControl: true, attributionControl: true }).setView([0, 0], 2);
 L.control.scale({ imperial: false }).addTo(map);
@@ -16,6 +17,8 @@ let vehicles = new Map();   // id -> { data, color, marker, arrow, track, points
 let missions = new Map();   // id -> { layer, items: Map(seq -> layer), current }
 let tileLayer = null;
 let userMoved = false;     // the map follows the fleet and its missions until the user pans or zooms
+let fitted = false;
+const canvas = L.canvas({ padding: 0.5 });
 let lastLogSeq = 0;
 let ended = false;
 
@@ -41,6 +44,7 @@ function distanceMetres(a, b) {
 }
 
 function reset() {
+  fitted = false;
   for (const v of vehicles.values()) [v.marker, v.arrow, v.track, v.home].forEach(l => l && l.remove());
   for (const m of missions.values()) m.layer.remove();
   vehicles = new Map();
@@ -49,12 +53,17 @@ function reset() {
   document.getElementById('log').innerHTML = '';
 }
 
+/** The renderer for a new vehicle's layers: SVG (one element each) for a small fleet, else the shared canvas. */
+function renderer() {
+  return vehicles.size > SVG_UP_TO ? canvas : undefined;
+}
+
 function vehicleEntry(id) {
   let v = vehicles.get(id);
   if (!v) {
     const color = colorOf(id);
     v = { data: null, color, points: [], marker: null, arrow: null, home: null,
-          track: L.polyline([], { color, weight: 2, opacity: 0.6, interactive: false }).addTo(map) };
+          track: L.polyline([], { color, weight: 2, opacity: 0.6, interactive: false, renderer: renderer() }).addTo(map) };
     vehicles.set(id, v);
   }
   return v;
@@ -67,19 +76,29 @@ function updateVehicle(d) {
   if (d.position) {
     const at = [d.position[0], d.position[1]];
     const style = { radius: 7, color: lost ? '#777' : '#1d2731', weight: 1.5, fillColor: lost ? '#bbb' : v.color,
-                    fillOpacity: d.picked ? 0.95 : 0.35, className: 'dolphin-vehicle' };
+                    fillOpacity: d.picked ? 0.95 : 0.35 };
     if (!v.marker) {
-      v.marker = L.circleMarker(at, style).addTo(map);
-      v.arrow = L.polyline([at, at], { color: '#1d2731', weight: 2, interactive: false }).addTo(map);
+      v.marker = L.circleMarker(at, { ...style, className: 'dolphin-vehicle', renderer: renderer() }).addTo(map)
+        .bindPopup(() => popupText(v.data));
+      v.arrow = L.polyline([at, at], { color: '#1d2731', weight: 2, interactive: false, renderer: renderer() }).addTo(map);
       if (vehicles.size <= LABELS_UP_TO) {
         v.marker.bindTooltip('', { permanent: true, direction: 'right', className: 'vehicle-label', offset: [8, 0] });
       }
+      v.label = null;
+      v.style = '';
     } else {
-      v.marker.setLatLng(at).setStyle(style);
+      v.marker.setLatLng(at);
     }
-    v.marker.getElement && v.marker.getElement() && v.marker.getElement().setAttribute('data-vehicle', d.id);
-    if (v.marker.getTooltip()) v.marker.setTooltipContent(d.id + (lost ? ' LOST' : ''));
-    v.marker.bindPopup(popupText(d));
+    const styleKey = JSON.stringify(style);
+    if (v.style !== styleKey) {
+      v.marker.setStyle(style);
+      v.style = styleKey;
+    }
+    const label = d.id + (lost ? ' LOST' : '');
+    if (v.marker.getTooltip() && v.label !== label) {
+      v.marker.setTooltipContent(label);
+      v.label = label;
+    }
     drawArrow(v);
     const last = v.points[v.points.length - 1];
     if (!last || distanceMetres(last, at) >= TRACK_STEP_METRES) {
@@ -125,6 +144,7 @@ function updateMission(id, geojson) {
   const color = colorOf(id);
   const items = new Map();
   const layer = L.geoJSON(geojson, {
+    renderer: renderer(),
     style: f => f.properties.fence ? FENCE_STYLE[f.properties.fence] : { color, weight: 2, dashArray: '6 4', opacity: 0.8 },
     pointToLayer: (f, at) => {
       const p = f.properties;
@@ -136,7 +156,7 @@ function updateMission(id, geojson) {
       return m;
     }
   }).addTo(map);
-  missions.set(id, { layer, items, current: null });
+  missions.set(id, { layer, items, current: null, bounds: layer.getBounds() });
   const v = vehicles.get(id);
   if (v && v.data) highlightItem(id, v.data.item);
 }
@@ -230,15 +250,16 @@ function addLogLine(ol, e) {
   ol.appendChild(li);
 }
 
+/** Frames the fleet and its missions once they appear, and again only when they leave the view. */
 function follow() {
   if (userMoved) return;
   const bounds = L.latLngBounds([]);
-  vehicles.forEach(v => {
-    if (v.data && v.data.position) bounds.extend([v.data.position[0], v.data.position[1]]);
-    if (v.points.length) bounds.extend(v.track.getBounds());
-  });
-  missions.forEach(m => bounds.extend(m.layer.getBounds()));
-  if (bounds.isValid()) map.fitBounds(bounds.pad(0.1), { maxZoom: 17, animate: false });
+  vehicles.forEach(v => { if (v.data && v.data.position) bounds.extend([v.data.position[0], v.data.position[1]]); });
+  missions.forEach(m => { if (m.bounds.isValid()) bounds.extend(m.bounds); });
+  if (bounds.isValid() && (!fitted || !map.getBounds().contains(bounds))) {
+    map.fitBounds(bounds.pad(0.1), { maxZoom: 17, animate: false });
+    fitted = true;
+  }
 }
 ['mousedown', 'wheel', 'touchstart', 'keydown'].forEach(e => map.getContainer().addEventListener(e, () => { userMoved = true; }));
 

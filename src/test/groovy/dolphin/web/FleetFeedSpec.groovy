@@ -26,7 +26,7 @@ class FleetFeedSpec extends Specification {
     }
 
     VehicleSample sample(String id, Position at, Object mission = null) {
-        new VehicleSample(VehicleView.of(id, 'UAV', true, id == '1', state(at), board.taskOf(id)), mission,
+        new VehicleSample(VehicleView.of(id, 'UAV', true, id == '1', state(at), board.vehicleTasks().getOrDefault(id, '')), mission,
                 { drawn++; '{"type":"FeatureCollection","name":"m","features":[]}' })
     }
 

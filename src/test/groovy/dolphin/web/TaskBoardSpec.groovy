@@ -59,14 +59,14 @@ class TaskBoardSpec extends Specification {
         then:
         node(4).state == 'stopped' && node(4).since == 30.0
         node(5).state == 'running'
-        board.taskOf('1') == 'Return to base 1 running'
+        board.vehicleTasks()['1'] == 'Return to base 1 running'
 
         when:
         board.taskEvent(event(TaskEvent.Kind.COMPLETED, home, 5, 150, CompletionState.DONE))
 
         then:
         node(5).state == 'done'
-        board.taskOf('1') == 'Return to base 1 done'
+        board.vehicleTasks()['1'] == 'Return to base 1 done'
     }
 
     def "an error carries its message; nodes that never ran are skipped when the execute ends"() {

@@ -30,6 +30,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.TreeMap;
 import java.util.function.BooleanSupplier;
 import java.util.stream.Collectors;
+import java.util.stream.Stream;
 
 /**
  * Fleet scale: one `dolphin sim` process with N vehicles streaming at 4 Hz over N/250 links, and
@@ -156,7 +157,9 @@ public final class FleetBench {
             check(waitFor(Duration.ofSeconds(300), () -> comms.nodes().stream().allMatch(
                     v -> v.isArmed() && v.getModeName().equals("AUTO") && v.state().relativeAlt() > 5)),
                     "every vehicle flying its mission");
+            long browserBefore = browserCpu(browser);
             Cpu guarded = Cpu.measure(sim, comms, () -> Thread.sleep(GUARDED_WINDOW.toMillis()));
+            double browserCores = browser == null ? Double.NaN : (browserCpu(browser) - browserBefore) / 1e9 / guarded.seconds();
             boolean early = !reactions.crossed.isEmpty();
             ScriptResult result = run.await();
             long heapFlying = usedHeap(memory) - heapBefore;
@@ -166,7 +169,7 @@ public final class FleetBench {
                         + (early ? ", a cut came during the measuring window" : ""));
                 failures++;
             }
-            report(n, links, web, heapVehicles, heapFlying, idle, guarded, ms);
+            report(n, links, web, heapVehicles, heapFlying, idle, guarded, browserCores, ms);
         } finally {
             if (browser != null) {
                 browser.destroy();
@@ -192,6 +195,15 @@ public final class FleetBench {
         return browser;
     }
 
+    /** CPU of the browser and every process it started (renderer, GPU...), in nanoseconds. */
+    private static long browserCpu(Process browser) {
+        if (browser == null) {
+            return 0;
+        }
+        return Stream.concat(Stream.of(browser.toHandle()), browser.toHandle().descendants())
+                .mapToLong(h -> h.info().totalCpuDuration().map(Duration::toNanos).orElse(0L)).sum();
+    }
+
     /** The with-web run against the run without it, for one size. */
     void compare(int n) {
         Map<String, Object> plain = results.get(results.size() - 2);
@@ -211,7 +223,8 @@ public final class FleetBench {
     }
 
     /** CPU of this process (the runtime) and of the simulator process over a window. */
-    record Cpu(double seconds, double runtimeCores, double simCores, double framesInPerSecond, Map<String, Double> threadCores) {
+    record Cpu(double seconds, double runtimeCores, double simCores, double framesInPerSecond, Map<String, Double> threadCores,
+               double gcCores, double jitCores) {
 
         interface Window {
             void run() throws Exception;
@@ -224,6 +237,8 @@ public final class FleetBench {
             long simCpu = simCpu(sim);
             long frames = comms.framesIn();
             Map<Long, Long> threads = threadCpu();
+            long gc = gcMillis();
+            long jit = ManagementFactory.getCompilationMXBean().getTotalCompilationTime();
             window.run();
             double seconds = (System.nanoTime() - wall) / 1e9;
             Map<String, Double> byThread = new TreeMap<>();
@@ -235,7 +250,13 @@ public final class FleetBench {
             });
             byThread.values().removeIf(c -> c < 0.005);
             return new Cpu(seconds, (os.getProcessCpuTime() - cpu) / 1e9 / seconds, (simCpu(sim) - simCpu) / 1e9 / seconds,
-                    (comms.framesIn() - frames) / seconds, byThread);
+                    (comms.framesIn() - frames) / seconds, byThread, (gcMillis() - gc) / 1e3 / seconds,
+                    (ManagementFactory.getCompilationMXBean().getTotalCompilationTime() - jit) / 1e3 / seconds);
+        }
+
+        /** Time the collectors took (their threads are not Java threads, so not in threadCores). */
+        private static long gcMillis() {
+            return ManagementFactory.getGarbageCollectorMXBeans().stream().mapToLong(b -> Math.max(0, b.getCollectionTime())).sum();
         }
 
         private static Map<Long, Long> threadCpu() {
@@ -252,7 +273,8 @@ public final class FleetBench {
         }
     }
 
-    private void report(int n, int links, boolean web, long heapVehicles, long heapFlying, Cpu idle, Cpu flying, List<Double> ms) {
+    private void report(int n, int links, boolean web, long heapVehicles, long heapFlying, Cpu idle, Cpu flying, double browserCores,
+                        List<Double> ms) {
         double p50 = percentile(ms, 50);
         double p99 = percentile(ms, 99);
         double max = ms.isEmpty() ? Double.NaN : ms.get(ms.size() - 1);
@@ -262,8 +284,13 @@ public final class FleetBench {
                         + "simulator (reference, same traffic): %.3f and %.3f cores; runtime/simulator %.2f",
                 idle.runtimeCores(), flying.runtimeCores(), flying.runtimeCores() * 1000 / n, idle.simCores(), flying.simCores(),
                 flying.runtimeCores() / flying.simCores()));
-        line(String.format(Locale.ROOT, "      runtime threads flying with guards (cores): %s", flying.threadCores().entrySet().stream()
-                .map(e -> String.format(Locale.ROOT, "%s %.3f", e.getKey(), e.getValue())).collect(Collectors.joining(", "))));
+        line(String.format(Locale.ROOT, "      runtime threads flying with guards (cores): %s; garbage collection %.3f, JIT compilation %.3f",
+                flying.threadCores().entrySet().stream()
+                .map(e -> String.format(Locale.ROOT, "%s %.3f", e.getKey(), e.getValue())).collect(Collectors.joining(", ")),
+                flying.gcCores(), flying.jitCores()));
+        if (web) {
+            line(String.format(Locale.ROOT, "      browser (chromium and its processes, headless) flying with guards: %.3f cores", browserCores));
+        }
         line(String.format(Locale.ROOT, "      heap: %.1f KiB per vehicle connected, %.1f KiB per vehicle after the flights",
                 heapVehicles / 1024.0 / n, heapFlying / 1024.0 / n));
         line(String.format(Locale.ROOT, "      reaction (SYS_STATUS < %d %% -> DO_SET_MODE RTL), %d cuts: p50 %.2f ms, p99 %.2f ms, max %.2f ms",
@@ -278,6 +305,11 @@ public final class FleetBench {
         r.put("simCoresStreaming", idle.simCores());
         r.put("simCoresFlying", flying.simCores());
         r.put("runtimeThreadCoresFlying", flying.threadCores());
+        r.put("gcCoresFlying", flying.gcCores());
+        if (web) {
+            r.put("browserCoresFlying", browserCores);
+        }
+        r.put("jitCoresFlying", flying.jitCores());
         r.put("heapBytesPerVehicle", heapVehicles / (double) n);
         r.put("heapBytesPerVehicleAfterFlights", heapFlying / (double) n);
         r.put("reactionMs", ms);
