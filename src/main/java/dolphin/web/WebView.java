@@ -49,6 +49,7 @@ public final class WebView implements EngineListener, AutoCloseable {
     public record Config(WebAddress address, String tiles) {
     }
 
+    private final Engine engine;
     private final Clock runClock;
     private final Clock displayClock;
     private final double origin;
@@ -67,6 +68,7 @@ public final class WebView implements EngineListener, AutoCloseable {
     private volatile boolean running = true;
 
     private WebView(Config config, MAVLinkCommunications comms, Engine engine, Clock displayClock) throws WebViewException {
+        this.engine = engine;
         this.runClock = engine.getEnvironment().getClock();
         this.displayClock = displayClock;
         this.origin = runClock.seconds();
@@ -94,7 +96,12 @@ public final class WebView implements EngineListener, AutoCloseable {
             c.getFilters().add(access);
         }
         server.setExecutor(viewers);
-        comms.messageHandler().on(msg_statustext.class, (n, m) -> log.add(now(), "vehicle", n.getId(), m.getText()));
+        // MessageHandler keeps its consumers: a closed view ignores what still comes.
+        comms.messageHandler().on(msg_statustext.class, (n, m) -> {
+            if (running) {
+                log.add(now(), "vehicle", n.getId(), m.getText());
+            }
+        });
         this.sampler = new Thread(this::sampleLoop, "dolphin web sampler");
         sampler.setDaemon(true);
     }
@@ -208,6 +215,7 @@ public final class WebView implements EngineListener, AutoCloseable {
     /** Sends the last frame and an end to every viewer, then stops serving (at most a second later). */
     @Override
     public void close() {
+        engine.removeListener(this);
         running = false;
         sampler.interrupt();
         try {
