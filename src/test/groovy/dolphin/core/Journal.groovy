@@ -24,7 +24,7 @@ class Journal {
         String toString() { "${kind} ${task}${vehicles ? ' ' + vehicles.join(',') : ''} @${fmt(time)}" }
     }
 
-    final List<Entry> entries = [].asSynchronized()
+    final List<Entry> entries = new java.util.concurrent.CopyOnWriteArrayList()
 
     /** Seconds with at most three decimals and no trailing zeros: 0, 0.3, 1.25. */
     static String fmt(double seconds) {

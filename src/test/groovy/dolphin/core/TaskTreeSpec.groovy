@@ -11,7 +11,7 @@ class TaskTreeSpec extends Specification {
 
     ManualClock clock = ManualClock.autoAdvancing()
     TestPlatform platform = new TestPlatform()
-    List<Object> heard = [].asSynchronized()
+    List<Object> heard = new java.util.concurrent.CopyOnWriteArrayList()
     Environment env = new Environment(platform, clock, new RuntimeListener() {
         @Override
         void taskEvent(TaskEvent event) { heard << event }

@@ -68,7 +68,7 @@ class EngineSpec extends Specification {
 
     def "a listener hears scriptStarted, the messages and scriptFinished with the result, in order"() {
         given:
-        def heard = [].asSynchronized()
+        def heard = new java.util.concurrent.CopyOnWriteArrayList()
         h.engine.addListener(new EngineListener() {
             void scriptStarted(String name) { heard << "started ${name}".toString() }
 

@@ -313,7 +313,7 @@ class PickSpec extends Specification {
     def "with timeout #timeout the attempts are made at #attempts s"() {
         given: 'a platform that notes the virtual time of every look at its vehicles'
         def clock = ManualClock.autoAdvancing()
-        List<Double> looks = [].asSynchronized()
+        List<Double> looks = new java.util.concurrent.CopyOnWriteArrayList()
         def platform = new TestPlatform() {
             @Override
             NodeSet getConnectedNodes() {

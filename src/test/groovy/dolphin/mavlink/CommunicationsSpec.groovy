@@ -232,7 +232,7 @@ class CommunicationsSpec extends Specification {
         given:
         h.fleet(1)
         h.eventually { assert h.node('1') != null }
-        def acks = [].asSynchronized()
+        def acks = new java.util.concurrent.CopyOnWriteArrayList()
         h.comms.addObserver { incoming, link, frame -> if (incoming && frame.msgid() == 77) acks << frame.message() }
 
         when:

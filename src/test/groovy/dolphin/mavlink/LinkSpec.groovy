@@ -45,7 +45,7 @@ class LinkSpec extends Specification {
     def "a TCP link connects to a vehicle's server, discovers it and sends our heartbeat on the stream"() {
         given: 'a TCP "vehicle" like SITL SERIAL0: it sends heartbeats split across writes'
         def server = new ServerSocket(0, 1, InetAddress.loopbackAddress)
-        def heard = [].asSynchronized()
+        def heard = new java.util.concurrent.CopyOnWriteArrayList()
         def vehicle = Thread.start {
           try {
             server.accept().withCloseable { s ->

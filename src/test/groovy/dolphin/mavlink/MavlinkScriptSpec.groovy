@@ -17,7 +17,7 @@ class MavlinkScriptSpec extends Specification {
 
     @AutoCleanup
     FleetHarness h = new FleetHarness()
-    List<String> messages = [].asSynchronized()
+    List<String> messages = new java.util.concurrent.CopyOnWriteArrayList()
 
     ScriptResult run(String script) {
         def engine = new Engine(new MAVLinkPlatform(h.comms), h.clock)

@@ -12,8 +12,8 @@ class ScriptHarness {
     final ManualClock clock = ManualClock.autoAdvancing()
     final TestPlatform platform = new TestPlatform()
     final Engine engine = new Engine(platform, clock)
-    final List<String> messages = [].asSynchronized()
-    final List<TaskEvent> events = [].asSynchronized()
+    final List<String> messages = new java.util.concurrent.CopyOnWriteArrayList()
+    final List<TaskEvent> events = new java.util.concurrent.CopyOnWriteArrayList()
 
     ScriptHarness(int vehicles = 0) {
         (1..<(vehicles + 1)).each { platform.addNode(String.valueOf(it)) }

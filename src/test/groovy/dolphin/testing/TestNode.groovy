@@ -10,7 +10,7 @@ class TestNode extends AbstractNode {
     private volatile double battery = 1.0d
     private volatile Position position
     private volatile boolean connected = true
-    final List<String> releases = [].asSynchronized()
+    final List<String> releases = new java.util.concurrent.CopyOnWriteArrayList()
 
     TestNode(TestPlatform platform, String id, String type, Payload payload, Position position) {
         super(id, type, payload)

@@ -27,7 +27,7 @@ class TestPlatform implements Platform, DslExtension {
     }
 
     private final Map<String, TestNode> nodes = Collections.synchronizedMap(new LinkedHashMap<>())
-    final List<Entry> journal = [].asSynchronized()
+    final List<Entry> journal = new java.util.concurrent.CopyOnWriteArrayList()
     final Map<String, Task> namedTasks = [:]
     final List<String> answers = []
     private volatile Runnable onTelemetry = {}

@@ -28,7 +28,8 @@ class FakeMissionVehicle implements AutoCloseable {
     final InetSocketAddress gcs
     final FrameWriter writer
     final FrameReader reader = new FrameReader()
-    final List<String> log = [].asSynchronized()
+    /** Written by the vehicle's thread while tests read it: iterating a copy-on-write list never throws. */
+    final List<String> log = new java.util.concurrent.CopyOnWriteArrayList<String>()
     volatile List<MissionItem> stored = []
     Set<String> faults = [] as Set
     int faultSeq = -1

@@ -18,7 +18,7 @@ class MissionExecutorSpec extends Specification {
 
     @AutoCleanup
     FleetHarness h = new FleetHarness()
-    List<String> messages = [].asSynchronized()
+    List<String> messages = new java.util.concurrent.CopyOnWriteArrayList()
 
     static final String HOP = '''
         hop = mission {

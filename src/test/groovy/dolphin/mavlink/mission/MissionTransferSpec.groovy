@@ -59,7 +59,7 @@ class MissionTransferSpec extends Specification {
     def "upload with #fault: #outcome"() {
         given:
         def node = connect(faults as Set, faultSeq)
-        def progress = [].asSynchronized()
+        def progress = new java.util.concurrent.CopyOnWriteArrayList()
 
         when:
         def r = await(node.uploadProtocol.upload(intended(), MissionTransferConfig.DEFAULT, { d, t -> progress << d }))

@@ -131,7 +131,7 @@ class SimMissionTransferSpec extends Specification {
         def node = h.node('1')
         def items = missionAround(node.home, 3, 25)
         assert node.uploadProtocol.upload(items).get(30, TimeUnit.SECONDS).success()
-        def messages = [].asSynchronized()
+        def messages = new java.util.concurrent.CopyOnWriteArrayList()
         def engine = new Engine(new MAVLinkPlatform(h.comms), h.clock)
         engine.addListener(new EngineListener() {
             void message(String text) { messages << text }
