@@ -1,6 +1,5 @@
 package dolphin.cli;
 
-import com.MAVLink.enums.MISSION_STATE;
 import dolphin.mavlink.MAVLinkNode;
 import dolphin.mavlink.VehicleState;
 import java.util.Locale;
@@ -18,11 +17,8 @@ record VehicleStatus(String id, boolean connected, String mode, boolean armed, i
 
     static VehicleStatus of(MAVLinkNode node, String task) {
         VehicleState s = node.state();
-        // MISSION_CURRENT also counts items during an upload; only a mission being flown has an item to show.
-        boolean flying = s.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE || s.missionState() == MISSION_STATE.MISSION_STATE_PAUSED
-                || s.missionState() == MISSION_STATE.MISSION_STATE_UNKNOWN && s.armed() && "AUTO".equals(s.modeName());
         return new VehicleStatus(node.getId(), node.isConnected(), s.modeName(), s.armed(), s.batteryPercent(),
-                s.relativeAlt(), flying ? s.missionSeq() : 0, s.missionTotal(), task);
+                s.relativeAlt(), s.flyingMission() ? s.missionSeq() : 0, s.missionTotal(), task);
     }
 
     /** The changes worth a line of their own in a log: everything but the battery, height and item. */

@@ -1,6 +1,7 @@
 package dolphin.mavlink;
 
 import com.MAVLink.common.msg_sys_status;
+import com.MAVLink.enums.MISSION_STATE;
 import com.MAVLink.minimal.msg_heartbeat;
 import dolphin.core.Position;
 import java.util.ArrayList;
@@ -50,6 +51,16 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
 
     public String modeName() {
         return heartbeat == null ? "unknown" : family.modeName(heartbeat.custom_mode);
+    }
+
+    /**
+     * True while a mission is being flown, so {@link #missionSeq()} is the item the vehicle flies:
+     * MISSION_CURRENT also counts items during an upload, and older firmware reports no mission state
+     * (then AUTO and armed say it).
+     */
+    public boolean flyingMission() {
+        return missionState == MISSION_STATE.MISSION_STATE_ACTIVE || missionState == MISSION_STATE.MISSION_STATE_PAUSED
+                || missionState == MISSION_STATE.MISSION_STATE_UNKNOWN && armed() && "AUTO".equals(modeName());
     }
 
     /** Remaining battery in percent (0..100), or -1 when the vehicle does not know it or has not said. */

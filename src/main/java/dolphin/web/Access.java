@@ -31,12 +31,12 @@ final class Access extends Filter {
         String method = ex.getRequestMethod();
         if (!"GET".equals(method) && !"HEAD".equals(method)) {
             ex.getResponseHeaders().set("Allow", "GET, HEAD");
-            refuse(ex, 405, "the web view is read-only: only GET and HEAD");
+            Reply.text(ex, 405, "the web view is read-only: only GET and HEAD");
             return;
         }
         if (token == null) {
             if (!LOCAL_NAMES.contains(hostName(ex.getRequestHeaders().getFirst("Host")))) {
-                refuse(ex, 403, "this web view serves loopback only: open it as http://127.0.0.1 or http://localhost");
+                Reply.text(ex, 403, "this web view serves loopback only: open it as http://127.0.0.1 or http://localhost");
                 return;
             }
         } else {
@@ -46,7 +46,7 @@ final class Access extends Filter {
                 given = cookieToken(ex.getRequestHeaders().getFirst("Cookie"));
             }
             if (given == null || !MessageDigest.isEqual(given.getBytes(StandardCharsets.UTF_8), token.getBytes(StandardCharsets.UTF_8))) {
-                refuse(ex, 401, "wrong or missing token: open the address that dolphin run printed, with its ?token=");
+                Reply.text(ex, 401, "wrong or missing token: open the address that dolphin run printed, with its ?token=");
                 return;
             }
             if (fromQuery) {
@@ -59,15 +59,6 @@ final class Access extends Filter {
     @Override
     public String description() {
         return "read-only access, by token beyond loopback";
-    }
-
-    static void refuse(HttpExchange ex, int status, String text) throws IOException {
-        byte[] body = (text + "\n").getBytes(StandardCharsets.UTF_8);
-        ex.getResponseHeaders().set("Content-Type", "text/plain; charset=utf-8");
-        ex.sendResponseHeaders(status, body.length);
-        try (var out = ex.getResponseBody()) {
-            out.write(body);
-        }
     }
 
     /** The host of a Host header, without its port; "" when there is none. */

@@ -29,6 +29,10 @@ final class Broadcast {
         notifyAll();
     }
 
+    synchronized FleetFeed.Frame latest() {
+        return latest;
+    }
+
     synchronized boolean ended() {
         return ended;
     }

@@ -47,7 +47,7 @@ final class EventStream implements HttpHandler {
     public void handle(HttpExchange ex) throws IOException {
         if (viewers.incrementAndGet() > MAX_VIEWERS) {
             viewers.decrementAndGet();
-            Access.refuse(ex, 503, "already " + MAX_VIEWERS + " viewers of this run");
+            Reply.text(ex, 503, "already " + MAX_VIEWERS + " viewers of this run");
             return;
         }
         try (ex; OutputStream out = ex.getResponseBody()) {
@@ -65,7 +65,7 @@ final class EventStream implements HttpHandler {
     }
 
     private void stream(OutputStream out) throws IOException, InterruptedException {
-        FleetFeed.Frame sent = broadcast.awaitAfter(-1, Duration.ZERO);
+        FleetFeed.Frame sent = broadcast.latest();
         long logSeq = log.last();
         send(out, "snapshot", snapshot.apply(sent));
         while (true) {

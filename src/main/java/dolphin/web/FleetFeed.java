@@ -89,7 +89,7 @@ final class FleetFeed {
      */
     static String update(Frame frame, long after, EventLog.Since log, String extra) {
         StringBuilder b = new StringBuilder(256);
-        b.append("{\"frame\":").append(frame.number()).append(",\"time\":").append(Math.round(frame.time() * 10) / 10.0);
+        b.append("{\"frame\":").append(frame.number()).append(",\"time\":").append(Json.tenths(frame.time()));
         b.append(",\"vehicles\":[");
         appendChanged(b, frame.vehicles(), after, false);
         b.append("],\"missions\":{");
@@ -128,7 +128,7 @@ final class FleetFeed {
         for (EventLog.Entry e : entries) {
             Map<String, Object> m = new LinkedHashMap<>();
             m.put("seq", e.seq());
-            m.put("time", Math.round(e.time() * 10) / 10.0);
+            m.put("time", Json.tenths(e.time()));
             m.put("kind", e.kind());
             m.put("vehicle", e.vehicle());
             m.put("text", e.text());

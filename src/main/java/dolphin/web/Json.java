@@ -13,4 +13,9 @@ final class Json {
     static String write(Object value) {
         return GENERATOR.toJson(value);
     }
+
+    /** Seconds as the stream gives them: to a tenth. */
+    static double tenths(double seconds) {
+        return Math.round(seconds * 10) / 10.0;
+    }
 }

@@ -32,20 +32,11 @@ final class StaticFiles implements HttpHandler {
                 : null;
         try (InputStream in = resource == null ? null : StaticFiles.class.getResourceAsStream(resource)) {
             if (in == null) {
-                Access.refuse(ex, 404, "no such page: " + path);
+                Reply.text(ex, 404, "no such page: " + path);
                 return;
             }
-            byte[] body = in.readAllBytes();
             String extension = resource.substring(resource.lastIndexOf('.') + 1);
-            ex.getResponseHeaders().set("Content-Type", TYPES.getOrDefault(extension, "application/octet-stream"));
-            ex.getResponseHeaders().set("Cache-Control", "no-cache");
-            boolean head = "HEAD".equals(ex.getRequestMethod());
-            ex.sendResponseHeaders(200, head ? -1 : body.length);
-            try (var out = ex.getResponseBody()) {
-                if (!head) {
-                    out.write(body);
-                }
-            }
+            Reply.send(ex, 200, TYPES.getOrDefault(extension, "application/octet-stream"), in.readAllBytes());
         }
     }
 

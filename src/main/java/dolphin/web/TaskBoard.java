@@ -87,7 +87,7 @@ final class TaskBoard {
         m.put("label", t.label());
         m.put("vehicles", t.vehicles());
         m.put("state", s == null ? "waiting" : s.state());
-        m.put("since", s == null ? null : Math.round(s.since() * 10) / 10.0);
+        m.put("since", s == null ? null : Json.tenths(s.since()));
         String detail = s == null ? null : s.message() != null ? s.message() : waitingDetail(t, s.state());
         if (detail != null) {
             m.put("detail", detail);

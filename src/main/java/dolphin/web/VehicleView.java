@@ -1,6 +1,5 @@
 package dolphin.web;
 
-import com.MAVLink.enums.MISSION_STATE;
 import dolphin.core.Position;
 import dolphin.mavlink.VehicleState;
 import groovy.json.JsonOutput;
@@ -15,11 +14,8 @@ record VehicleView(String id, String type, String family, boolean connected, boo
                    int item, int total, boolean fenceBreached, String task) {
 
     static VehicleView of(String id, String type, boolean connected, boolean picked, VehicleState s, String task) {
-        // MISSION_CURRENT counts items during an upload too; only a mission being flown has an item to highlight.
-        boolean flying = s.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE || s.missionState() == MISSION_STATE.MISSION_STATE_PAUSED
-                || s.missionState() == MISSION_STATE.MISSION_STATE_UNKNOWN && s.armed() && "AUTO".equals(s.modeName());
         return new VehicleView(id, type, s.family().label(), connected, picked, s.position(), s.relativeAlt(), s.heading(),
-                s.modeName(), s.armed(), s.batteryPercent(), s.home(), flying ? s.missionSeq() : -1, s.missionTotal(),
+                s.modeName(), s.armed(), s.batteryPercent(), s.home(), s.flyingMission() ? s.missionSeq() : -1, s.missionTotal(),
                 s.fenceBreached(), task);
     }
 

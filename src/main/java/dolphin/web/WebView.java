@@ -15,6 +15,7 @@ import java.net.BindException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.UnknownHostException;
+import java.nio.charset.StandardCharsets;
 import java.security.SecureRandom;
 import java.time.Duration;
 import java.util.HexFormat;
@@ -92,7 +93,8 @@ public final class WebView implements EngineListener, AutoCloseable {
         Access access = new Access(token);
         StaticFiles files = new StaticFiles();
         for (HttpContext c : new HttpContext[] {server.createContext("/", files), server.createContext("/events", stream),
-                server.createContext("/state", ex -> sendState(ex))}) {
+                server.createContext("/state",
+                ex -> Reply.send(ex, 200, "application/json; charset=utf-8", snapshot(feed.latest()).getBytes(StandardCharsets.UTF_8)))}) {
             c.getFilters().add(access);
         }
         server.setExecutor(viewers);
@@ -163,16 +165,6 @@ public final class WebView implements EngineListener, AutoCloseable {
         run.put("script", script);
         run.put("outcome", outcome);
         return ",\"run\":" + Json.write(run);
-    }
-
-    private void sendState(com.sun.net.httpserver.HttpExchange ex) throws IOException {
-        byte[] body = snapshot(feed.latest()).getBytes(java.nio.charset.StandardCharsets.UTF_8);
-        ex.getResponseHeaders().set("Content-Type", "application/json; charset=utf-8");
-        ex.getResponseHeaders().set("Cache-Control", "no-store");
-        ex.sendResponseHeaders(200, body.length);
-        try (var out = ex.getResponseBody()) {
-            out.write(body);
-        }
     }
 
     @Override
