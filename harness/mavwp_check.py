@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """pymavlink's reading of our .waypoints files (MavwpInteropSpec, MissionCommandSpec).
 
-Tests only: an independent reader to check dolphin.mavlink.mission.WaypointsFile against.
+Tests only: an independent reader to check dolphin.mission.file.WaypointsFile against.
 
   mavwp_check.py [--fence | --rally] FILE...
       Loads each file with pymavlink's mavwp.MAVWPLoader, the loader MAVProxy's "wp load" uses,

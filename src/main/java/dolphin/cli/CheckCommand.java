@@ -2,7 +2,7 @@ package dolphin.cli;
 
 import dolphin.dsl.Engine;
 import dolphin.dsl.ScriptError;
-import dolphin.mavlink.MAVLinkLanguage;
+import dolphin.platform.MAVLinkLanguage;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.time.Duration;

@@ -3,7 +3,7 @@ package dolphin.cli;
 import dolphin.core.Position;
 import dolphin.mavlink.codec.SigningKey;
 import dolphin.mavlink.link.LinkUrl;
-import dolphin.mavlink.mission.MissionFormat;
+import dolphin.mission.file.MissionFormat;
 import dolphin.sim.VehicleKind;
 import dolphin.web.WebAddress;
 import java.io.IOException;

@@ -2,12 +2,12 @@ package dolphin.cli;
 
 import dolphin.core.EnvironmentException;
 import dolphin.dsl.ScriptResult;
-import dolphin.mavlink.mission.Mission;
-import dolphin.mavlink.mission.MissionFile;
-import dolphin.mavlink.mission.MissionFormat;
-import dolphin.mavlink.mission.MissionItem;
-import dolphin.mavlink.mission.MissionTable;
-import dolphin.mavlink.mission.WaypointsFile;
+import dolphin.mission.model.Mission;
+import dolphin.mission.file.MissionFile;
+import dolphin.mission.file.MissionFormat;
+import dolphin.mission.model.MissionItem;
+import dolphin.mission.model.MissionTable;
+import dolphin.mission.file.WaypointsFile;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;

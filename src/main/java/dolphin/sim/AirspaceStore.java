@@ -3,11 +3,11 @@ package dolphin.sim;
 import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_FRAME;
 import com.MAVLink.enums.MAV_MISSION_RESULT;
-import dolphin.mavlink.mission.BadItemException;
-import dolphin.mavlink.mission.Fence;
-import dolphin.mavlink.mission.MissionItem;
-import dolphin.mavlink.mission.MissionType;
-import dolphin.mavlink.mission.RallyPoints;
+import dolphin.mission.model.BadItemException;
+import dolphin.mission.model.Fence;
+import dolphin.mission.model.MissionItem;
+import dolphin.mission.model.MissionType;
+import dolphin.mission.model.RallyPoints;
 import java.util.ArrayList;
 import java.util.List;
 

@@ -4,7 +4,7 @@ import com.MAVLink.common.msg_fence_status;
 import com.MAVLink.enums.FENCE_BREACH;
 import com.MAVLink.enums.FENCE_MITIGATE;
 import dolphin.core.Position;
-import dolphin.mavlink.mission.Fence;
+import dolphin.mission.model.Fence;
 
 /**
  * A simulated vehicle's fence watch, as ArduPilot's AC_Fence does it for its polygon fence (which

@@ -2,7 +2,7 @@ package dolphin.sim;
 
 import dolphin.core.Position;
 import dolphin.mavlink.VehicleFamily;
-import dolphin.mavlink.mission.MissionItem;
+import dolphin.mission.model.MissionItem;
 import java.util.Optional;
 import java.util.OptionalInt;
 

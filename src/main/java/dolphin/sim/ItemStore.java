@@ -1,7 +1,7 @@
 package dolphin.sim;
 
-import dolphin.mavlink.mission.MissionItem;
-import dolphin.mavlink.mission.MissionType;
+import dolphin.mission.model.MissionItem;
+import dolphin.mission.model.MissionType;
 
 /**
  * One list a simulated vehicle stores and the mission protocol transfers: its mission, fence or

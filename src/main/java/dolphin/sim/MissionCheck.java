@@ -3,7 +3,7 @@ package dolphin.sim;
 import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_FRAME;
 import com.MAVLink.enums.MAV_MISSION_RESULT;
-import dolphin.mavlink.mission.MissionItem;
+import dolphin.mission.model.MissionItem;
 import java.util.Set;
 
 /**

@@ -7,7 +7,7 @@ import com.MAVLink.enums.MAV_LANDED_STATE;
 import com.MAVLink.enums.MAV_SEVERITY;
 import com.MAVLink.enums.MISSION_STATE;
 import dolphin.core.Position;
-import dolphin.mavlink.mission.MissionItem;
+import dolphin.mission.model.MissionItem;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;

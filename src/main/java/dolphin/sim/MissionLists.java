@@ -9,9 +9,9 @@ import com.MAVLink.common.msg_mission_item_int;
 import com.MAVLink.common.msg_mission_request;
 import com.MAVLink.common.msg_mission_request_int;
 import com.MAVLink.common.msg_mission_request_list;
-import dolphin.mavlink.mission.Fence;
-import dolphin.mavlink.mission.MissionType;
-import dolphin.mavlink.mission.RallyPoints;
+import dolphin.mission.model.Fence;
+import dolphin.mission.model.MissionType;
+import dolphin.mission.model.RallyPoints;
 
 /**
  * A simulated vehicle's three lists (mission, fence, rally points) and a mission-protocol transfer

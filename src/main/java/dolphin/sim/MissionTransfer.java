@@ -11,8 +11,8 @@ import com.MAVLink.common.msg_mission_request_int;
 import com.MAVLink.common.msg_mission_request_list;
 import com.MAVLink.enums.MAV_MISSION_RESULT;
 import com.MAVLink.enums.MAV_SEVERITY;
-import dolphin.mavlink.mission.MissionItem;
-import dolphin.mavlink.mission.MissionType;
+import dolphin.mission.model.MissionItem;
+import dolphin.mission.model.MissionType;
 
 /**
  * The vehicle side of the mission protocol, as ArduPilot's MissionItemProtocol does it: uploads

@@ -7,7 +7,7 @@ import com.MAVLink.enums.MAV_TYPE;
 import com.MAVLink.enums.ROVER_MODE;
 import dolphin.core.Position;
 import dolphin.mavlink.VehicleFamily;
-import dolphin.mavlink.mission.MissionItem;
+import dolphin.mission.model.MissionItem;
 import java.util.Optional;
 import java.util.OptionalInt;
 

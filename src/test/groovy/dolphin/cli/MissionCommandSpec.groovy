@@ -2,13 +2,13 @@ package dolphin.cli
 
 import dolphin.core.ManualClock
 import dolphin.dsl.Engine
-import dolphin.mavlink.MAVLinkLanguage
-import dolphin.mavlink.dsl.MissionRecorder
-import dolphin.mavlink.mission.MavwpHarness
-import dolphin.mavlink.mission.Mission
-import dolphin.mavlink.mission.MissionItem
-import dolphin.mavlink.mission.PlanFile
-import dolphin.mavlink.mission.WaypointsFile
+import dolphin.platform.MAVLinkLanguage
+import dolphin.mission.dsl.MissionRecorder
+import dolphin.mission.file.MavwpHarness
+import dolphin.mission.model.Mission
+import dolphin.mission.model.MissionItem
+import dolphin.mission.file.PlanFile
+import dolphin.mission.file.WaypointsFile
 import groovy.json.JsonSlurper
 import spock.lang.Specification
 import spock.lang.TempDir

@@ -1,7 +1,7 @@
 package dolphin.cli
 
-import dolphin.mavlink.mission.MissionExecutorConfig
-import dolphin.mavlink.mission.MissionTransferConfig
+import dolphin.mission.flight.MissionExecutorConfig
+import dolphin.mission.transfer.MissionTransferConfig
 import dolphin.sim.FaultModel
 import java.time.Duration
 import picocli.CommandLine

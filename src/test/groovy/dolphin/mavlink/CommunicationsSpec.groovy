@@ -1,5 +1,6 @@
 package dolphin.mavlink
 
+import dolphin.platform.MAVLinkPlatform
 import com.MAVLink.common.msg_command_long
 import com.MAVLink.enums.MAV_AUTOPILOT
 import com.MAVLink.enums.MAV_CMD

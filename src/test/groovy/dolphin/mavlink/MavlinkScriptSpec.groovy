@@ -1,5 +1,6 @@
 package dolphin.mavlink
 
+import dolphin.platform.MAVLinkPlatform
 import com.MAVLink.common.msg_sys_status
 import com.MAVLink.enums.MAV_AUTOPILOT
 import com.MAVLink.enums.MAV_TYPE

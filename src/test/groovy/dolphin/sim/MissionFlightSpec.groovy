@@ -11,7 +11,7 @@ import com.MAVLink.enums.MAV_RESULT
 import com.MAVLink.enums.MISSION_STATE
 import com.MAVLink.enums.PLANE_MODE
 import dolphin.core.Position
-import dolphin.mavlink.mission.MissionItem
+import dolphin.mission.model.MissionItem
 import spock.lang.Specification
 
 import static dolphin.sim.MissionProtocolSpec.HOME

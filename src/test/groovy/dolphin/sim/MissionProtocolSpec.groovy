@@ -15,7 +15,7 @@ import com.MAVLink.enums.MAV_MISSION_RESULT
 import com.MAVLink.enums.MAV_MODE_FLAG
 import com.MAVLink.enums.MAV_RESULT
 import dolphin.core.Position
-import dolphin.mavlink.mission.MissionItem
+import dolphin.mission.model.MissionItem
 import spock.lang.AutoCleanup
 import spock.lang.Specification
 

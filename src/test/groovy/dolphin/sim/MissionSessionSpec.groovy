@@ -8,7 +8,7 @@ import com.MAVLink.enums.MAV_RESULT
 import com.MAVLink.enums.MISSION_STATE
 import dolphin.core.SystemClock
 import dolphin.mavlink.codec.CodecInteropSpec
-import dolphin.mavlink.mission.MissionItem
+import dolphin.mission.model.MissionItem
 import spock.lang.Specification
 import spock.lang.TempDir
 

@@ -13,7 +13,7 @@ import com.MAVLink.enums.MAV_MISSION_RESULT
 import dolphin.core.SystemClock
 import dolphin.mavlink.codec.Frame
 import dolphin.mavlink.codec.FrameWriter
-import dolphin.mavlink.mission.MissionItem
+import dolphin.mission.model.MissionItem
 import dolphin.testing.FrameListener
 
 import java.util.concurrent.CopyOnWriteArrayList

@@ -10,8 +10,8 @@ import com.MAVLink.common.msg_statustext
 import com.MAVLink.enums.MAV_CMD
 import com.MAVLink.enums.MAV_MODE_FLAG
 import dolphin.core.Position
-import dolphin.mavlink.mission.MissionItem
-import dolphin.mavlink.mission.MissionType
+import dolphin.mission.model.MissionItem
+import dolphin.mission.model.MissionType
 
 /**
  * Drives one {@link SimVehicle} directly, without sockets or real time: its clock is the nanoseconds

@@ -14,10 +14,10 @@ import com.MAVLink.enums.MAV_SYS_STATUS_SENSOR
 import com.MAVLink.enums.MISSION_STATE
 import com.MAVLink.enums.ROVER_MODE
 import com.MAVLink.standard.msg_global_position_int
-import dolphin.mavlink.mission.Fence
-import dolphin.mavlink.mission.FenceRegion
-import dolphin.mavlink.mission.MissionItem
-import dolphin.mavlink.mission.MissionType
+import dolphin.mission.model.Fence
+import dolphin.mission.model.FenceRegion
+import dolphin.mission.model.MissionItem
+import dolphin.mission.model.MissionType
 import spock.lang.Specification
 
 import static dolphin.sim.MissionProtocolSpec.rel

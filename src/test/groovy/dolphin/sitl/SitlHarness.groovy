@@ -10,9 +10,9 @@ import dolphin.mavlink.CommandResult
 import dolphin.mavlink.MAVLinkCommunications
 import dolphin.mavlink.MAVLinkConfig
 import dolphin.mavlink.MAVLinkNode
-import dolphin.mavlink.MAVLinkPlatform
-import dolphin.mavlink.mission.MissionItem
-import dolphin.mavlink.mission.TransferResult
+import dolphin.platform.MAVLinkPlatform
+import dolphin.mission.model.MissionItem
+import dolphin.mission.transfer.TransferResult
 import java.time.Duration
 import java.util.concurrent.TimeUnit
 import spock.util.concurrent.PollingConditions

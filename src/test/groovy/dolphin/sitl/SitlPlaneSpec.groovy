@@ -4,7 +4,7 @@ import dolphin.core.Position
 import dolphin.dsl.ScriptResult
 import dolphin.mavlink.MAVLinkNode
 import dolphin.mavlink.VehicleFamily
-import dolphin.mavlink.mission.MissionVerification
+import dolphin.mission.transfer.MissionVerification
 import java.time.Duration
 import java.util.concurrent.TimeUnit
 import spock.lang.AutoCleanup

@@ -6,9 +6,9 @@ import dolphin.dsl.ScriptResult
 import dolphin.mavlink.CommandResult
 import dolphin.mavlink.MAVLinkNode
 import dolphin.mavlink.VehicleFamily
-import dolphin.mavlink.mission.Mission
-import dolphin.mavlink.mission.MissionType
-import dolphin.mavlink.mission.MissionVerification
+import dolphin.mission.model.Mission
+import dolphin.mission.model.MissionType
+import dolphin.mission.transfer.MissionVerification
 import java.time.Duration
 import java.util.concurrent.ConcurrentHashMap
 import java.util.concurrent.TimeUnit

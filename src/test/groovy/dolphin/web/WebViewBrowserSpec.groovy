@@ -5,7 +5,7 @@ import dolphin.dsl.Engine
 import dolphin.dsl.ScriptResult
 import dolphin.mavlink.MAVLinkCommunications
 import dolphin.mavlink.MAVLinkConfig
-import dolphin.mavlink.MAVLinkPlatform
+import dolphin.platform.MAVLinkPlatform
 import dolphin.sim.SimFleet
 import dolphin.sim.VehicleKind
 import java.nio.file.Files

@@ -4,7 +4,7 @@ import dolphin.core.SystemClock
 import dolphin.dsl.Engine
 import dolphin.mavlink.MAVLinkCommunications
 import dolphin.mavlink.MAVLinkConfig
-import dolphin.mavlink.MAVLinkPlatform
+import dolphin.platform.MAVLinkPlatform
 import dolphin.sim.SimFleet
 import dolphin.sim.VehicleKind
 import groovy.json.JsonSlurper

@@ -9,7 +9,7 @@ import dolphin.dsl.ScriptResult;
 import dolphin.mavlink.MAVLinkCommunications;
 import dolphin.mavlink.MAVLinkConfig;
 import dolphin.mavlink.MAVLinkNode;
-import dolphin.mavlink.MAVLinkPlatform;
+import dolphin.platform.MAVLinkPlatform;
 import dolphin.mavlink.codec.Frame;
 import dolphin.mavlink.link.Link;
 import dolphin.web.WebAddress;

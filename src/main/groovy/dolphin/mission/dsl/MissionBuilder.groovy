@@ -1,0 +1,599 @@
+package dolphin.mission.dsl
+
+import dolphin.core.Position
+import dolphin.dsl.DslException
+import dolphin.mission.model.CameraPoint
+import dolphin.mission.model.CameraStopPoint
+import dolphin.mission.model.ChangeSpeed
+import dolphin.mission.model.DelayCommand
+import dolphin.mission.model.DroneCommand
+import dolphin.mission.model.Fence
+import dolphin.mission.model.GoToPoint
+import dolphin.mission.model.HeightCheck
+import dolphin.mission.model.JumpToItem
+import dolphin.mission.model.LandingPoint
+import dolphin.mission.model.LoiterPoint
+import dolphin.mission.model.LoiterTimePoint
+import dolphin.mission.model.LoiterTurnsPoint
+import dolphin.mission.model.Mission
+import dolphin.mission.model.MissionPoint
+import dolphin.mission.model.RallyPoints
+import dolphin.mission.model.SurveyArea
+import dolphin.mission.model.SurveyDirection
+import dolphin.mission.model.TakeOffPoint
+import groovy.transform.CompileStatic
+import groovy.transform.PackageScope
+import org.codehaus.groovy.runtime.InvokerHelper
+
+/**
+ * The delegate of {@code mission { ... }} (reference C.6; docs/mission-commands.md): each command
+ * appends a DroneCommand, in source order. Heights are metres above mean sea level, latitudes and
+ * longitudes degrees, distances metres, times seconds.
+ *
+ * <p>Position tracking (reference C.6.1, F-9): relative commands start from the last
+ * <em>registered</em> position, or from the mission's home when none is registered yet. goPos, move*,
+ * takeOff, returnHome*, altitude and surveyArea register a position; loiter*, landingPoint and home
+ * do not. *FromHome start from the home named with {@code home}; returnHome and returnHomeAndLoiter
+ * arrive over it at the last registered height (docs/mission-commands.md, "Safe heights").
+ *
+ * <p>No item but a landing may be lower than home plus {@link HeightCheck#CLEARANCE} unless the
+ * mission says {@code allowBelowHome true}: checked when the mission is built if it names its home,
+ * else by the executor against the vehicle's home.
+ *
+ * <p>The builder answers its own commands first; everything else (script variables, other words)
+ * falls through to the script. It has no properties of its own, so script variables are never
+ * shadowed.
+ */
+@CompileStatic
+class MissionBuilder {
+
+    /** The accepted forms of every command, for error messages; also the list of command names. */
+    @PackageScope
+    static final Map<String, List<String>> FORMS = [
+            name                      : ['(name)'],
+            allowBelowHome            : ['(true or false)'],
+            home                      : ['(lat, lon[, hae])', '(position)'],
+            goPos                     : ['(lat, lon[, hae])', '(position)'],
+            takeOff                   : ['(position[, pitch])'],
+            takeOffWithYaw            : ['(position, pitch[, yaw])'],
+            move                      : ['(north, east[, up])', '(position, { north n; east e; down d })'],
+            moveFromHome              : ['(north, east, up)'],
+            moveAndLoiterPos          : ['(north, east, up[, radius])'],
+            moveAndLoiterTurns        : ['(north, east, up[, turns[, radius]])'],
+            moveAndLoiterTime         : ['(north, east, up, seconds[, radius])'],
+            moveAndLoiterFromHome     : ['(north, east, up[, radius])'],
+            moveAndLoiterTurnsFromHome: ['(north, east, up[, turns[, radius]])'],
+            moveAndLoiterTimeFromHome : ['(north, east, up, seconds[, radius])'],
+            loiterPos                 : ['(position[, radius])', '(lat, lon, hae[, radius])'],
+            loiterTurns               : ['(lat, lon, hae[, turns[, radius]])'],
+            loiterTime                : ['(lat, lon, hae, seconds[, radius])'],
+            landingPoint              : ['(lat, lon[, hae[, yaw[, landMode]]])', '(position[, yaw[, landMode]])'],
+            returnHome                : ['()'],
+            returnHomeAndLoiter       : ['([radius])'],
+            returnHomeAndLand         : ['([yaw[, landMode]])'],
+            speed                     : ['(speed[, speedType])'],
+            altitude                  : ['(height)'],
+            delay                     : ['(seconds)'],
+            surveyArea                : ['(length, width[, spacing][, direction])', '(position, length, width[, spacing][, direction])'],
+            capturePhoto              : ['()'],
+            captureSeveralPhotos      : ['(photos[, interval])'],
+            captureUntilStop          : ['([interval])'],
+            stopCapturing             : ['()'],
+            jumpToItem                : ['(item[, repetitions])'],
+            fence                     : ['{ inclusion polygon(p1, p2, p3, ...); exclusion circle(center, radius); returnPoint p; enable true }'],
+            rally                     : ['(position, ...)'],
+    ].asImmutable() as Map<String, List<String>>
+
+    /** The most items a MAVLink mission can have (seq and count are 16-bit). */
+    @PackageScope
+    static final int MAX_ITEMS = 65535
+
+    private String missionName
+    private Position missionHome
+    private boolean belowHomeAllowed
+    /** Where each point was written: an exception made there, whose stack trace gives a later error that line. */
+    private final Map<MissionPoint, DslException> origins = new IdentityHashMap<>()
+    private Position lastRegistered
+    private final List<DroneCommand> commands = []
+    private Fence missionFence = Fence.NONE
+    private boolean fenceEnabled
+    private final List<Position> rallyPoints = []
+    /** Where the rally points were given, for a height error. */
+    private DslException rallyOrigin
+    /** Jumps, with the error to throw (made at the jump's line) if the target does not exist. */
+    private final Map<JumpToItem, DslException> jumps = [:]
+    /** The closure this builder runs, to reach the script's variables and words. */
+    private final Closure body
+
+    @PackageScope
+    MissionBuilder(String defaultName, Closure body) {
+        this.missionName = defaultName
+        this.body = body
+    }
+
+    // ---- naming, safety and home
+
+    /** Allows items lower than home plus the clearance (HeightCheck): the script's explicit choice. */
+    void allowBelowHome(boolean allowed) {
+        belowHomeAllowed = allowed
+    }
+
+    /** The mission's name: its task id in messages and exports. */
+    void name(String name) {
+        if (name == null || name.trim().isEmpty()) {
+            throw new DslException('name: the mission name must not be empty')
+        }
+        missionName = name
+    }
+
+    /**
+     * The mission's home: item 0 (the home placeholder) and, when flown, the vehicle's home
+     * (DO_SET_HOME before the upload). Emits no item and registers no position.
+     */
+    void home(Number lat, Number lon, Number hae = 0) {
+        setHome(Args.position('home', lat, lon, hae))
+    }
+
+    void home(Position position) {
+        setHome(Args.position('home', position))
+    }
+
+    private void setHome(Position p) {
+        if (missionHome != null) {
+            throw new DslException("home: this mission already has a home, ${missionHome}; a mission has one home")
+        }
+        missionHome = p
+    }
+
+    // ---- going somewhere
+
+    /** NAV_WAYPOINT at (lat, lon, hae); registers it. */
+    void goPos(Number lat, Number lon, Number hae = 0) {
+        waypoint('goPos', Args.position('goPos', lat, lon, hae))
+    }
+
+    void goPos(Position position) {
+        waypoint('goPos', Args.position('goPos', position))
+    }
+
+    /**
+     * NAV_TAKEOFF at the position, pitch in degrees; registers it, so relative commands after it
+     * start at the take-off height (the report: "move the drone relative to its position").
+     */
+    void takeOff(Position position, Number pitch = TakeOffPoint.DEFAULT_PITCH) {
+        addRegistered(new TakeOffPoint('takeOff', Args.position('takeOff', position), (float) Args.number('takeOff', 'pitch', pitch), Float.NaN))
+    }
+
+    void takeOffWithYaw(Position position, Number pitch, Number yaw = Float.NaN) {
+        addRegistered(new TakeOffPoint('takeOffWithYaw', Args.position('takeOffWithYaw', position),
+                (float) Args.number('takeOffWithYaw', 'pitch', pitch), Args.yaw('takeOffWithYaw', yaw)))
+    }
+
+    /** NAV_WAYPOINT north/east/up metres from the last registered position (or home); registers it. */
+    void move(Number north, Number east, Number up = 0) {
+        waypoint('move', relative('move', lastPosition('move'), north, east, up))
+    }
+
+    /** Inside a mission too, move(position, { ... }) is the position word: it returns a position and adds nothing. */
+    Position move(Position from, @DelegatesTo(value = NedBuilder, strategy = Closure.DELEGATE_FIRST) Closure offset) {
+        NedBuilder.build('move', offset).from(Args.position('move', from))
+    }
+
+    Position move(Position from, NedOffset offset) {
+        new PositionWords().move(from, offset)
+    }
+
+    /** NAV_WAYPOINT north/east/up metres from home; registers it. */
+    void moveFromHome(Number north, Number east, Number up) {
+        waypoint('moveFromHome', relative('moveFromHome', homeFor('moveFromHome'), north, east, up))
+    }
+
+    void moveAndLoiterPos(Number north, Number east, Number up, Number radius = LoiterPoint.DEFAULT_RADIUS) {
+        String w = 'moveAndLoiterPos'
+        Position p = relative(w, lastPosition(w), north, east, up)
+        addRegistered(new LoiterPoint(w, p, Args.radius(w, radius)))
+    }
+
+    void moveAndLoiterTurns(Number north, Number east, Number up, Number turns = LoiterTurnsPoint.DEFAULT_TURNS,
+                            Number radius = LoiterPoint.DEFAULT_RADIUS) {
+        String w = 'moveAndLoiterTurns'
+        Position p = relative(w, lastPosition(w), north, east, up)
+        addRegistered(new LoiterTurnsPoint(w, p, turnCount(w, turns), Args.radius(w, radius)))
+    }
+
+    void moveAndLoiterTime(Number north, Number east, Number up, Number seconds, Number radius = LoiterPoint.DEFAULT_RADIUS) {
+        String w = 'moveAndLoiterTime'
+        Position p = relative(w, lastPosition(w), north, east, up)
+        addRegistered(new LoiterTimePoint(w, p, loiterSeconds(w, seconds), Args.radius(w, radius)))
+    }
+
+    void moveAndLoiterFromHome(Number north, Number east, Number up, Number radius = LoiterPoint.DEFAULT_RADIUS) {
+        String w = 'moveAndLoiterFromHome'
+        Position p = relative(w, homeFor(w), north, east, up)
+        addRegistered(new LoiterPoint(w, p, Args.radius(w, radius)))
+    }
+
+    void moveAndLoiterTurnsFromHome(Number north, Number east, Number up, Number turns = LoiterTurnsPoint.DEFAULT_TURNS,
+                                    Number radius = LoiterPoint.DEFAULT_RADIUS) {
+        String w = 'moveAndLoiterTurnsFromHome'
+        Position p = relative(w, homeFor(w), north, east, up)
+        addRegistered(new LoiterTurnsPoint(w, p, turnCount(w, turns), Args.radius(w, radius)))
+    }
+
+    void moveAndLoiterTimeFromHome(Number north, Number east, Number up, Number seconds,
+                                   Number radius = LoiterPoint.DEFAULT_RADIUS) {
+        String w = 'moveAndLoiterTimeFromHome'
+        Position p = relative(w, homeFor(w), north, east, up)
+        addRegistered(new LoiterTimePoint(w, p, loiterSeconds(w, seconds), Args.radius(w, radius)))
+    }
+
+    // ---- loitering and landing at a given position (none of these registers it)
+
+    void loiterPos(Position position, Number radius = LoiterPoint.DEFAULT_RADIUS) {
+        add(new LoiterPoint('loiterPos', Args.position('loiterPos', position), Args.radius('loiterPos', radius)))
+    }
+
+    void loiterPos(Number lat, Number lon, Number hae, Number radius = LoiterPoint.DEFAULT_RADIUS) {
+        add(new LoiterPoint('loiterPos', Args.position('loiterPos', lat, lon, hae), Args.radius('loiterPos', radius)))
+    }
+
+    void loiterTurns(Number lat, Number lon, Number hae, Number turns = LoiterTurnsPoint.DEFAULT_TURNS,
+                     Number radius = LoiterPoint.DEFAULT_RADIUS) {
+        String w = 'loiterTurns'
+        add(new LoiterTurnsPoint(w, Args.position(w, lat, lon, hae), turnCount(w, turns), Args.radius(w, radius)))
+    }
+
+    void loiterTime(Number lat, Number lon, Number hae, Number seconds, Number radius = LoiterPoint.DEFAULT_RADIUS) {
+        String w = 'loiterTime'
+        add(new LoiterTimePoint(w, Args.position(w, lat, lon, hae), loiterSeconds(w, seconds), Args.radius(w, radius)))
+    }
+
+    /** NAV_LAND; yaw NaN lets the vehicle choose; landMode is PRECISION_LAND_MODE (0 disabled). */
+    void landingPoint(Number lat, Number lon, Number hae = 0, Number yaw = Float.NaN, Number landMode = 0) {
+        String w = 'landingPoint'
+        add(new LandingPoint(w, Args.position(w, lat, lon, hae), Args.yaw(w, yaw), Args.landMode(w, landMode)))
+    }
+
+    void landingPoint(Position position, Number yaw = Float.NaN, Number landMode = 0) {
+        String w = 'landingPoint'
+        add(new LandingPoint(w, Args.position(w, position), Args.yaw(w, yaw), Args.landMode(w, landMode)))
+    }
+
+    // ---- home again (each registers where it ends)
+
+    /** NAV_WAYPOINT over home at the last registered height; registers it. */
+    void returnHome() {
+        waypoint('returnHome', overHome('returnHome'))
+    }
+
+    /** NAV_LOITER_UNLIM over home at the last registered height; registers it. */
+    void returnHomeAndLoiter(Number radius = LoiterPoint.DEFAULT_RADIUS) {
+        String w = 'returnHomeAndLoiter'
+        addRegistered(new LoiterPoint(w, overHome(w), Args.radius(w, radius)))
+    }
+
+    /** NAV_LAND at home: the vehicle flies there at the height it has, then lands; registers home. */
+    void returnHomeAndLand(Number yaw = Float.NaN, Number landMode = 0) {
+        String w = 'returnHomeAndLand'
+        Position h = homeFor(w)
+        add(new LandingPoint(w, h, Args.yaw(w, yaw), Args.landMode(w, landMode)))
+        register(h)
+    }
+
+    // ---- speed, height, time
+
+    /** DO_CHANGE_SPEED: m/s; speedType 0 airspeed (default), 1 ground speed, 2 climb, 3 descent. */
+    void speed(Number newSpeed, Number speedType = ChangeSpeed.DEFAULT_TYPE) {
+        add(new ChangeSpeed((float) Args.positive('speed', 'speed', newSpeed), Args.speedType('speed', speedType)))
+    }
+
+    /**
+     * A NAV_WAYPOINT at the last registered position (or home) at the new height, metres above mean
+     * sea level (ArduPilot rejects DO_CHANGE_ALTITUDE items, design §5); registers that position.
+     */
+    void altitude(Number height) {
+        Position from = lastPosition('altitude')
+        waypoint('altitude', from.atHeight(Args.number('altitude', 'height', height)))
+    }
+
+    /** NAV_DELAY: wait this many seconds before the next navigation command. */
+    void delay(Number seconds) {
+        add(new DelayCommand((float) Args.notNegative('delay', 'time', seconds)))
+    }
+
+    // ---- survey
+
+    /** The survey pattern of SurveyArea from the last registered position (or home); registers that base. */
+    void surveyArea(Number length, Number width, Number spacing = SurveyArea.DEFAULT_SPACING,
+                    String direction = SurveyArea.DEFAULT_DIRECTION.name()) {
+        survey(lastPosition('surveyArea'), length, width, spacing, direction)
+    }
+
+    void surveyArea(Number length, Number width, String direction) {
+        survey(lastPosition('surveyArea'), length, width, SurveyArea.DEFAULT_SPACING, direction)
+    }
+
+    void surveyArea(Position base, Number length, Number width, Number spacing = SurveyArea.DEFAULT_SPACING,
+                    String direction = SurveyArea.DEFAULT_DIRECTION.name()) {
+        survey(Args.position('surveyArea', base), length, width, spacing, direction)
+    }
+
+    void surveyArea(Position base, Number length, Number width, String direction) {
+        survey(Args.position('surveyArea', base), length, width, SurveyArea.DEFAULT_SPACING, direction)
+    }
+
+    private void survey(Position base, Number length, Number width, Number spacing, String direction) {
+        String w = 'surveyArea'
+        double l = Args.notNegative(w, 'length', length)
+        double wd = Args.notNegative(w, 'width', width)
+        double s = Args.positive(w, 'spacing', spacing)
+        SurveyDirection d
+        try {
+            d = SurveyDirection.parse(direction)
+        } catch (IllegalArgumentException e) {
+            throw new DslException("${w}: ${e.message}")
+        }
+        SurveyArea area
+        try {
+            area = new SurveyArea(base, l, wd, s, d)
+        } catch (IllegalArgumentException e) {
+            throw new DslException("${w}: ${e.message}")
+        }
+        add(area)
+        register(base)
+    }
+
+    // ---- camera
+
+    /** IMAGE_START_CAPTURE for one picture. */
+    void capturePhoto() {
+        add(new CameraPoint('capturePhoto', 0f, 1))
+    }
+
+    /** IMAGE_START_CAPTURE for {@code photos} pictures, {@code timeBetween} seconds apart. */
+    void captureSeveralPhotos(Number photos, Number timeBetween = CameraPoint.DEFAULT_INTERVAL) {
+        String w = 'captureSeveralPhotos'
+        int n = Args.whole(w, 'number of photos', photos, 1, Integer.MAX_VALUE)
+        add(new CameraPoint(w, (float) Args.positive(w, 'interval', timeBetween), n))
+    }
+
+    /** IMAGE_START_CAPTURE every {@code timeBetween} seconds until stopCapturing. */
+    void captureUntilStop(Number timeBetween = CameraPoint.DEFAULT_INTERVAL) {
+        add(new CameraPoint('captureUntilStop', (float) Args.positive('captureUntilStop', 'interval', timeBetween), 0))
+    }
+
+    /** IMAGE_STOP_CAPTURE. */
+    void stopCapturing() {
+        add(new CameraStopPoint())
+    }
+
+    // ---- jumps
+
+    /**
+     * A ground-side jump (F-20): when the vehicle reaches the item before this command, the ground
+     * station sends it to item {@code item} (the uploaded seq, home = 0), at most {@code repetitions}
+     * times. Emits no item.
+     */
+    void jumpToItem(Number item, Number repetitions = 1) {
+        String w = 'jumpToItem'
+        int target = Args.whole(w, 'item', item, 0, MAX_ITEMS - 1)
+        int times = Args.whole(w, 'number of repetitions', repetitions, 1, Integer.MAX_VALUE)
+        if (!commands.any { it instanceof MissionPoint }) {
+            throw new DslException("${w}: no mission item before it: the jump happens when the item before it is reached")
+        }
+        JumpToItem j = new JumpToItem(target, times)
+        commands << (DroneCommand) j
+        jumps[j] = new DslException("${w}: there is no item ${target}")
+    }
+
+    // ---- airspace (docs/airspace.md)
+
+    /** The mission's geofence, uploaded before it; {@code enable true} switches it on at the start. */
+    void fence(@DelegatesTo(value = FenceBuilder, strategy = Closure.DELEGATE_FIRST) Closure body) {
+        if (!missionFence.isEmpty()) {
+            throw new DslException('fence: the mission has a fence already: one fence { } block a mission')
+        }
+        FenceBuilder b = FenceBuilder.build(body)
+        missionFence = b.fence()
+        fenceEnabled = b.enabled()
+    }
+
+    /** Rally points, uploaded before the mission: where the vehicle may return instead of home. */
+    void rally(Position... points) {
+        if (points == null || points.length == 0) {
+            throw new DslException('rally: expected one or more positions')
+        }
+        points.each { Position p -> rallyPoints << Args.position('rally', p) }
+        rallyOrigin = new DslException('rally')
+    }
+
+    // ---- building
+
+    @PackageScope
+    Mission build() {
+        if (!commands.any { it instanceof MissionPoint }) {
+            throw new DslException("mission '${missionName}' has no items: expected at least one mission command"
+                    + " (goPos, move, takeOff, surveyArea, ...)")
+        }
+        Mission m = new Mission(missionName, missionHome, commands, belowHomeAllowed)
+        if (missionHome != null && !belowHomeAllowed) {
+            Position low = rallyPoints.find { Position p -> p.hae() < missionHome.hae() + HeightCheck.CLEARANCE }
+            if (low != null) {
+                DslException e = new DslException("rally: the rally point ${low} is lower than home plus " +
+                        "${HeightCheck.CLEARANCE as int} m (${missionHome.hae() + HeightCheck.CLEARANCE} m); a vehicle returning there" +
+                        " would fly into the ground. Say 'allowBelowHome true' if it is meant")
+                e.stackTrace = rallyOrigin.stackTrace
+                throw e
+            }
+        }
+        m.setAirspace(missionFence, RallyPoints.at(rallyPoints), fenceEnabled)
+        HeightCheck.firstTooLow(m, missionHome).ifPresent { HeightCheck.TooLow low ->
+            DslException e = new DslException(low.message())
+            e.stackTrace = origins[low.point()].stackTrace
+            throw e
+        }
+        int count = m.missionPoints()
+        if (count > MAX_ITEMS) {
+            throw new DslException("mission '${missionName}' has ${count} items, home included; a MAVLink mission holds"
+                    + " at most ${MAX_ITEMS}")
+        }
+        jumps.each { JumpToItem j, DslException e ->
+            if (j.item() >= count) {
+                DslException full = new DslException("${e.message}: mission '${missionName}' has items 0 to ${count - 1}"
+                        + " (0 is home)")
+                full.stackTrace = e.stackTrace
+                throw full
+            }
+        }
+        m
+    }
+
+    // ---- position tracking
+
+    private void waypoint(String word, Position p) {
+        addRegistered(new GoToPoint(word, p))
+    }
+
+    /** Adds a point and makes its position the one later relative commands start from. */
+    private void addRegistered(MissionPoint point) {
+        add(point)
+        register(point.position)
+    }
+
+    private void add(DroneCommand c) {
+        if (c instanceof MissionPoint) {
+            origins[(MissionPoint) c] = new DslException('')
+        }
+        commands << c
+    }
+
+    private void register(Position p) {
+        lastRegistered = p
+    }
+
+    /** Where relative commands start: the last registered position, else home. */
+    private Position lastPosition(String word) {
+        if (lastRegistered != null) {
+            return lastRegistered
+        }
+        if (missionHome != null) {
+            return missionHome
+        }
+        throw new DslException("${word}: there is no position to start from yet: name the mission's home"
+                + " ('home lat, lon, hae') or go to a position (goPos, ...) before it")
+    }
+
+    /** Home's latitude and longitude at the last registered height: returning never goes lower than the mission flew. */
+    private Position overHome(String word) {
+        Position h = homeFor(word)
+        if (lastRegistered == null) {
+            throw new DslException("${word}: there is no height to return at yet: the mission goes nowhere before it;"
+                    + " go somewhere first (takeOff, goPos, move, ...), or use returnHomeAndLand()")
+        }
+        h.atHeight(lastRegistered.hae())
+    }
+
+    private Position homeFor(String word) {
+        if (missionHome == null) {
+            throw new DslException("${word}: the mission has no home yet: write 'home lat, lon, hae' before it")
+        }
+        missionHome
+    }
+
+    private static Position relative(String word, Position from, Number north, Number east, Number up) {
+        NedOffset.offset(from, Args.number(word, 'north offset', north), Args.number(word, 'east offset', east),
+                -Args.number(word, 'up offset', up))
+    }
+
+    private static int turnCount(String word, Number turns) {
+        Args.whole(word, 'number of turns', turns, 1, 65535)
+    }
+
+    private static int loiterSeconds(String word, Number seconds) {
+        Args.whole(word, 'time', seconds, 0, 65535)
+    }
+
+    // ---- what the builder does not answer
+
+    /**
+     * A command called with arguments it does not take: a script error listing its forms. A name
+     * close to a command (a typo) that the script does not know either: a script error suggesting the
+     * command. Anything else goes on to the script (variables holding closures, platform words).
+     */
+    def methodMissing(String name, Object args) {
+        Object[] argv = args instanceof Object[] ? (Object[]) args : [args] as Object[]
+        if (FORMS.containsKey(name)) {
+            throw new DslException("${name}: expected ${FORMS[name].join(' or ')}, got ${types(argv)}")
+        }
+        List<String> close = closeCommands(name)
+        if (!close.isEmpty()) {
+            try {
+                return InvokerHelper.invokeMethod(body.owner, name, argv)
+            } catch (GroovyRuntimeException e) {
+                if (!missing(e, name)) {
+                    throw e
+                }
+                throw new DslException("unknown mission command '${name}'; did you mean ${close.collect { "'${it}'" }.join(' or ')}?")
+            }
+        }
+        throw new MissingMethodException(name, MissionBuilder, argv)
+    }
+
+    /** No properties: names go on to the script, except that a command without its () gets a hint. */
+    @Override
+    Object getProperty(String name) {
+        if (FORMS.containsKey(name)) {
+            try {
+                return InvokerHelper.getProperty(body.owner, name)
+            } catch (GroovyRuntimeException ignored) {
+                throw new DslException("'${name}' is a mission command, but Groovy read it as a variable here: write"
+                        + " '${name}()' or '${name} arguments'; a negative first argument needs parentheses, e.g."
+                        + " '${name}(-10, ...)' (Groovy reads '${name} -10' as '${name} minus 10')")
+            }
+        }
+        throw new MissingPropertyException(name, MissionBuilder)
+    }
+
+    @Override
+    void setProperty(String name, Object value) {
+        throw new MissingPropertyException(name, MissionBuilder)
+    }
+
+    /** Whether e (or what it wraps) says that the method {@code name} does not exist. */
+    private static boolean missing(Throwable e, String name) {
+        for (Throwable t = e; t != null; t = t.cause == t ? null : t.cause) {
+            if (t instanceof MissingMethodException) {
+                return ((MissingMethodException) t).method == name
+            }
+        }
+        false
+    }
+
+    private static String types(Object[] args) {
+        '(' + args.collect { Object a -> a == null ? 'null' : a instanceof GString ? 'String' : a.getClass().simpleName }.join(', ') + ')'
+    }
+
+    private static List<String> closeCommands(String name) {
+        String n = name.toLowerCase(Locale.ROOT)
+        FORMS.keySet().findAll { String k -> distance(k.toLowerCase(Locale.ROOT), n) <= 2 }.sort() as List<String>
+    }
+
+    private static int distance(String a, String b) {
+        int[] prev = new int[b.length() + 1]
+        int[] cur = new int[b.length() + 1]
+        for (int j = 0; j <= b.length(); j++) {
+            prev[j] = j
+        }
+        for (int i = 1; i <= a.length(); i++) {
+            cur[0] = i
+            for (int j = 1; j <= b.length(); j++) {
+                int cost = a.charAt(i - 1) == b.charAt(j - 1) ? 0 : 1
+                cur[j] = Math.min(Math.min(cur[j - 1] + 1, prev[j] + 1), prev[j - 1] + cost)
+            }
+            int[] swap = prev
+            prev = cur
+            cur = swap
+        }
+        prev[b.length()]
+    }
+}

@@ -1,0 +1,44 @@
+package dolphin.mission.model;
+
+import com.MAVLink.Messages.MAVLinkMessage;
+import com.MAVLink.common.msg_mission_set_current;
+import dolphin.mavlink.MAVLinkNode;
+import java.util.List;
+
+/**
+ * {@code jumpToItem item, repetitions}: a ground-side jump (F-20). When the vehicle reaches the item
+ * before this command, the ground station sends MISSION_SET_CURRENT(item), at most
+ * {@code repetitions} times per flight. {@code item} is the uploaded seq (home is 0).
+ */
+public final class JumpToItem extends DroneCommand {
+
+    private final int item;
+    private final int repetitions;
+
+    public JumpToItem(int item, int repetitions) {
+        this.item = item;
+        this.repetitions = repetitions;
+    }
+
+    public int item() {
+        return item;
+    }
+
+    public int repetitions() {
+        return repetitions;
+    }
+
+    @Override
+    public String name() {
+        return "jumpToItem";
+    }
+
+    @Override
+    public List<MAVLinkMessage> toMavLinkMessage(MAVLinkNode dest) {
+        msg_mission_set_current m = new msg_mission_set_current();
+        m.target_system = (short) dest.getMavLinkId();
+        m.target_component = (short) dest.getAutopilotCompid();
+        m.seq = item;
+        return List.of(m);
+    }
+}

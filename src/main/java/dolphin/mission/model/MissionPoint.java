@@ -1,0 +1,53 @@
+package dolphin.mission.model;
+
+import com.MAVLink.Messages.MAVLinkMessage;
+import dolphin.core.Position;
+import dolphin.mavlink.MAVLinkNode;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * A command that becomes one or more mission items (report Listing 7). Its position may be null for
+ * commands that have none (speed, delay, camera).
+ */
+public abstract class MissionPoint extends DroneCommand {
+
+    private final String word;
+    private final Position position;
+
+    /** @param word the DSL word that made the point, e.g. "moveAndLoiterTime" */
+    protected MissionPoint(String word, Position position) {
+        this.word = java.util.Objects.requireNonNull(word, "word");
+        this.position = position;
+    }
+
+    @Override
+    public final String name() {
+        return word;
+    }
+
+    public Position getPosition() {
+        return position;
+    }
+
+    /** The items, numbered from {@code seq}. */
+    public abstract List<MissionItem> items(int seq);
+
+    /** How many items {@link #items} emits; always equal to its size (F-4). */
+    public int messageCount() {
+        return items(0).size();
+    }
+
+    @Override
+    public List<MAVLinkMessage> toMavLinkMessage(MAVLinkNode dest) {
+        return toMavLinkMessage(dest, 0);
+    }
+
+    public List<MAVLinkMessage> toMavLinkMessage(MAVLinkNode dest, int seq) {
+        List<MAVLinkMessage> out = new ArrayList<>();
+        for (MissionItem i : items(seq)) {
+            out.add(i.toMessage(dest.getMavLinkId(), dest.getAutopilotCompid()));
+        }
+        return out;
+    }
+}

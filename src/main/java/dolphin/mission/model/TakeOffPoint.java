@@ -1,0 +1,42 @@
+package dolphin.mission.model;
+
+import com.MAVLink.enums.MAV_CMD;
+import dolphin.core.Position;
+import java.util.List;
+import java.util.Objects;
+
+/**
+ * Take off and climb to a position: one MAV_CMD_NAV_TAKEOFF (reference C.6 rows 4 and 5).
+ * p1 = pitch (degrees, default 15), p2 = p3 = 0, p4 = yaw (degrees, default NaN: keep the yaw mode).
+ */
+public final class TakeOffPoint extends MissionPoint {
+
+    public static final float DEFAULT_PITCH = 15f;
+
+    private final float pitch;
+    private final float yaw;
+
+    public TakeOffPoint(String word, Position target, float pitch, float yaw) {
+        super(word, Objects.requireNonNull(target, "target"));
+        this.pitch = pitch;
+        this.yaw = yaw;
+    }
+
+    public float pitch() {
+        return pitch;
+    }
+
+    public float yaw() {
+        return yaw;
+    }
+
+    @Override
+    public List<MissionItem> items(int seq) {
+        return List.of(MissionItem.at(seq, MAV_CMD.MAV_CMD_NAV_TAKEOFF, getPosition(), pitch, 0, 0, yaw));
+    }
+
+    @Override
+    public String toString() {
+        return name() + " " + getPosition() + " pitch " + pitch + " yaw " + yaw;
+    }
+}

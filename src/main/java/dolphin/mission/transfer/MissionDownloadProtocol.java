@@ -1,0 +1,176 @@
+package dolphin.mission.transfer;
+
+import dolphin.mission.model.MissionItem;
+import dolphin.mission.model.MissionType;
+import com.MAVLink.Messages.MAVLinkMessage;
+import com.MAVLink.common.msg_mission_ack;
+import com.MAVLink.common.msg_mission_count;
+import com.MAVLink.common.msg_mission_item;
+import com.MAVLink.common.msg_mission_item_int;
+import com.MAVLink.common.msg_mission_request_int;
+import com.MAVLink.common.msg_mission_request_list;
+import com.MAVLink.enums.MAV_FRAME;
+import com.MAVLink.enums.MAV_MISSION_RESULT;
+import dolphin.mavlink.MAVLinkCommunications;
+import dolphin.mavlink.MAVLinkNode;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+
+/**
+ * Downloads a vehicle's mission (reference C.11, with storage, timeouts and retries): MISSION_REQUEST_LIST
+ * until MISSION_COUNT, then MISSION_REQUEST_INT for each seq, again on timeout, accepting
+ * MISSION_ITEM_INT (or float MISSION_ITEM, converted), and the final MISSION_ACK ACCEPTED.
+ * The result's items include item 0 (ArduPilot's home).
+ */
+public final class MissionDownloadProtocol {
+
+    private final MAVLinkCommunications comms;
+    private final MAVLinkNode node;
+    private final MissionTransfers transfers;
+
+    MissionDownloadProtocol(MAVLinkCommunications comms, MAVLinkNode node, MissionTransfers transfers) {
+        this.comms = comms;
+        this.node = node;
+        this.transfers = transfers;
+    }
+
+    /** Downloads the vehicle's mission; from any thread. */
+    public CompletableFuture<TransferResult> download() {
+        return download(comms.missionTransferConfig(), TransferProgress.NONE);
+    }
+
+    public CompletableFuture<TransferResult> download(MissionTransferConfig config, TransferProgress progress) {
+        return download(MissionType.MISSION, config, progress);
+    }
+
+    /** Downloads the vehicle's fence, rally points or mission; from any thread. */
+    public CompletableFuture<TransferResult> download(MissionType type) {
+        return download(type, comms.missionTransferConfig(), TransferProgress.NONE);
+    }
+
+    public CompletableFuture<TransferResult> download(MissionType type, MissionTransferConfig config, TransferProgress progress) {
+        Download d = new Download(comms, node, config, progress, type);
+        transfers.submit(d);
+        return d.result;
+    }
+
+    /** A float MISSION_ITEM as an item: latitude and longitude to degE7 in global frames. */
+    static MissionItem fromFloat(msg_mission_item m) {
+        boolean global = switch (m.frame) {
+            case MAV_FRAME.MAV_FRAME_GLOBAL, MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT, MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT,
+                 MAV_FRAME.MAV_FRAME_GLOBAL_INT, MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT,
+                 MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT_INT -> true;
+            default -> false;
+        };
+        int x = global ? MissionItem.degE7(m.x) : Math.round(m.x);
+        int y = global ? MissionItem.degE7(m.y) : Math.round(m.y);
+        return new MissionItem(m.seq, m.command, m.frame, m.param1, m.param2, m.param3, m.param4, x, y, m.z, m.autocontinue != 0);
+    }
+
+    /** The state machine of one download; communications thread only. */
+    private static final class Download extends MissionTransfer {
+        private final List<MissionItem> items = new ArrayList<>();
+        private int count = -1;        // -1 until MISSION_COUNT
+        private int tries;
+
+        Download(MAVLinkCommunications comms, MAVLinkNode node, MissionTransferConfig config, TransferProgress progress,
+                 MissionType type) {
+            super(comms, node, config, progress, type);
+        }
+
+        @Override
+        String what() {
+            return "download from";
+        }
+
+        @Override
+        void start() {
+            sendList();
+        }
+
+        private void sendList() {
+            msg_mission_request_list m = new msg_mission_request_list();
+            m.target_system = (short) node.getMavLinkId();
+            m.target_component = (short) node.getAutopilotCompid();
+            m.mission_type = (short) type.wire();
+            tries++;
+            send(m);
+            arm(() -> {
+                if (tries >= tries()) {
+                    fail("no MISSION_COUNT after " + sent(tries, "MISSION_REQUEST_LIST"));
+                } else {
+                    resends++;
+                    sendList();
+                }
+            });
+        }
+
+        private void request() {
+            msg_mission_request_int m = new msg_mission_request_int();
+            m.target_system = (short) node.getMavLinkId();
+            m.target_component = (short) node.getAutopilotCompid();
+            m.seq = items.size();
+            m.mission_type = (short) type.wire();
+            tries++;
+            send(m);
+            arm(() -> {
+                if (tries >= tries()) {
+                    fail("no item " + items.size() + " of " + count + " after " + sent(tries, "MISSION_REQUEST_INT"));
+                } else {
+                    resends++;
+                    request();
+                }
+            });
+        }
+
+        @Override
+        void handle(MAVLinkMessage message) {
+            if (message instanceof msg_mission_count c) {
+                if (count < 0) {            // a later COUNT answers a duplicated REQUEST_LIST: ignored
+                    count = c.count;
+                    tries = 0;
+                    progress.progress(0, count);
+                    if (count == 0) {
+                        finishDownload();
+                    } else {
+                        request();
+                    }
+                }
+            } else if (message instanceof msg_mission_item_int m) {
+                item(MissionItem.fromMessage(m));
+            } else if (message instanceof msg_mission_item m) {
+                item(fromFloat(m));
+            } else if (message instanceof msg_mission_ack a && a.type == MAV_MISSION_RESULT.MAV_MISSION_INVALID_SEQUENCE) {
+                ignoredAcks++;              // a late ACK of a duplicated item from an earlier upload, on a noisy link
+            } else if (message instanceof msg_mission_ack a && a.type != MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
+                fail(MissionUploadProtocol.resultName(a.type) + (count < 0 ? " (answering MISSION_REQUEST_LIST)"
+                        : " (answering the request for item " + items.size() + " of " + count + ")"));
+            }
+        }
+
+        private void item(MissionItem item) {
+            if (count < 0 || item.seq() != items.size()) {
+                return;                     // a duplicate or a late answer to an earlier request
+            }
+            items.add(item);
+            tries = 0;
+            progress.progress(items.size(), count);
+            if (items.size() == count) {
+                finishDownload();
+            } else {
+                request();
+            }
+        }
+
+        private void finishDownload() {
+            msg_mission_ack ack = new msg_mission_ack();
+            ack.target_system = (short) node.getMavLinkId();
+            ack.target_component = (short) node.getAutopilotCompid();
+            ack.type = MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
+            ack.mission_type = (short) type.wire();
+            send(ack);
+            succeed(items);
+        }
+    }
+}

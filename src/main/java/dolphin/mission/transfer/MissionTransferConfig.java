@@ -1,0 +1,32 @@
+package dolphin.mission.transfer;
+
+import java.time.Duration;
+
+/**
+ * Timeouts and retries of mission transfers (design §6, spec "default 1500 ms, max 5 retries").
+ *
+ * @param timeout how long, in clock time, to wait for the vehicle's next message before sending again
+ * @param tries how many times a message (MISSION_COUNT, an item, MISSION_REQUEST_LIST, a request) is sent
+ *              without an answer before the transfer fails
+ */
+public record MissionTransferConfig(Duration timeout, int tries) {
+
+    public static final long DEFAULT_TIMEOUT_MILLIS = 1500;
+    public static final int DEFAULT_TRIES = 5;
+    public static final MissionTransferConfig DEFAULT =
+            new MissionTransferConfig(Duration.ofMillis(DEFAULT_TIMEOUT_MILLIS), DEFAULT_TRIES);
+
+    public MissionTransferConfig {
+        if (timeout == null || timeout.isNegative() || timeout.isZero()) {
+            throw new IllegalArgumentException("the mission transfer timeout must be positive, got " + timeout);
+        }
+        if (tries < 1) {
+            throw new IllegalArgumentException("mission transfers need at least 1 try, got " + tries);
+        }
+    }
+
+    /** "1.5 s", for messages. */
+    String timeoutText() {
+        return java.math.BigDecimal.valueOf(timeout.toMillis(), 3).stripTrailingZeros().toPlainString() + " s";
+    }
+}

@@ -1,0 +1,220 @@
+package dolphin.mission.transfer;
+
+import dolphin.mission.model.Mission;
+import dolphin.mission.model.MissionItem;
+import dolphin.mission.model.MissionType;
+import com.MAVLink.Messages.MAVLinkMessage;
+import com.MAVLink.common.msg_mission_ack;
+import com.MAVLink.common.msg_mission_count;
+import com.MAVLink.common.msg_mission_request;
+import com.MAVLink.common.msg_mission_request_int;
+import com.MAVLink.enums.MAV_MISSION_RESULT;
+import dolphin.mavlink.EnumNames;
+import dolphin.mavlink.MAVLinkCommunications;
+import dolphin.mavlink.MAVLinkNode;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+
+/**
+ * Uploads a mission to one vehicle (MAVLink mission protocol, design §6; reference C.10 without
+ * its defects E-4, E-5, E-19). MISSION_COUNT, sent again on timeout until the first request;
+ * MISSION_REQUEST and MISSION_REQUEST_INT both answered with MISSION_ITEM_INT, again when repeated;
+ * the last item sent again when the next request does not come; MISSION_ACK ACCEPTED after the
+ * last item is success, any error ACK a failure naming the item, its command and the parameter.
+ * INVALID_SEQUENCE ACKs are counted and ignored (ArduPilot sends them for duplicated items on noisy
+ * links; it keeps going). Transfers of one vehicle run one at a time.
+ */
+public final class MissionUploadProtocol {
+
+    private final MAVLinkCommunications comms;
+    private final MAVLinkNode node;
+    private final MissionTransfers transfers;
+
+    MissionUploadProtocol(MAVLinkCommunications comms, MAVLinkNode node, MissionTransfers transfers) {
+        this.comms = comms;
+        this.node = node;
+        this.transfers = transfers;
+    }
+
+    /** Uploads the items (item 0 is home; seq must equal the index); from any thread. */
+    public CompletableFuture<TransferResult> upload(List<MissionItem> items) {
+        return upload(items, comms.missionTransferConfig(), TransferProgress.NONE);
+    }
+
+    /** Uploads a mission's items for this vehicle ({@link Mission#items} with the vehicle's home). */
+    public CompletableFuture<TransferResult> upload(Mission mission) {
+        return upload(mission.items(node.getHome()));
+    }
+
+    public CompletableFuture<TransferResult> upload(List<MissionItem> items, MissionTransferConfig config, TransferProgress progress) {
+        return upload(MissionType.MISSION, items, config, progress);
+    }
+
+    /** Uploads a fence's or rally points' items (numbered from 0, no home), or a mission's; from any thread. */
+    public CompletableFuture<TransferResult> upload(MissionType type, List<MissionItem> items) {
+        return upload(type, items, comms.missionTransferConfig(), TransferProgress.NONE);
+    }
+
+    public CompletableFuture<TransferResult> upload(MissionType type, List<MissionItem> items, MissionTransferConfig config,
+                                                    TransferProgress progress) {
+        Upload u = new Upload(comms, node, config, progress, type, List.copyOf(items));
+        transfers.submit(u);
+        return u.result;
+    }
+
+    /** Why a vehicle refused an item: "item 3 (NAV_WAYPOINT): MAV_MISSION_INVALID_PARAM7 (z = NaN)". */
+    static String describe(int result, MissionItem item, int count) {
+        String name = resultName(result);
+        if (item == null) {
+            return switch (result) {
+                case MAV_MISSION_RESULT.MAV_MISSION_NO_SPACE -> name + " (the vehicle has no room for " + count + " items)";
+                case MAV_MISSION_RESULT.MAV_MISSION_DENIED -> name + " (the vehicle accepts no mission transfer from us now;"
+                        + " is another ground station uploading?)";
+                default -> name + " (answering MISSION_COUNT " + count + ")";
+            };
+        }
+        String detail = switch (result) {
+            case MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED_FRAME -> "frame " + item.frameName() + " is not supported";
+            case MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED -> "command " + item.command() + " " + item.commandName()
+                    + " is not supported";
+            case MAV_MISSION_RESULT.MAV_MISSION_NO_SPACE -> "the vehicle has no room for " + count + " items";
+            case MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM1 -> "param1 = " + item.param1();
+            case MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM2 -> "param2 = " + item.param2();
+            case MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM3 -> "param3 = " + item.param3();
+            case MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM4 -> "param4 = " + item.param4();
+            case MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM5_X -> "x = " + item.x() + " (latitude " + item.x() * 1e-7 + ")";
+            case MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM6_Y -> "y = " + item.y() + " (longitude " + item.y() * 1e-7 + ")";
+            case MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM7 -> "z = " + item.z();
+            case MAV_MISSION_RESULT.MAV_MISSION_DENIED -> "the vehicle accepts no mission transfer from us now";
+            case MAV_MISSION_RESULT.MAV_MISSION_OPERATION_CANCELLED -> "the vehicle cancelled the upload";
+            default -> "frame " + item.frameName() + ", params " + item.param1() + ", " + item.param2() + ", " + item.param3()
+                    + ", " + item.param4() + ", x " + item.x() + ", y " + item.y() + ", z " + item.z();
+        };
+        return "item " + item.seq() + " (" + item.commandName() + "): " + name + " (" + detail + ")";
+    }
+
+    static String resultName(int result) {
+        return "MAV_MISSION_" + EnumNames.name(MAV_MISSION_RESULT.class, "MAV_MISSION_", result);
+    }
+
+    /** The state machine of one upload; communications thread only. */
+    private static final class Upload extends MissionTransfer {
+        private final List<MissionItem> items;
+        private boolean requested;      // a first request came: MISSION_COUNT is no longer sent
+        private int tries;              // sends of the current message without progress
+        private int lastSent = -1;      // the item last sent, named in errors
+        private int highest = -1;       // the highest seq requested
+
+        Upload(MAVLinkCommunications comms, MAVLinkNode node, MissionTransferConfig config, TransferProgress progress,
+               MissionType type, List<MissionItem> items) {
+            super(comms, node, config, progress, type);
+            this.items = items;
+        }
+
+        @Override
+        String what() {
+            return "upload to";
+        }
+
+        @Override
+        void start() {
+            for (int i = 0; i < items.size(); i++) {
+                if (items.get(i).seq() != i) {
+                    fail("item " + i + " has seq " + items.get(i).seq() + ": items must be numbered 0, 1, 2, ... in order");
+                    return;
+                }
+            }
+            sendCount();
+        }
+
+        private void sendCount() {
+            msg_mission_count c = new msg_mission_count();
+            c.target_system = (short) node.getMavLinkId();
+            c.target_component = (short) node.getAutopilotCompid();
+            c.count = items.size();
+            c.mission_type = (short) type.wire();
+            tries++;
+            send(c);
+            arm(this::countTimedOut);
+        }
+
+        private void countTimedOut() {
+            if (tries >= tries()) {
+                fail("no " + (items.isEmpty() ? "MISSION_ACK" : "MISSION_REQUEST") + " after " + sent(tries, "MISSION_COUNT"));
+            } else {
+                resends++;
+                sendCount();
+            }
+        }
+
+        private void sendItem(int seq) {
+            lastSent = seq;
+            tries++;
+            send(items.get(seq).toMessage(node.getMavLinkId(), node.getAutopilotCompid(), type));
+            arm(this::itemTimedOut);
+        }
+
+        /** The next request did not come: send the last item again (proactive resend). */
+        private void itemTimedOut() {
+            if (tries >= tries()) {
+                MissionItem item = items.get(lastSent);
+                String next = lastSent == items.size() - 1 ? "MISSION_ACK" : "MISSION_REQUEST for item " + (lastSent + 1);
+                String hint = lastSent == items.size() - 1 ? "; the vehicle may hold the whole mission and its ACK was lost:"
+                        + " download it to check" : "";
+                fail("no " + next + " after item " + lastSent + " (" + item.commandName() + ") was sent " + tries
+                        + (tries == 1 ? " time" : " times (" + config.timeoutText() + " apart)") + hint);
+            } else {
+                resends++;
+                sendItem(lastSent);
+            }
+        }
+
+        @Override
+        void handle(MAVLinkMessage message) {
+            if (message instanceof msg_mission_request r) {
+                request(r.seq);
+            } else if (message instanceof msg_mission_request_int r) {
+                request(r.seq);
+            } else if (message instanceof msg_mission_ack a) {
+                ack(a.type);
+            }
+        }
+
+        private void request(int seq) {
+            if (seq < 0 || seq >= items.size()) {
+                fail("the vehicle requested item " + seq + " but the " + type.label() + " has " + items.size() + " items (0 to "
+                        + (items.size() - 1) + ")");
+                return;
+            }
+            requested = true;
+            if (seq == lastSent) {
+                resends++;      // asked again: the item was lost; keep counting tries (no progress)
+            } else {
+                tries = 0;
+            }
+            if (seq > highest) {
+                highest = seq;
+                progress.progress(seq, items.size());
+            }
+            sendItem(seq);
+        }
+
+        private void ack(int result) {
+            if (result == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
+                if (items.isEmpty() || (requested && highest == items.size() - 1)) {
+                    progress.progress(items.size(), items.size());
+                    succeed(items);
+                } else if (!requested) {
+                    ignoredAcks++;      // a late ACK of an earlier transfer
+                } else {
+                    fail("the vehicle accepted the " + type.label() + " after requesting only items 0 to " + highest + " of "
+                            + items.size());
+                }
+            } else if (result == MAV_MISSION_RESULT.MAV_MISSION_INVALID_SEQUENCE) {
+                ignoredAcks++;          // a duplicated or reordered item on a noisy link; the vehicle keeps going
+            } else {
+                fail(describe(result, lastSent < 0 ? null : items.get(lastSent), items.size()));
+            }
+        }
+    }
+}

@@ -1,0 +1,41 @@
+package dolphin.mission.transfer;
+
+import dolphin.mission.model.MissionItem;
+import dolphin.core.EnvironmentException;
+import java.util.List;
+
+/**
+ * How a mission upload or download ended: success with the items (those uploaded, or those
+ * downloaded, item 0 included), or failure with a message a user can act on, e.g.
+ * "upload to vehicle 2 failed: item 3 (NAV_WAYPOINT): MAV_MISSION_INVALID_PARAM7 (z = NaN)".
+ *
+ * @param resends messages sent again (MISSION_COUNT, items, requests) because of a timeout or a repeated request
+ * @param ignoredAcks MAV_MISSION_INVALID_SEQUENCE ACKs ignored during an upload (noisy links, as QGC does)
+ */
+public record TransferResult(boolean success, String error, List<MissionItem> items, int resends, int ignoredAcks) {
+
+    public TransferResult {
+        items = items == null ? List.of() : List.copyOf(items);
+    }
+
+    static TransferResult ok(List<MissionItem> items, int resends, int ignoredAcks) {
+        return new TransferResult(true, null, items, resends, ignoredAcks);
+    }
+
+    static TransferResult failed(String error, int resends, int ignoredAcks) {
+        return new TransferResult(false, error, List.of(), resends, ignoredAcks);
+    }
+
+    /** The items, or an EnvironmentException with the error. */
+    public List<MissionItem> orThrow() {
+        if (!success) {
+            throw new EnvironmentException(error);
+        }
+        return items;
+    }
+
+    @Override
+    public String toString() {
+        return success ? "success (" + items.size() + " items, " + resends + " resends)" : error;
+    }
+}

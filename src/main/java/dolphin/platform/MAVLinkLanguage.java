@@ -1,0 +1,165 @@
+package dolphin.platform;
+
+import dolphin.mavlink.MAVLinkNode;
+import com.MAVLink.Messages.MAVLinkMessage;
+import dolphin.core.Node;
+import dolphin.core.NodeSet;
+import dolphin.dsl.DslException;
+import dolphin.dsl.DslExtension;
+import dolphin.dsl.ScriptContext;
+import dolphin.mavlink.codec.MessageTable;
+import dolphin.mission.dsl.MissionRecorder;
+import dolphin.mission.dsl.PositionWords;
+import dolphin.core.EnvironmentException;
+import dolphin.mission.model.Mission;
+import dolphin.mission.file.MissionFile;
+import dolphin.mission.model.MissionItem;
+import dolphin.mission.model.RawItemPoint;
+import dolphin.mission.transfer.TransferResult;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import org.codehaus.groovy.control.customizers.ImportCustomizer;
+
+/**
+ * What the MAVLink platform adds to the language: the generated message classes and enums imported
+ * into scripts, the words {@code mission { }}, {@code pos { }} and {@code moveDistance { }} (static
+ * imports of {@code dolphin.mission.dsl.MissionDsl}, so IDEs see them), {@code move(position, { })}
+ * ({@link PositionWords}), {@code sendMessage(vehicles, message)}, {@code downloadMission(vehicle)} and
+ * {@code fenceBreached(vehicle)}. Usable without a link, e.g. to
+ * check scripts or build missions without vehicles.
+ */
+public final class MAVLinkLanguage implements DslExtension {
+
+    @Override
+    public void addImports(ImportCustomizer imports) {
+        imports.addStarImports("com.MAVLink.minimal", "com.MAVLink.standard", "com.MAVLink.common",
+                "com.MAVLink.ardupilotmega", "com.MAVLink.enums", "com.MAVLink.Messages");
+        // named by string: MissionDsl is a Groovy class, compiled after the Java sources
+        imports.addStaticStars("dolphin.mission.dsl.MissionDsl");
+    }
+
+    @Override
+    public List<Object> words(ScriptContext context) {
+        return List.of(new Words(context), new PositionWords());
+    }
+
+    /** The platform's DSL words. */
+    public static final class Words {
+        /** How long, in real time, downloadMission waits at most (the transfer itself times out sooner). */
+        static final java.time.Duration DOWNLOAD_DEADLINE = java.time.Duration.ofSeconds(120);
+        private final ScriptContext context;
+
+        Words(ScriptContext context) {
+            this.context = context;
+        }
+
+        /** Sends a raw MAVLink message to every vehicle of the set, at once (not a task). */
+        public void sendMessage(NodeSet vehicles, MAVLinkMessage message) {
+            for (Node n : vehicles) {
+                if (!(n instanceof MAVLinkNode node)) {
+                    throw new DslException("sendMessage: vehicle " + n.getId() + " is not a MAVLink vehicle");
+                }
+                node.send(message);
+                context.listener().message("sent " + MessageTable.get().name(message.msgid) + " to vehicle " + node.getId());
+            }
+        }
+
+        /**
+         * The vehicle's current mission, downloaded (MISSION_REQUEST_LIST ...), as a Mission whose
+         * home is the vehicle's item 0 and whose points are its items 1, 2, ... Blocks the script
+         * until the download ends; fails with the download's error.
+         */
+        public Mission downloadMission(Object vehicle) {
+            MAVLinkNode node = single("downloadMission", vehicle);
+            TransferResult r;
+            try {
+                r = node.getDownloadProtocol().download().get(DOWNLOAD_DEADLINE.toSeconds(), TimeUnit.SECONDS);
+            } catch (TimeoutException e) {
+                throw new EnvironmentException("downloadMission: no answer from vehicle " + node.getId() + " within "
+                        + DOWNLOAD_DEADLINE.toSeconds() + " s");
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new EnvironmentException("downloadMission: interrupted while downloading from vehicle " + node.getId());
+            } catch (ExecutionException e) {
+                throw new EnvironmentException("downloadMission: " + e.getCause());
+            }
+            List<MissionItem> items = r.orThrow();
+            context.listener().message("downloaded " + items.size() + " mission items from vehicle " + node.getId());
+            return RawItemPoint.mission("mission of vehicle " + node.getId(), items);
+        }
+
+        /**
+         * Whether the vehicle is outside its fence now, as its last FENCE_STATUS said (docs/airspace.md);
+         * false before any, as ArduPilot sends FENCE_STATUS only with its fence on. A condition:
+         * {@code waitFor { fenceBreached(v) } then ...}, {@code survey / { fenceBreached(v) }}.
+         */
+        public boolean fenceBreached(Object vehicle) {
+            return single("fenceBreached", vehicle).state().fenceBreached();
+        }
+
+        /**
+         * A mission task from a mission file (docs/mission-files.md, "Missions from files"): any
+         * format {@link MissionFile#read(Path)} reads, its fence and rally points with it. The path is
+         * relative to the current directory. Item 0 of the file (its planned home) is not flown: the
+         * vehicle's home takes its place, as ArduPilot does, and no DO_SET_HOME is sent. The fence
+         * stays as the vehicle has it unless {@code enableFence: true}; items lower than home plus the
+         * clearance are refused at the flight unless {@code allowBelowHome: true}.
+         */
+        public Mission missionFromFile(String path) {
+            return missionFromFile(Map.of(), path);
+        }
+
+        public Mission missionFromFile(Map<String, Object> options, String path) {
+            for (String key : options.keySet()) {
+                if (!List.of("enableFence", "name", "allowBelowHome").contains(key)) {
+                    throw new DslException("missionFromFile: unknown option '" + key
+                            + "' (expected enableFence, allowBelowHome, name)");
+                }
+            }
+            MissionFile file;
+            try {
+                file = MissionFile.read(Path.of(path));
+            } catch (java.nio.file.NoSuchFileException e) {
+                throw new DslException("missionFromFile: no file " + path + " (paths are relative to "
+                        + Path.of("").toAbsolutePath() + ")");
+            } catch (java.io.IOException e) {
+                throw new DslException("missionFromFile: cannot read " + path + ": " + e.getMessage());
+            } catch (IllegalArgumentException e) {
+                throw new DslException("missionFromFile: " + e.getMessage());
+            }
+            if (!file.hasMission()) {
+                throw new DslException("missionFromFile: " + path + " holds " + (file.fence().isEmpty() ? "rally points"
+                        : "a fence") + " but no mission");
+            }
+            String name = options.containsKey("name") ? String.valueOf(options.get("name"))
+                    : Path.of(path).getFileName().toString().replaceFirst("\\.[^.]*$", "");
+            Mission m = RawItemPoint.mission(name, null, file.mission(), Boolean.TRUE.equals(options.get("allowBelowHome")));
+            m.setAirspace(file.fence(), file.rally(), Boolean.TRUE.equals(options.get("enableFence")));
+            m.setVehicleProfile(file.vehicle());
+            context.words().forEach(w -> MissionRecorder.report(w, m));
+            context.listener().message("read " + (file.mission().size() - 1) + " mission items"
+                    + (file.fence().isEmpty() ? "" : ", a fence of " + file.fence().describe())
+                    + (file.rally().isEmpty() ? "" : ", " + file.rally().size() + (file.rally().size() == 1 ? " rally point" : " rally points")) + " from " + path);
+            return m;
+        }
+
+        private static MAVLinkNode single(String word, Object vehicle) {
+            Object v = vehicle;
+            if (v instanceof NodeSet set) {
+                java.util.Iterator<Node> it = set.iterator();
+                v = it.hasNext() ? it.next() : null;
+                if (v == null || it.hasNext()) {
+                    throw new DslException(word + ": expected one vehicle, got " + set);
+                }
+            }
+            if (!(v instanceof MAVLinkNode node)) {
+                throw new DslException(word + ": " + v + " is not a MAVLink vehicle");
+            }
+            return node;
+        }
+    }
+}

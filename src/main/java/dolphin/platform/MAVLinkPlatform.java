@@ -1,0 +1,56 @@
+package dolphin.platform;
+
+import dolphin.mavlink.MAVLinkCommunications;
+import dolphin.core.Node;
+import dolphin.core.NodeSet;
+import dolphin.core.Platform;
+import dolphin.dsl.DslExtension;
+import dolphin.dsl.ScriptContext;
+import java.util.List;
+import org.codehaus.groovy.control.customizers.ImportCustomizer;
+
+/** MAVLink vehicles for Dolphin scripts: the connected vehicles for pick, and the {@link MAVLinkLanguage}. */
+public final class MAVLinkPlatform implements Platform, DslExtension {
+
+    private final MAVLinkCommunications comms;
+    private final MAVLinkLanguage language = new MAVLinkLanguage();
+
+    public MAVLinkPlatform(MAVLinkCommunications comms) {
+        this.comms = comms;
+    }
+
+    public MAVLinkCommunications communications() {
+        return comms;
+    }
+
+    @Override
+    public String getName() {
+        return "MAVLink";
+    }
+
+    /** Vehicles heard within their connection timeout, by system id. */
+    @Override
+    public NodeSet getConnectedNodes() {
+        return new NodeSet(comms.nodes().stream().filter(Node::isConnected).toList());
+    }
+
+    @Override
+    public void setTelemetryListener(Runnable onTelemetry) {
+        comms.setTelemetryListener(onTelemetry);
+    }
+
+    @Override
+    public void addImports(ImportCustomizer imports) {
+        language.addImports(imports);
+    }
+
+    @Override
+    public List<Object> words(ScriptContext context) {
+        return language.words(context);
+    }
+
+    @Override
+    public void close() {
+        comms.close();
+    }
+}

@@ -1,0 +1,157 @@
+package dolphin.mission.transfer
+
+import dolphin.mission.model.Fence
+import dolphin.mission.model.FenceRegion
+import dolphin.mission.model.MissionItem
+import dolphin.mission.model.MissionType
+import dolphin.mission.model.RallyPoints
+import com.MAVLink.enums.MAV_CMD
+import com.MAVLink.enums.MAV_FRAME
+import dolphin.core.Position
+import dolphin.dsl.Engine
+import dolphin.dsl.EngineListener
+import dolphin.dsl.ScriptResult
+import dolphin.mavlink.FleetHarness
+import dolphin.platform.MAVLinkPlatform
+import dolphin.sim.FaultModel
+import dolphin.sim.SimOptions
+import dolphin.sim.VehicleKind
+import spock.lang.AutoCleanup
+import spock.lang.Specification
+import spock.lang.Timeout
+import spock.lang.Unroll
+
+import java.time.Duration
+import java.util.concurrent.TimeUnit
+
+/** Mission upload, download and verify against simulated vehicles (dolphin.sim), with random loss both ways. */
+@Timeout(120)
+class SimMissionTransferSpec extends Specification {
+
+    @AutoCleanup
+    FleetHarness h = new FleetHarness()
+
+    static List<MissionItem> missionAround(Position home, int points, double alt) {
+        def items = [MissionItem.at(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, home, 0, 0, 0, 0)]
+        items << MissionItem.at(1, MAV_CMD.MAV_CMD_NAV_TAKEOFF, Position.fromDegrees(home.latitudeDegrees(), home.longitudeDegrees(),
+                home.hae() + alt), 0, 0, 0, Float.NaN)
+        (2..points).each { i ->
+            items << MissionItem.at(i, MAV_CMD.MAV_CMD_NAV_WAYPOINT, Position.fromDegrees(home.latitudeDegrees() + i * 1e-4,
+                    home.longitudeDegrees() - i * 1e-4, home.hae() + alt + i), 0, 2, 0, Float.NaN)
+        }
+        items
+    }
+
+    @Unroll
+    def "#rounds uploads with #lossPct% loss both ways each complete and verify by download"() {
+        given:
+        def fleet = h.fleet(1, VehicleKind.COPTER, 1, SimOptions.DEFAULT, loss == 0 ? FaultModel.NONE : FaultModel.loss(loss, 7))
+        h.eventually(20) { assert h.node('1')?.home != null }
+        def node = h.node('1')
+        h.comms.missionTransferConfig = new MissionTransferConfig(Duration.ofMillis(1500), tries)
+
+        expect:
+        (1..rounds).each { round ->
+            def items = missionAround(node.home, 4 + round, 20 + round)
+            def up = node.uploadProtocol.upload(items).get(60, TimeUnit.SECONDS)
+            if (!up.success()) {
+                // only the lost final ACK may leave us unsure; the download below settles it
+                assert up.error().contains('its ACK was lost'): up.error()
+            }
+            def down = node.downloadProtocol.download().get(60, TimeUnit.SECONDS)
+            assert down.success(): down.error()
+            String diff = MissionVerification.firstDifference(items, down.items()).orElse(null)
+            assert diff == null
+            assert fleet.vehicle(1).mission().size() == items.size()
+        }
+
+        where: // tries make the ground station's give-up negligible (0.19^12 per exchange at 10 %); the
+        // vehicle's 8 s without an item (eight requests) gives up on about 2e-6 of the items at 10 %
+        loss | tries | rounds
+        0    | 5     | 3
+        0.1  | 12    | 5
+        lossPct = (int) (loss * 100)
+    }
+
+    def "a fence and rally points go up with their own mission_type, come back as ArduPilot stores them, and leave the mission alone"() {
+        given:
+        def fleet = h.fleet(1, VehicleKind.COPTER, 1, SimOptions.DEFAULT, FaultModel.NONE)
+        h.eventually(20) { assert h.node('1')?.home != null }
+        def node = h.node('1')
+        Position home = node.home
+        def mission = missionAround(home, 3, 20)
+        Fence fence = Fence.of([new FenceRegion.Polygon(true, [home.displace(-300, -300, 0), home.displace(-300, 300, 0),
+                                                               home.displace(300, 300, 0), home.displace(300, -300, 0)]),
+                                new FenceRegion.Circle(false, home.displace(100, 0, 0), 25.5)],
+                home.displace(0, 10, -30), MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT)
+        RallyPoints rally = RallyPoints.at([home.displace(50, 50, -40.3), home.displace(-50, 50, -45)])
+
+        when:
+        def up = [node.uploadProtocol.upload(mission), node.uploadProtocol.upload(MissionType.FENCE, fence.items()),
+                  node.uploadProtocol.upload(MissionType.RALLY, rally.items())]*.get(30, TimeUnit.SECONDS)
+        def downFence = node.downloadProtocol.download(MissionType.FENCE).get(30, TimeUnit.SECONDS)
+        def downRally = node.downloadProtocol.download(MissionType.RALLY).get(30, TimeUnit.SECONDS)
+        def downMission = node.downloadProtocol.download().get(30, TimeUnit.SECONDS)
+
+        then:
+        up.every { it.success() }
+        MissionVerification.firstDifference(MissionType.FENCE, fence.items(), downFence.items()) == Optional.empty()
+        MissionVerification.firstDifference(MissionType.RALLY, rally.items(), downRally.items()) == Optional.empty()
+        MissionVerification.firstDifference(mission, downMission.items()) == Optional.empty()
+        downFence.items()*.frame().toUnique() == [MAV_FRAME.MAV_FRAME_GLOBAL] // ArduPilot keeps no fence frame or altitude
+        downFence.items()*.z().toUnique() == [0f]
+        fleet.vehicle(1).fence() == fence
+        fleet.vehicle(1).rallyPoints() == rally
+        fleet.vehicle(1).mission().size() == mission.size()
+
+        when: 'a fence whose polygon stops short is refused as a whole, and the stored one stays'
+        def broken = node.uploadProtocol.upload(MissionType.FENCE, fence.items().take(2)).get(30, TimeUnit.SECONDS)
+
+        then:
+        !broken.success()
+        broken.error().startsWith('upload of the fence to vehicle 1 failed: item 1 (NAV_FENCE_POLYGON_VERTEX_INCLUSION): MAV_MISSION_ERROR')
+        fleet.vehicle(1).fence() == fence
+    }
+
+    def "with 30% loss both ways a download always returns what the vehicle holds, whatever became of the upload before it"() {
+        given: 'retries that outlast the loss (0.51^30 per exchange); the vehicle may still cancel an upload after 8 s without an item'
+        def fleet = h.fleet(1, VehicleKind.COPTER, 1, SimOptions.DEFAULT, FaultModel.loss(0.3, 7))
+        h.eventually(20) { assert h.node('1')?.home != null }
+        def node = h.node('1')
+        h.comms.missionTransferConfig = new MissionTransferConfig(Duration.ofMillis(1500), 30)
+
+        expect:
+        (1..4).each { round ->
+            node.uploadProtocol.upload(missionAround(node.home, 4 + round, 20 + round)).get(90, TimeUnit.SECONDS)
+            def down = node.downloadProtocol.download().get(90, TimeUnit.SECONDS)
+            assert down.success(): down.error()
+            assert MissionVerification.firstDifference(fleet.vehicle(1).mission(), down.items()).orElse(null) == null
+        }
+    }
+
+    def "a script downloads a vehicle's mission with downloadMission"() {
+        given:
+        h.fleet(1)
+        h.eventually(20) { assert h.node('1')?.home != null }
+        def node = h.node('1')
+        def items = missionAround(node.home, 3, 25)
+        assert node.uploadProtocol.upload(items).get(30, TimeUnit.SECONDS).success()
+        def messages = new java.util.concurrent.CopyOnWriteArrayList()
+        def engine = new Engine(new MAVLinkPlatform(h.comms), h.clock)
+        engine.addListener(new EngineListener() {
+            void message(String text) { messages << text }
+        })
+
+        when:
+        def result = engine.run('''
+            v = pick { id '1'; timeout 20 }
+            m = downloadMission(v)
+            message "points ${m.missionPoints()} first ${m.getCommandList()[0].item().commandName()}"
+        ''', 'download.dolphin').await(Duration.ofSeconds(30))
+
+        then:
+        result.outcome == ScriptResult.Outcome.COMPLETED
+        messages.contains('downloaded 4 mission items from vehicle 1')
+        messages.contains('points 4 first NAV_TAKEOFF')
+    }
+}
