@@ -21,7 +21,7 @@ import dolphin.core.WatcherTask
 import org.codehaus.groovy.runtime.InvokerHelper
 
 /**
- * The base class of every Dolphin script: the instructions of the language (reference A.1, A.2).
+ * The base class of every Dolphin script: the instructions of the language (docs/runtime-semantics.md).
  * Platform words come from {@link DslExtension#words} through {@link #methodMissing}.
  */
 abstract class DolphinScript extends Script implements DslScript {
@@ -51,10 +51,7 @@ abstract class DolphinScript extends Script implements DslScript {
     /** {@code pick { count 2; type 'UAV'; ... }}: binds free vehicles, waiting up to the timeout. */
     NodeSet pick(@DelegatesTo(value = Picker, strategy = Closure.DELEGATE_FIRST) Closure clauses) {
         Picker picker = new Picker()
-        Closure c = (Closure) clauses.clone()
-        c.delegate = picker
-        c.resolveStrategy = Closure.DELEGATE_FIRST
-        c.call()
+        Blocks.run(clauses, picker)
         NodeSet chosen = env().select(picker.filter(), picker.requestedCount(), picker.requestedTimeout())
         if (chosen.is(NodeSet.EMPTY)) {
             throw new Halt("pick: could not find ${picker.requestedCount()} free vehicle(s) matching ${picker.filter()}"
@@ -101,7 +98,8 @@ abstract class DolphinScript extends Script implements DslScript {
      * <p>Groovy reads {@code execute v1: waitFor {c} then task} as the command chain
      * {@code execute(v1: waitFor {c}).then(task)}, so execute may first get a half-built instruction
      * (waitFor/until/during/watch); it then returns a {@link PendingExecute} whose
-     * {@code then}/{@code run}/{@code onError} completes it and runs everything (report Listings 2, 3).
+     * {@code then}/{@code run}/{@code onError} completes it and runs everything (the report's examples
+     * are written this way).
      */
     Object execute(Object what) {
         if (pendingExecute != null) {
@@ -354,10 +352,7 @@ abstract class DolphinScript extends Script implements DslScript {
         Task onError(@DelegatesTo(value = ErrorDecision, strategy = Closure.DELEGATE_FIRST) Closure handler) {
             new WatcherTask(task, { String message ->
                 ErrorDecision decision = new ErrorDecision()
-                Closure c = (Closure) handler.clone()
-                c.delegate = decision
-                c.resolveStrategy = Closure.DELEGATE_FIRST
-                c.call(message)
+                Blocks.run(handler, decision, message)
                 decision.decision
             } as ErrorHandler)
         }

@@ -9,10 +9,7 @@ class GuardedTaskSetBuilder {
 
     static List<TaskGuard> build(String word, Closure branches) {
         GuardedTaskSetBuilder b = new GuardedTaskSetBuilder()
-        Closure c = (Closure) branches.clone()
-        c.delegate = b
-        c.resolveStrategy = Closure.DELEGATE_FIRST
-        c.call()
+        Blocks.run(branches, b)
         if (b.guards.isEmpty()) {
             throw new DslException("${word}: no choices were defined; expected one or more 'when { condition } then task'")
         }

@@ -17,7 +17,7 @@ final class Converters {
     private Converters() {
     }
 
-    static final class Link implements ITypeConverter<LinkUrl> {
+    static final class LinkUrlConverter implements ITypeConverter<LinkUrl> {
         @Override
         public LinkUrl convert(String value) {
             try {
@@ -40,7 +40,7 @@ final class Converters {
         }
     }
 
-    static final class Kind implements ITypeConverter<VehicleKind> {
+    static final class VehicleKindConverter implements ITypeConverter<VehicleKind> {
         @Override
         public VehicleKind convert(String value) {
             try {
@@ -85,7 +85,7 @@ final class Converters {
     }
 
     /** A file with 64 hex digits or a passphrase. */
-    static final class Key implements ITypeConverter<SigningKey> {
+    static final class SigningKeyConverter implements ITypeConverter<SigningKey> {
         @Override
         public SigningKey convert(String value) {
             try {

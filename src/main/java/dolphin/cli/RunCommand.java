@@ -11,6 +11,7 @@ import dolphin.platform.MAVLinkPlatform;
 import dolphin.mavlink.codec.SigningKey;
 import dolphin.mavlink.link.LinkUrl;
 import dolphin.mission.flight.MissionExecutorConfig;
+import dolphin.mission.flight.MissionService;
 import dolphin.mission.transfer.MissionTransferConfig;
 import dolphin.sim.FaultModel;
 import dolphin.sim.SimFleet;
@@ -47,7 +48,7 @@ final class RunCommand implements Callable<Integer> {
     @Parameters(paramLabel = "SCRIPT", description = "The .dolphin script to run.")
     private Path script;
 
-    @Option(names = "--link", paramLabel = "URL", converter = Converters.Link.class,
+    @Option(names = "--link", paramLabel = "URL", converter = Converters.LinkUrlConverter.class,
             description = "A link to vehicles: udpin:HOST:PORT, udpout:HOST:PORT, tcp:HOST:PORT or serial:DEVICE:BAUD. "
                     + "Repeatable. Default: " + MAVLinkConfig.DEFAULT_LINK + " (or a private port with --sim).")
     private List<LinkUrl> links = new ArrayList<>();
@@ -55,7 +56,7 @@ final class RunCommand implements Callable<Integer> {
     @Option(names = "--sim", paramLabel = "N", description = "Start N simulated vehicles in this process, on loopback.")
     private int sim;
 
-    @Option(names = "--sim-type", paramLabel = "TYPE", converter = Converters.Kind.class, defaultValue = "copter",
+    @Option(names = "--sim-type", paramLabel = "TYPE", converter = Converters.VehicleKindConverter.class, defaultValue = "copter",
             description = "copter, plane or rover (default: ${DEFAULT-VALUE}).")
     private VehicleKind simType;
 
@@ -73,11 +74,11 @@ final class RunCommand implements Callable<Integer> {
             description = "This ground station's system id (default: ${DEFAULT-VALUE}).")
     private int sysid;
 
-    @Option(names = "--signing-key", paramLabel = "FILE", converter = Converters.Key.class,
+    @Option(names = "--signing-key", paramLabel = "FILE", converter = Converters.SigningKeyConverter.class,
             description = "Sign frames and accept only signed ones: a file with 64 hex digits or a passphrase.")
     private SigningKey key;
 
-    @Option(names = "--forward", paramLabel = "URL", converter = Converters.Link.class,
+    @Option(names = "--forward", paramLabel = "URL", converter = Converters.LinkUrlConverter.class,
             description = "Relay the vehicles' traffic to a viewer (QGroundControl, MAVProxy) and its commands back, "
                     + "e.g. udpout:127.0.0.1:14550. Repeatable.")
     private List<LinkUrl> forwards = new ArrayList<>();
@@ -138,8 +139,9 @@ final class RunCommand implements Callable<Integer> {
         }
         Clock clock = sim > 0 ? new SystemClock(speedup) : SystemClock.REAL;
         MAVLinkCommunications comms = new MAVLinkCommunications(config, clock);
-        comms.setMissionTransferConfig(transfers);
-        comms.setMissionExecutorConfig(executor);
+        MissionService missions = MissionService.of(comms);
+        missions.setTransferConfig(transfers);
+        missions.setExecutorConfig(executor);
         Forwarder forwarder = new Forwarder(comms, forwards);
         try {
             comms.start();

@@ -33,12 +33,12 @@ final class SimCommand implements Callable<Integer> {
     @Option(names = "--count", paramLabel = "N", defaultValue = "1", description = "How many vehicles (default: ${DEFAULT-VALUE}).")
     private int count;
 
-    @Option(names = "--link", paramLabel = "URL", converter = Converters.Link.class,
+    @Option(names = "--link", paramLabel = "URL", converter = Converters.LinkUrlConverter.class,
             description = "Where the vehicles send: udpout:HOST:PORT, repeatable (vehicles are split over the links in blocks; over 255 vehicles need several links, and system ids start again on each). "
                     + "Default: udpout:127.0.0.1:14559.")
     private List<LinkUrl> links = new ArrayList<>();
 
-    @Option(names = "--type", paramLabel = "TYPE", converter = Converters.Kind.class, defaultValue = "copter",
+    @Option(names = "--type", paramLabel = "TYPE", converter = Converters.VehicleKindConverter.class, defaultValue = "copter",
             description = "copter, plane or rover (default: ${DEFAULT-VALUE}).")
     private VehicleKind type;
 
@@ -64,7 +64,7 @@ final class SimCommand implements Callable<Integer> {
     @Option(names = "--duration", paramLabel = "SECONDS", description = "Stop after this much simulated time.")
     private Double duration;
 
-    @Option(names = "--signing-key", paramLabel = "FILE", converter = Converters.Key.class,
+    @Option(names = "--signing-key", paramLabel = "FILE", converter = Converters.SigningKeyConverter.class,
             description = "Sign frames and accept only signed ones: a file with 64 hex digits or a passphrase.")
     private SigningKey key;
 

@@ -1,5 +1,6 @@
 package dolphin.cli;
 
+import dolphin.core.CompletionState;
 import dolphin.core.TaskEvent;
 import dolphin.mavlink.MAVLinkNode;
 import java.util.List;
@@ -22,10 +23,16 @@ final class StatusBoard {
         String state = switch (event.kind()) {
             case STARTED -> "running";
             case STOPPED -> "stopped";
-            case COMPLETED -> String.valueOf(event.state());
+            case COMPLETED -> completed(event.state());
         };
-        String text = event.task().getId() + " " + state.toLowerCase(Locale.ROOT);
+        String text = event.task().getId() + " " + state;
         event.vehicles().forEach(v -> tasks.put(v, text));
+    }
+
+    /** "done", or "error: " and the error as written (vehicle modes and command names keep their case). */
+    private static String completed(CompletionState state) {
+        String type = state.getType().name().toLowerCase(Locale.ROOT);
+        return state.getMessage() == null ? type : type + ": " + state.getMessage();
     }
 
     List<VehicleStatus> statuses(List<MAVLinkNode> nodes) {

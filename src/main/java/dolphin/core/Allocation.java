@@ -11,7 +11,8 @@ import java.util.Set;
 /**
  * Vehicles chosen for one occurrence of a task, as a tree that mirrors the task tree: a composite
  * hands child i the sub-allocation {@code child(i)}. Keying by position rather than by task object
- * lets one task object appear twice and run on two vehicles (reference E-3).
+ * lets one task object appear twice and run on two vehicles (the original sent both occurrences to
+ * the vehicle allocated last).
  */
 public final class Allocation {
 

@@ -75,7 +75,7 @@ public final class Environment {
             throw new EnvironmentException("pick: the timeout must not be negative, got " + timeout);
         }
         double first = clock.seconds();
-        // The reference's max(1 s, timeout/10), capped at a minute so long (or infinite) timeouts still retry.
+        // The original's max(1 s, timeout/10), capped at a minute so long (or infinite) timeouts still retry.
         Duration pauseBetween = Duration.ofNanos((long) (Math.min(60.0, Math.max(1.0, 0.1 * timeout)) * 1e9));
         while (true) {
             NodeSet chosen = attempt(filter, count);
@@ -141,7 +141,7 @@ public final class Environment {
 
     /**
      * Allocates vehicles from the bound set, runs the task to completion on this thread and
-     * returns its final state. A root ERROR is reported to the listener (reference F-13). An
+     * returns its final state. A root ERROR is reported to the listener (the original dropped it). An
      * interrupt or an exception from the tree stops the tree first, so vehicles are told.
      */
     public CompletionState run(Task task) throws InterruptedException {

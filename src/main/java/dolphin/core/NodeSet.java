@@ -164,7 +164,7 @@ public final class NodeSet implements Iterable<Node> {
         return nodes.keySet().hashCode();
     }
 
-    /** The reference's form: {@code { 1 2 }}. */
+    /** The original's form: {@code { 1 2 }}. */
     @Override
     public String toString() {
         return nodes.isEmpty() ? "{ }" : nodes.keySet().stream().collect(Collectors.joining(" ", "{ ", " }"));

@@ -44,7 +44,7 @@ public interface Platform {
     default void close() {
     }
 
-    /** One shared reader, so a second {@code ask} still reads (reference E-22). */
+    /** One shared reader, so a second {@code ask} still reads (the original closed standard input after the first). */
     final class StdinHolder {
         static final BufferedReader READER = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
 

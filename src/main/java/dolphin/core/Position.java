@@ -2,7 +2,7 @@ package dolphin.core;
 
 /**
  * An immutable WGS-84 position: latitude and longitude in radians, height in metres. In this
- * project heights are above mean sea level (design §4).
+ * project heights are above mean sea level (docs/decisions.md, "Heights and positions").
  */
 public record Position(double lat, double lon, double hae) {
 

@@ -18,7 +18,7 @@ public final class ResourceExplicitTask implements Task {
 
     /**
      * The task allocates from available ∩ vehicles; afterwards the pool is (available − vehicles)
-     * followed by what the task left (reference A.4), so a task allocated next prefers vehicles
+     * followed by what the task left (as in the original), so a task allocated next prefers vehicles
      * outside this set.
      */
     @Override

@@ -9,7 +9,7 @@ import java.util.concurrent.atomic.AtomicLong;
  *
  * <p>Each executor ends exactly once: either by itself ({@link #onCompletion()} after a DONE or
  * ERROR step) or cut short ({@link #onStop()}, only if it had started). A stop after the end is
- * ignored, which fixes the repeated hooks of reference E-21.
+ * ignored: the original ran the completion hook again at every stop.
  */
 public abstract class TaskExecutor {
 
@@ -105,7 +105,7 @@ public abstract class TaskExecutor {
 
     /**
      * Cuts the task short. A running executor gets {@link #onStop()}; one that never started is
-     * only marked completed, so a mission that never flew sends nothing (reference F-15).
+     * only marked completed, so a mission that never flew sends nothing (the original sent it RTL).
      */
     public final void stop() {
         State before = state;

@@ -1,8 +1,9 @@
 package dolphin.core;
 
 /**
- * WGS-84 conversions as the original engine computes them (reference B.5), including the
- * geocentric latitude used when displacing, so coordinates match the original's.
+ * WGS-84 conversions as the original engine computes them (docs/decisions.md, "Heights and
+ * positions"), including the geocentric latitude used when displacing, so coordinates match the
+ * original's.
  */
 public final class Wgs84 {
 

@@ -17,7 +17,7 @@ import org.codehaus.groovy.control.SourceUnit;
 
 /**
  * Rejects {@code execute v: task} when {@code v} is a {@code def} variable: execute keys name
- * script (binding) variables, and a local {@code def} is invisible to them (reference A.0).
+ * script (binding) variables, and a local {@code def} is invisible to them.
  */
 final class ExecuteKeyCheck extends ScriptCheck {
 

@@ -5,9 +5,9 @@ import java.util.List;
 import java.util.regex.Pattern;
 
 /**
- * Finds {@code execute} standing alone on a line (report Listing 4). Groovy ends the statement at
- * the line break, so the {@code v1: ...} entries below it become labels and the script fails
- * with an obscure message or, worse, runs nothing.
+ * Finds {@code execute} standing alone on a line, as the report prints its four-vehicle example.
+ * Groovy ends the statement at the line break, so the {@code v1: ...} entries below it become
+ * labels and the script fails with an obscure message or, worse, runs nothing.
  */
 final class LayoutCheck {
 

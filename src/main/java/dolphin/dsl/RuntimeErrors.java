@@ -4,9 +4,7 @@ import groovy.lang.MissingMethodException;
 import groovy.lang.MissingPropertyException;
 import java.util.Arrays;
 import java.util.Collection;
-import java.util.Comparator;
 import java.util.List;
-import java.util.Locale;
 import java.util.stream.Collectors;
 import org.codehaus.groovy.runtime.typehandling.GroovyCastException;
 
@@ -99,31 +97,7 @@ final class RuntimeErrors {
 
     /** ", did you mean 'x'?" for a known name within two edits, or the same but for case. */
     static String suggestion(String name, Collection<String> known) {
-        List<String> close = known.stream()
-                .filter(k -> !k.equals(name))
-                .filter(k -> k.equalsIgnoreCase(name) || distance(k.toLowerCase(Locale.ROOT), name.toLowerCase(Locale.ROOT)) <= 2)
-                .sorted(Comparator.comparingInt(k -> distance(k, name)))
-                .limit(3)
-                .toList();
+        List<String> close = Blocks.near(name, known);
         return close.isEmpty() ? "" : "; did you mean " + close.stream().map(k -> "'" + k + "'").collect(Collectors.joining(" or ")) + "?";
-    }
-
-    private static int distance(String a, String b) {
-        int[] prev = new int[b.length() + 1];
-        int[] cur = new int[b.length() + 1];
-        for (int j = 0; j <= b.length(); j++) {
-            prev[j] = j;
-        }
-        for (int i = 1; i <= a.length(); i++) {
-            cur[0] = i;
-            for (int j = 1; j <= b.length(); j++) {
-                int cost = a.charAt(i - 1) == b.charAt(j - 1) ? 0 : 1;
-                cur[j] = Math.min(Math.min(cur[j - 1] + 1, prev[j] + 1), prev[j - 1] + cost);
-            }
-            int[] swap = prev;
-            prev = cur;
-            cur = swap;
-        }
-        return prev[b.length()];
     }
 }

@@ -10,8 +10,8 @@ import org.codehaus.groovy.ast.stmt.ExpressionStatement;
 import org.codehaus.groovy.control.SourceUnit;
 
 /**
- * Finds the second word of a two-word instruction at the start of a statement, as in the report's
- * Listings 2 and 3 where {@code then (...)} sits on the line below {@code waitFor { ... }}: Groovy
+ * Finds the second word of a two-word instruction at the start of a statement, as the report prints
+ * its examples, with {@code then (...)} on the line below {@code waitFor { ... }}: Groovy
  * ends the statement at the line break, so {@code then} becomes a call of its own.
  */
 final class SplitInstructionCheck extends ScriptCheck {

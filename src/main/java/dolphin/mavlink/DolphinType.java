@@ -5,7 +5,7 @@ import com.MAVLink.enums.MAV_TYPE;
 
 /**
  * Which heartbeats are vehicles, and their Dolphin type: "UAV" for aircraft, "UGV" ground rovers,
- * "USV" boats, "UUV" submarines (design §3).
+ * "USV" boats, "UUV" submarines (docs/decisions.md, "The link").
  */
 public final class DolphinType {
 

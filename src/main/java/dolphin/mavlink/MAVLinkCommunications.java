@@ -9,7 +9,6 @@ import com.MAVLink.common.msg_command_long;
 import com.MAVLink.common.msg_extended_sys_state;
 import com.MAVLink.common.msg_home_position;
 import com.MAVLink.common.msg_mission_current;
-import com.MAVLink.common.msg_mission_item_reached;
 import com.MAVLink.common.msg_statustext;
 import com.MAVLink.common.msg_sys_status;
 import com.MAVLink.enums.MAV_AUTOPILOT;
@@ -24,10 +23,6 @@ import dolphin.mavlink.codec.Frame;
 import dolphin.mavlink.codec.FrameReader;
 import dolphin.mavlink.codec.FrameWriter;
 import dolphin.mavlink.link.Link;
-import dolphin.mission.flight.MissionExecutor;
-import dolphin.mission.flight.MissionExecutorConfig;
-import dolphin.mission.transfer.MissionTransferConfig;
-import dolphin.mission.transfer.MissionTransfers;
 import java.io.IOException;
 import java.net.SocketAddress;
 import java.util.ArrayList;
@@ -43,11 +38,12 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Function;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The ground station's one MAVLink thread (report Listing 10). Link reader threads hand it bytes;
+ * The ground station's one MAVLink thread. Link reader threads hand it bytes;
  * it decodes frames, discovers vehicles, routes messages through the {@link MessageHandler} to
  * their {@link MAVLinkNode}, sends everything that goes out, and runs the timers: the 1 Hz GCS
  * heartbeat, command retries and telemetry re-requests. Other threads talk to it through a queue.
@@ -83,8 +79,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
     private final AtomicLong framesOut = new AtomicLong();
     private final AtomicLong filtered = new AtomicLong();
     private volatile Runnable telemetryListener = () -> { };
-    private volatile MissionTransferConfig missionTransferConfig = MissionTransferConfig.DEFAULT;
-    private volatile MissionExecutorConfig missionExecutorConfig = MissionExecutorConfig.DEFAULT;
+    private final Map<Class<?>, Object> extensions = new ConcurrentHashMap<>();
     private volatile boolean running;
     private Thread thread;
     private Tlog tlog;
@@ -105,26 +100,18 @@ public final class MAVLinkCommunications implements AutoCloseable {
         return clock;
     }
 
-    /** Timeout and tries of mission uploads and downloads started from now on. */
-    public MissionTransferConfig missionTransferConfig() {
-        return missionTransferConfig;
-    }
-
-    public MissionExecutorConfig missionExecutorConfig() {
-        return missionExecutorConfig;
-    }
-
-    public void setMissionExecutorConfig(MissionExecutorConfig config) {
-        missionExecutorConfig = java.util.Objects.requireNonNull(config, "config");
+    /**
+     * The one instance of {@code type} attached to these communications, made by {@code create} on
+     * first use: how a layer above (missions) keeps its own state per communications and registers
+     * for the messages it needs, without this layer knowing it.
+     */
+    public <T> T extension(Class<T> type, Function<MAVLinkCommunications, T> create) {
+        return type.cast(extensions.computeIfAbsent(type, t -> create.apply(this)));
     }
 
     /** Wakes the script's task tree, as telemetry does (e.g. when a transfer or command completes). */
     public void wakeScript() {
         telemetryListener.run();
-    }
-
-    public void setMissionTransferConfig(MissionTransferConfig config) {
-        missionTransferConfig = java.util.Objects.requireNonNull(config, "config");
     }
 
     /** Opens the links and starts the thread. Throws with the link's name when one cannot be opened. */
@@ -412,14 +399,6 @@ public final class MAVLinkCommunications implements AutoCloseable {
                 commands.onAck(n, m, clock.nanoTime());
             }
         });
-        handler.on(msg_mission_item_reached.class, (n, m) -> {
-            MissionExecutor executor = n.getExecutor();
-            if (executor != null) {
-                executor.consume(m);
-                telemetryListener.run();
-            }
-        });
-        MissionTransfers.route(handler);
     }
 
     private void changed(MAVLinkNode node, java.util.function.UnaryOperator<VehicleState> change) {

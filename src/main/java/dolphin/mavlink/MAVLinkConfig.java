@@ -8,8 +8,8 @@ import java.util.List;
 import java.util.Set;
 
 /**
- * How the ground station talks MAVLink (design §3): its ids, its links, signing, the telemetry rate
- * it asks for, and an optional tlog.
+ * How the ground station talks MAVLink (docs/mavlink.md, "The ground station"): its ids, its
+ * links, signing, the telemetry rate it asks for, and an optional tlog.
  *
  * @param allowedSysids systems to listen to; empty means all
  * @param telemetryHz the rate asked for SYS_STATUS and GLOBAL_POSITION_INT (others at 1 Hz)

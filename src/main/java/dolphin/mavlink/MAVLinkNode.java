@@ -1,18 +1,12 @@
 package dolphin.mavlink;
 
 import com.MAVLink.Messages.MAVLinkMessage;
-import com.MAVLink.common.msg_sys_status;
-import com.MAVLink.minimal.msg_heartbeat;
 import dolphin.core.AbstractNode;
 import dolphin.core.Clock;
 import dolphin.core.EnvironmentException;
 import dolphin.core.Payload;
 import dolphin.core.Position;
 import dolphin.mavlink.link.Link;
-import dolphin.mission.flight.MissionExecutor;
-import dolphin.mission.transfer.MissionDownloadProtocol;
-import dolphin.mission.transfer.MissionTransfers;
-import dolphin.mission.transfer.MissionUploadProtocol;
 import java.net.SocketAddress;
 import java.time.Duration;
 import java.util.concurrent.atomic.AtomicReference;
@@ -20,14 +14,14 @@ import java.util.function.Predicate;
 import java.util.function.UnaryOperator;
 
 /**
- * A MAVLink vehicle as a Dolphin node: a system id on a link (report Listing 9). Its state is an
+ * A MAVLink vehicle as a Dolphin node: a system id on a link. Its state is an
  * immutable {@link VehicleState} that the communications thread replaces and any thread reads.
  */
 public final class MAVLinkNode extends AbstractNode {
 
     /**
      * How long {@link #batteryRemaining()} and {@link #awaitPosition()} wait for the first SYS_STATUS
-     * or GLOBAL_POSITION_INT of a vehicle just discovered (design §7).
+     * or GLOBAL_POSITION_INT of a vehicle just discovered (docs/decisions.md, "Engine semantics").
      */
     public static final Duration TELEMETRY_WAIT = Duration.ofSeconds(5);
 
@@ -38,8 +32,6 @@ public final class MAVLinkNode extends AbstractNode {
     private final Clock clock;
     private final AtomicReference<VehicleState> state;
     private volatile SocketAddress address;
-    private volatile MissionExecutor executor;
-    private final MissionTransfers missionTransfers;
     /** The connection state the communications thread last reported; only it reads and writes this. */
     boolean wasConnected = true;
 
@@ -53,34 +45,9 @@ public final class MAVLinkNode extends AbstractNode {
         this.autopilotCompid = autopilotCompid;
         this.clock = clock;
         this.state = new AtomicReference<>(VehicleState.initial(family));
-        this.missionTransfers = new MissionTransfers(comms, this);
     }
 
-    /** Uploads missions to this vehicle, one transfer at a time (shared with the download protocol). */
-    public MissionUploadProtocol getUploadProtocol() {
-        return missionTransfers.upload();
-    }
-
-    /** Downloads this vehicle's mission, one transfer at a time (shared with the upload protocol). */
-    public MissionDownloadProtocol getDownloadProtocol() {
-        return missionTransfers.download();
-    }
-
-    /** The vehicle's mission transfers and their queue; the mission messages are routed there. */
-    /** The executor flying a mission on this vehicle, or null (report: setExecutor). */
-    public MissionExecutor getExecutor() {
-        return executor;
-    }
-
-    public void setExecutor(MissionExecutor executor) {
-        this.executor = executor;
-    }
-
-    public MissionTransfers missionTransfers() {
-        return missionTransfers;
-    }
-
-    /** The MAVLink system id (the report's getMavLinkId). */
+    /** The MAVLink system id (getMavLinkId in the original). */
     public int getMavLinkId() {
         return sysid;
     }
@@ -124,14 +91,6 @@ public final class MAVLinkNode extends AbstractNode {
         return state.get().position();
     }
 
-    public msg_heartbeat getLastHBReceived() {
-        return state.get().heartbeat();
-    }
-
-    public msg_sys_status getLastSystemStatus() {
-        return state.get().systemStatus();
-    }
-
     public String getModeName() {
         return state.get().modeName();
     }
@@ -144,7 +103,7 @@ public final class MAVLinkNode extends AbstractNode {
         return state.get().home();
     }
 
-    /** Heard within the connection timeout (design §3). */
+    /** Heard within the connection timeout (docs/decisions.md, "The link"). */
     @Override
     public boolean isConnected() {
         long last = state.get().heartbeatNanos();
@@ -154,7 +113,7 @@ public final class MAVLinkNode extends AbstractNode {
     /**
      * The battery as a fraction: waits up to 5 s for the first SYS_STATUS, then fails with a clear
      * error, as it does for a vehicle without a battery monitor (-1). Never a made-up value: Groovy
-     * orders NaN above every number, so a NaN would silently satisfy {@code >=} (design §7).
+     * orders NaN above every number, so a NaN would silently satisfy {@code >=} (docs/decisions.md, "Engine semantics").
      */
     @Override
     public double batteryRemaining() {
@@ -199,10 +158,9 @@ public final class MAVLinkNode extends AbstractNode {
         comms.send(this, message);
     }
 
-    /** Nothing is sent: the script no longer tasks the vehicle, which forgets its executor. */
+    /** Nothing is sent: the script no longer tasks the vehicle; a mission flying on it goes on. */
     @Override
     public void release() {
-        executor = null;
     }
 
     @Override

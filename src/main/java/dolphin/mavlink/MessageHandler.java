@@ -11,7 +11,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * Routes decoded messages to consumers by their exact message class (report §3.2.6). A consumer
+ * Routes decoded messages to consumers by their exact message class. A consumer
  * that throws is logged and the others still run: input never kills the communications thread.
  */
 public final class MessageHandler {

@@ -17,8 +17,9 @@ import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * Asks each vehicle for the telemetry the runtime reads, because ArduCopter sends none unless asked
- * (ardupilot-behaviour §2.5): MAV_CMD_SET_MESSAGE_INTERVAL per message, falling back to
- * REQUEST_DATA_STREAM when a vehicle refuses it, and asking again when a stream falls silent.
+ * (docs/decisions.md, "ArduPilot behaviour we rely on"): MAV_CMD_SET_MESSAGE_INTERVAL per message,
+ * falling back to REQUEST_DATA_STREAM when a vehicle refuses it, and asking again when a stream
+ * falls silent.
  * Runs on the communications thread.
  */
 final class TelemetryRequests {

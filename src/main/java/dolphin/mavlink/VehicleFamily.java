@@ -12,7 +12,8 @@ import java.util.OptionalLong;
 
 /**
  * The ArduPilot firmware a vehicle runs, which decides its mode numbers and how a mission starts
- * (design §3, §6). Other autopilots are OTHER: discovered and usable, modes shown as numbers.
+ * (docs/mavlink.md, "How each family flies a mission"). Other autopilots are OTHER: discovered and
+ * usable, modes shown as numbers.
  */
 public enum VehicleFamily {
     COPTER("ArduCopter", COPTER_MODE.class, "COPTER_MODE_"),

@@ -11,6 +11,8 @@ import dolphin.mavlink.codec.MessageTable;
 import dolphin.mission.dsl.MissionRecorder;
 import dolphin.mission.dsl.PositionWords;
 import dolphin.core.EnvironmentException;
+import dolphin.mission.flight.MissionService;
+import dolphin.mission.flight.MissionTask;
 import dolphin.mission.model.Mission;
 import dolphin.mission.file.MissionFile;
 import dolphin.mission.model.MissionItem;
@@ -73,11 +75,11 @@ public final class MAVLinkLanguage implements DslExtension {
          * home is the vehicle's item 0 and whose points are its items 1, 2, ... Blocks the script
          * until the download ends; fails with the download's error.
          */
-        public Mission downloadMission(Object vehicle) {
+        public MissionTask downloadMission(Object vehicle) {
             MAVLinkNode node = single("downloadMission", vehicle);
             TransferResult r;
             try {
-                r = node.getDownloadProtocol().download().get(DOWNLOAD_DEADLINE.toSeconds(), TimeUnit.SECONDS);
+                r = MissionService.of(node.communications()).vehicle(node).transfers().download().download().get(DOWNLOAD_DEADLINE.toSeconds(), TimeUnit.SECONDS);
             } catch (TimeoutException e) {
                 throw new EnvironmentException("downloadMission: no answer from vehicle " + node.getId() + " within "
                         + DOWNLOAD_DEADLINE.toSeconds() + " s");
@@ -89,7 +91,7 @@ public final class MAVLinkLanguage implements DslExtension {
             }
             List<MissionItem> items = r.orThrow();
             context.listener().message("downloaded " + items.size() + " mission items from vehicle " + node.getId());
-            return RawItemPoint.mission("mission of vehicle " + node.getId(), items);
+            return new MissionTask(RawItemPoint.mission("mission of vehicle " + node.getId(), items));
         }
 
         /**
@@ -109,11 +111,11 @@ public final class MAVLinkLanguage implements DslExtension {
          * stays as the vehicle has it unless {@code enableFence: true}; items lower than home plus the
          * clearance are refused at the flight unless {@code allowBelowHome: true}.
          */
-        public Mission missionFromFile(String path) {
+        public MissionTask missionFromFile(String path) {
             return missionFromFile(Map.of(), path);
         }
 
-        public Mission missionFromFile(Map<String, Object> options, String path) {
+        public MissionTask missionFromFile(Map<String, Object> options, String path) {
             for (String key : options.keySet()) {
                 if (!List.of("enableFence", "name", "allowBelowHome").contains(key)) {
                     throw new DslException("missionFromFile: unknown option '" + key
@@ -144,7 +146,7 @@ public final class MAVLinkLanguage implements DslExtension {
             context.listener().message("read " + (file.mission().size() - 1) + " mission items"
                     + (file.fence().isEmpty() ? "" : ", a fence of " + file.fence().describe())
                     + (file.rally().isEmpty() ? "" : ", " + file.rally().size() + (file.rally().size() == 1 ? " rally point" : " rally points")) + " from " + path);
-            return m;
+            return new MissionTask(m);
         }
 
         private static MAVLinkNode single(String word, Object vehicle) {

@@ -5,7 +5,7 @@ import dolphin.mission.model.MissionType;
 
 /**
  * One list a simulated vehicle stores and the mission protocol transfers: its mission, fence or
- * rally points ({@link MissionTransfer} runs the protocol, the same for all three).
+ * rally points ({@link MissionItemProtocol} runs the protocol, the same for all three).
  */
 interface ItemStore {
 

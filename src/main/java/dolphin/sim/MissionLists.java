@@ -20,18 +20,18 @@ import dolphin.mission.model.RallyPoints;
  */
 final class MissionLists {
 
-    private final MissionTransfer mission;
-    private final MissionTransfer fence;
-    private final MissionTransfer rally;
+    private final MissionItemProtocol mission;
+    private final MissionItemProtocol fence;
+    private final MissionItemProtocol rally;
     private final AirspaceStore fenceStore;
     private final AirspaceStore rallyStore;
 
-    MissionLists(MissionStore missionStore, int capacity, MissionTransfer.Host host) {
+    MissionLists(MissionStore missionStore, int capacity, MissionItemProtocol.Host host) {
         this.fenceStore = new AirspaceStore(MissionType.FENCE, capacity);
         this.rallyStore = new AirspaceStore(MissionType.RALLY, capacity);
-        this.mission = new MissionTransfer(missionStore, host);
-        this.fence = new MissionTransfer(fenceStore, host);
-        this.rally = new MissionTransfer(rallyStore, host);
+        this.mission = new MissionItemProtocol(missionStore, host);
+        this.fence = new MissionItemProtocol(fenceStore, host);
+        this.rally = new MissionItemProtocol(rallyStore, host);
     }
 
     /** Handles a mission-protocol message addressed to {@code sysid}; false if it is not one. */
@@ -41,7 +41,7 @@ final class MissionLists {
             return false;
         }
         MissionType type = MissionType.of(target[1]);
-        MissionTransfer t = type == MissionType.FENCE ? fence : type == MissionType.RALLY ? rally : mission;
+        MissionItemProtocol t = type == MissionType.FENCE ? fence : type == MissionType.RALLY ? rally : mission;
         t.handle(m, now);
         return true;
     }

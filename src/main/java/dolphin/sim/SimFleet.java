@@ -25,7 +25,7 @@ import org.slf4j.LoggerFactory;
 /**
  * A fleet of simulated ArduPilot vehicles on real UDP sockets, like SITL instances started with
  * {@code --serial0 udpclient:GCS}: each vehicle sends from its own port to a ground-station address
- * and answers there. One thread and one selector serve every vehicle (design §8), so hundreds fit
+ * and answers there. One thread and one selector serve every vehicle, so hundreds fit
  * in one process; time comes from the given clock, which may run faster than real time.
  */
 public final class SimFleet implements AutoCloseable {

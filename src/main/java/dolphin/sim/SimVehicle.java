@@ -68,8 +68,6 @@ public final class SimVehicle {
     private double battery = 100;
     private final Craft craft;
     private Position home;
-    private Position target;
-    private double speed;
     private int commandsHandled;
     private final MissionStore missionStore;
     private final MissionLists lists;
@@ -197,12 +195,6 @@ public final class SimVehicle {
         return lists.uploading();
     }
 
-    /** Moves towards {@code to} at {@code metresPerSecond} (straight line, heights included; never below the ground). */
-    public synchronized void flyTo(Position to, double metresPerSecond) {
-        target = to;
-        speed = metresPerSecond;
-    }
-
     /** Mode changes by "someone else", e.g. a pilot's switch: the ground station is not asked. */
     public synchronized void setMode(int customMode) {
         changeMode(customMode);
@@ -217,7 +209,6 @@ public final class SimVehicle {
         if (armed) {
             battery = Math.max(0, battery - options.drainPercentPerMinute() * dt / 60);
         }
-        move(dt);
         lists.tick(now);
         flight.tick(dt);
         watchFence(now);
@@ -275,23 +266,6 @@ public final class SimVehicle {
     /** The first time after {@code now} on the grid of {@code interval} through {@code due}: a late tick keeps the phase. */
     private static long nextOnGrid(long due, long interval, long now) {
         return due + interval * ((now - due) / interval + 1);
-    }
-
-    private void move(double dt) {
-        if (target == null || speed <= 0 || dt <= 0) {
-            return;
-        }
-        Position position = craft.position();
-        double[] ned = position.displacementTo(target);
-        double dist = Math.sqrt(ned[0] * ned[0] + ned[1] * ned[1] + ned[2] * ned[2]);
-        double step = speed * dt;
-        if (dist <= step) {
-            craft.moveTo(target, dt);
-            target = null;
-        } else {
-            double f = step / dist;
-            craft.moveTo(position.displace(ned[0] * f, ned[1] * f, ned[2] * f), dt);
-        }
     }
 
     synchronized void handle(MAVLinkMessage m, long now) {
@@ -515,7 +489,7 @@ public final class SimVehicle {
     }
 
     /** The mission transfer's view of this vehicle. */
-    private final class TransferHost implements MissionTransfer.Host {
+    private final class TransferHost implements MissionItemProtocol.Host {
         @Override
         public void send(MAVLinkMessage m) {
             SimVehicle.this.send(m);

@@ -1,11 +1,11 @@
 package dolphin.web;
 
 import dolphin.core.Node;
-import dolphin.core.Task;
 import dolphin.mavlink.MAVLinkNode;
 import dolphin.mission.file.GeoJsonFile;
 import dolphin.mission.model.Mission;
 import dolphin.mission.flight.MissionExecutor;
+import dolphin.mission.flight.MissionService;
 import dolphin.mission.file.MissionFile;
 import java.util.ArrayList;
 import java.util.HashSet;
@@ -40,17 +40,14 @@ final class MavlinkFleet implements Supplier<List<VehicleSample>> {
         for (MAVLinkNode n : nodes.get()) {
             VehicleView view = VehicleView.of(n.getId(), n.getType(), n.isConnected(), bound.contains(n.getId()), n.state(),
                     tasks.getOrDefault(n.getId(), ""));
-            MissionExecutor executor = n.getExecutor();
-            samples.add(new VehicleSample(view, executor, () -> draw(executor.getTask(), n)));
+            MissionExecutor executor = MissionService.of(n.communications()).vehicle(n).executor();
+            samples.add(new VehicleSample(view, executor, () -> draw(executor.mission(), n)));
         }
         return samples;
     }
 
     /** The mission, its fence and rally points as GeoJSON (docs/embedding.md); null if it cannot be drawn. */
-    private static String draw(Task task, MAVLinkNode node) {
-        if (!(task instanceof Mission m)) {
-            return null;
-        }
+    private static String draw(Mission m, MAVLinkNode node) {
         try {
             return GeoJsonFile.compact(m.getId(), MissionFile.of(m.items(node.getHome())).withFence(m.fence()).withRally(m.rally()));
         } catch (RuntimeException e) {

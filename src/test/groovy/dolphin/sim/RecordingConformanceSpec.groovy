@@ -7,7 +7,7 @@ import spock.lang.Specification
 
 /**
  * The simulated fleet against real ArduPilot: each recording of a SITL session (the project's
- * ../shared/sitl-recordings, or -Ddolphin.recordings) is replayed into a simulated vehicle of the
+ * src/test/resources/sitl-recordings, or -Ddolphin.recordings) is replayed into a simulated vehicle of the
  * same kind, booted when the recorded one was, with the ground station's frames at the recorded
  * times. What the simulator sends must show the same frames that matter (KeyFrames: modes and arming,
  * MISSION_CURRENT, MISSION_ITEM_REACHED, landed state, ACKs, ground contact, disarm, the plane's
@@ -16,7 +16,7 @@ import spock.lang.Specification
  */
 class RecordingConformanceSpec extends Specification {
 
-    static final Path DIRECTORY = Path.of(System.getProperty('dolphin.recordings', '../shared/sitl-recordings'))
+    static final Path DIRECTORY = Path.of(System.getProperty('dolphin.recordings', 'src/test/resources/sitl-recordings'))
     static final List<String> KINDS = ['HEARTBEAT', 'MISSION_CURRENT', 'MISSION_ITEM_REACHED', 'EXTENDED_SYS_STATE',
                                        'COMMAND_ACK', 'MISSION_ACK', 'STATUSTEXT']
 
@@ -25,8 +25,7 @@ class RecordingConformanceSpec extends Specification {
     SimOptions sitl = SimOptions.DEFAULT.withWarmup(42)
 
     def setupSpec() {
-        assert Files.isDirectory(DIRECTORY): "the SITL recordings are not at ${DIRECTORY.toAbsolutePath().normalize()}: " +
-                'CI needs them next to the project (../shared/sitl-recordings) or named by -Ddolphin.recordings'
+        assert Files.isDirectory(DIRECTORY): "the SITL recordings are not at ${DIRECTORY.toAbsolutePath().normalize()}" 
     }
 
     def "#recording: the simulated #kind sends the frames that matter as ArduPilot did"() {

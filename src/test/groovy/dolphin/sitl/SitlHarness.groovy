@@ -1,5 +1,6 @@
 package dolphin.sitl
 
+import dolphin.testing.MissionLayer
 import dolphin.core.Position
 import dolphin.core.SystemClock
 import dolphin.core.TaskEvent
@@ -101,11 +102,11 @@ class SitlHarness implements AutoCloseable {
     }
 
     TransferResult upload(MAVLinkNode node, List<MissionItem> items) {
-        node.uploadProtocol.upload(items).get(120, TimeUnit.SECONDS)
+        MissionLayer.uploads(node).upload(items).get(120, TimeUnit.SECONDS)
     }
 
     List<MissionItem> download(MAVLinkNode node) {
-        node.downloadProtocol.download().get(120, TimeUnit.SECONDS).orThrow()
+        MissionLayer.downloads(node).download().get(120, TimeUnit.SECONDS).orThrow()
     }
 
     /** Waits up to {@code seconds} (real time) for the condition, a closure with assertions. */

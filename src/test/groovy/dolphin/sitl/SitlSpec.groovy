@@ -1,5 +1,6 @@
 package dolphin.sitl
 
+import dolphin.testing.MissionLayer
 import com.MAVLink.enums.MAV_CMD
 import dolphin.core.Position
 import dolphin.dsl.ScriptResult
@@ -113,8 +114,8 @@ class SitlSpec extends Specification {
         expect:
         [['Survey Area 1', 'surveyNorth', 'returnHome'], ['Survey Area 2', 'surveySouth', 'returnHome2']].every { survey, surveyVar, backVar ->
             MAVLinkNode node = sitl.comms.node("${vehicleOf(scenario.lines, survey)}")
-            assert roundTripDifference(node, scenario.engine.variable(backVar), false) == null
-            assert roundTripDifference(node, scenario.engine.variable(surveyVar), true) == null
+            assert roundTripDifference(node, MissionLayer.missionOf(scenario.engine.variable(backVar)), false) == null
+            assert roundTripDifference(node, MissionLayer.missionOf(scenario.engine.variable(surveyVar)), true) == null
             true
         }
     }
@@ -141,8 +142,8 @@ class SitlSpec extends Specification {
 
         then: 'both missions come back as built: holds as the executor left it, every command uploaded again'
         node.position.distanceTo(HOME) < 15
-        roundTripDifference(node, r.engine.variable('holds'), false) == null
-        roundTripDifference(node, r.engine.variable('everything'), true) == null
+        roundTripDifference(node, MissionLayer.missionOf(r.engine.variable('holds')), false) == null
+        roundTripDifference(node, MissionLayer.missionOf(r.engine.variable('everything')), true) == null
     }
 
     def "a fenced flight: ArduCopter takes the fence and the rally point (read back equal), and leaving the fence is its breach, RTL and the script's error"() {
@@ -156,7 +157,7 @@ class SitlSpec extends Specification {
         List<String> lines = r.lines
         int n = vehicleOf(lines, 'fenced flight')
         MAVLinkNode node = sitl.comms.node("${n}")
-        Mission m = r.engine.variable('outAndBack')
+        Mission m = MissionLayer.missionOf(r.engine.variable('outAndBack'))
 
         then:
         r.result.outcome() == ScriptResult.Outcome.COMPLETED
@@ -167,9 +168,9 @@ class SitlSpec extends Specification {
 
         and: 'what ArduPilot holds is what was sent, as far as it keeps it'
         MissionVerification.firstDifference(MissionType.FENCE, m.fence().items(),
-                node.downloadProtocol.download(MissionType.FENCE).get(120, TimeUnit.SECONDS).orThrow()).orElse(null) == null
+                MissionLayer.downloads(node).download(MissionType.FENCE).get(120, TimeUnit.SECONDS).orThrow()).orElse(null) == null
         MissionVerification.firstDifference(MissionType.RALLY, m.rally().items(),
-                node.downloadProtocol.download(MissionType.RALLY).get(120, TimeUnit.SECONDS).orThrow()).orElse(null) == null
+                MissionLayer.downloads(node).download(MissionType.RALLY).get(120, TimeUnit.SECONDS).orThrow()).orElse(null) == null
     }
 
     /** Uploads the mission first when asked; then downloads the vehicle's and compares it with the items built for it. */

@@ -8,6 +8,7 @@ import dolphin.mavlink.CommandResult;
 import dolphin.mavlink.MAVLinkCommunications;
 import dolphin.mavlink.MAVLinkConfig;
 import dolphin.mavlink.MAVLinkNode;
+import dolphin.mission.flight.MissionService;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.transfer.MissionTransferConfig;
 import dolphin.mission.transfer.MissionVerification;
@@ -389,7 +390,7 @@ public final class UploadBench {
     double[] uploadMs(MAVLinkNode node, List<MissionItem> items, MissionTransferConfig config, SimFleet fleet, int sysid,
                       int[] counts) throws Exception {
         long t0 = System.nanoTime();
-        TransferResult up = node.getUploadProtocol().upload(items, config, TransferProgress.NONE).get(120, TimeUnit.SECONDS);
+        TransferResult up = MissionService.of(node.communications()).vehicle(node).transfers().upload().upload(items, config, TransferProgress.NONE).get(120, TimeUnit.SECONDS);
         long t1 = System.nanoTime();
         boolean ackLost = false;
         if (!up.success()) {
@@ -406,7 +407,7 @@ public final class UploadBench {
         long t2 = System.nanoTime();
         TransferResult down = null;
         for (int attempt = 0; attempt < 3 && (down == null || !down.success()); attempt++) {
-            down = node.getDownloadProtocol().download(config, TransferProgress.NONE).get(120, TimeUnit.SECONDS);
+            down = MissionService.of(node.communications()).vehicle(node).transfers().download().download(config, TransferProgress.NONE).get(120, TimeUnit.SECONDS);
         }
         long t3 = System.nanoTime();
         if (!down.success()) {

@@ -1,5 +1,6 @@
 package dolphin.mission.dsl
 
+import dolphin.dsl.Blocks
 import dolphin.core.Position
 import dolphin.dsl.DslException
 import dolphin.mission.model.CameraPoint
@@ -26,11 +27,11 @@ import groovy.transform.PackageScope
 import org.codehaus.groovy.runtime.InvokerHelper
 
 /**
- * The delegate of {@code mission { ... }} (reference C.6; docs/mission-commands.md): each command
+ * The delegate of {@code mission { ... }} (docs/mission-commands.md): each command
  * appends a DroneCommand, in source order. Heights are metres above mean sea level, latitudes and
  * longitudes degrees, distances metres, times seconds.
  *
- * <p>Position tracking (reference C.6.1, F-9): relative commands start from the last
+ * <p>Position tracking (docs/mission-commands.md, "Position tracking"): relative commands start from the last
  * <em>registered</em> position, or from the mission's home when none is registered yet. goPos, move*,
  * takeOff, returnHome*, altitude and surveyArea register a position; loiter*, landingPoint and home
  * do not. *FromHome start from the home named with {@code home}; returnHome and returnHomeAndLoiter
@@ -289,7 +290,7 @@ class MissionBuilder {
 
     /**
      * A NAV_WAYPOINT at the last registered position (or home) at the new height, metres above mean
-     * sea level (ArduPilot rejects DO_CHANGE_ALTITUDE items, design §5); registers that position.
+     * sea level (ArduPilot rejects DO_CHANGE_ALTITUDE items: docs/decisions.md, "Missions"); registers that position.
      */
     void altitude(Number height) {
         Position from = lastPosition('altitude')
@@ -370,7 +371,7 @@ class MissionBuilder {
     // ---- jumps
 
     /**
-     * A ground-side jump (F-20): when the vehicle reaches the item before this command, the ground
+     * A ground-side jump, as in the original: when the vehicle reaches the item before this command, the ground
      * station sends it to item {@code item} (the uploaded seq, home = 0), at most {@code repetitions}
      * times. Emits no item.
      */
@@ -525,7 +526,7 @@ class MissionBuilder {
         if (FORMS.containsKey(name)) {
             throw new DslException("${name}: expected ${FORMS[name].join(' or ')}, got ${types(argv)}")
         }
-        List<String> close = closeCommands(name)
+        List<String> close = Blocks.near(name, FORMS.keySet())
         if (!close.isEmpty()) {
             try {
                 return InvokerHelper.invokeMethod(body.owner, name, argv)
@@ -573,27 +574,4 @@ class MissionBuilder {
         '(' + args.collect { Object a -> a == null ? 'null' : a instanceof GString ? 'String' : a.getClass().simpleName }.join(', ') + ')'
     }
 
-    private static List<String> closeCommands(String name) {
-        String n = name.toLowerCase(Locale.ROOT)
-        FORMS.keySet().findAll { String k -> distance(k.toLowerCase(Locale.ROOT), n) <= 2 }.sort() as List<String>
-    }
-
-    private static int distance(String a, String b) {
-        int[] prev = new int[b.length() + 1]
-        int[] cur = new int[b.length() + 1]
-        for (int j = 0; j <= b.length(); j++) {
-            prev[j] = j
-        }
-        for (int i = 1; i <= a.length(); i++) {
-            cur[0] = i
-            for (int j = 1; j <= b.length(); j++) {
-                int cost = a.charAt(i - 1) == b.charAt(j - 1) ? 0 : 1
-                cur[j] = Math.min(Math.min(cur[j - 1] + 1, prev[j] + 1), prev[j - 1] + cost)
-            }
-            int[] swap = prev
-            prev = cur
-            cur = swap
-        }
-        prev[b.length()]
-    }
 }

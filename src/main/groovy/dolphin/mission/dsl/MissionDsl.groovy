@@ -1,15 +1,17 @@
 package dolphin.mission.dsl
 
+import dolphin.dsl.Blocks
 import dolphin.core.Position
 import dolphin.dsl.DolphinScript
+import dolphin.mission.flight.MissionTask
 import dolphin.mission.model.Mission
 import groovy.transform.CompileStatic
 
 import java.util.concurrent.atomic.AtomicInteger
 
 /**
- * The MAVLink platform's top-level words that IDEs can see: {@code mission { }} (reference C.6) and
- * the position words {@code pos { }} and {@code moveDistance { }} (reference C.5). MAVLinkLanguage
+ * The MAVLink platform's top-level words that IDEs can see: {@code mission { }} (docs/mission-commands.md) and
+ * the position words {@code pos { }} and {@code moveDistance { }} (docs/mission-commands.md, "Position words"). MAVLinkLanguage
  * imports them into every script with a static star import, so every public static method here is
  * a script word. None may share a name with a mission command: Groovy binds static imports at
  * compile time, so such a method would capture the command inside mission blocks (this is why the
@@ -24,22 +26,19 @@ final class MissionDsl {
     }
 
     /**
-     * Builds a Mission, a platform task usable with every Dolphin operator. Inside the block the
+     * Builds a mission as a platform task usable with every Dolphin operator. Inside the block the
      * mission commands come first; script variables and words stay visible. The default name is
      * {@code MissionPlan_line<N>}, N being the script line of the {@code mission} word.
      */
-    static Mission mission(@DelegatesTo(value = MissionBuilder, strategy = Closure.DELEGATE_FIRST) Closure body) {
+    static MissionTask mission(@DelegatesTo(value = MissionBuilder, strategy = Closure.DELEGATE_FIRST) Closure body) {
         if (body == null) {
             throw new dolphin.dsl.DslException('mission: expected a block of mission commands, mission { ... }')
         }
         MissionBuilder builder = new MissionBuilder(defaultName(), body)
-        Closure c = (Closure) body.clone()
-        c.delegate = builder
-        c.resolveStrategy = Closure.DELEGATE_FIRST
-        c.call()
+        Blocks.run(body, builder)
         Mission m = builder.build()
         recorded(body.thisObject, m)
-        m
+        new MissionTask(m)
     }
 
     /** Hands the mission to the run's MissionRecorder, if the engine has one (dolphin mission's dry run). */

@@ -8,7 +8,7 @@ import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 
 /**
- * CRC_EXTRA, name and payload length of every message of the dialect, read from the table the
+ * CRC_EXTRA and name of every message of the dialect, read from the table the
  * build generates from the pinned pymavlink (dolphin/mavlink/messages.tsv).
  */
 public final class MessageTable {
@@ -17,12 +17,10 @@ public final class MessageTable {
     private static final MessageTable INSTANCE = load();
 
     private final short[] crcExtra;
-    private final short[] length;
     private final String[] names;
 
     private MessageTable(int maxId) {
         crcExtra = new short[maxId + 1];
-        length = new short[maxId + 1];
         names = new String[maxId + 1];
         java.util.Arrays.fill(crcExtra, (short) -1);
     }
@@ -38,11 +36,6 @@ public final class MessageTable {
 
     public boolean known(int msgid) {
         return crcExtra(msgid) >= 0;
-    }
-
-    /** The full payload length (with extensions), or 0 for an unknown id. */
-    public int payloadLength(int msgid) {
-        return known(msgid) ? length[msgid] : 0;
     }
 
     /** The message name, or "#id" for an unknown id. */
@@ -67,7 +60,6 @@ public final class MessageTable {
                 int id = Integer.parseInt(f[0]);
                 t.names[id] = f[1];
                 t.crcExtra[id] = Short.parseShort(f[2]);
-                t.length[id] = Short.parseShort(f[3]);
             }
             return t;
         } catch (IOException e) {

@@ -1,5 +1,6 @@
 package dolphin.mission.dsl;
 
+import dolphin.dsl.Blocks;
 import dolphin.dsl.DslException;
 import groovy.lang.Closure;
 import groovy.lang.GroovyObject;
@@ -33,10 +34,7 @@ abstract class ClosureDelegate implements GroovyObject {
             return;
         }
         body = block;
-        Closure<?> c = (Closure<?>) block.clone();
-        c.setDelegate(this);
-        c.setResolveStrategy(Closure.DELEGATE_FIRST);
-        c.call();
+        Blocks.run(block, this);
     }
 
     @Override

@@ -3,8 +3,7 @@ package dolphin.mission.dsl;
 import dolphin.core.Position;
 
 /**
- * A (north, east, down) offset in metres, as {@code moveDistance { north n; east e; down d }} makes it
- * (reference C.5).
+ * A (north, east, down) offset in metres, as {@code moveDistance { north n; east e; down d }} makes it.
  */
 public record NedOffset(double north, double east, double down) {
 
@@ -14,9 +13,9 @@ public record NedOffset(double north, double east, double down) {
     }
 
     /**
-     * {@code from} moved by (north, east, down) metres. Latitude and longitude come from the WGS-84
-     * displacement of reference B.5 by (north, east, 0) (tangent plane at {@code from}, with the
-     * original's geocentric-latitude quirk); the height is exactly {@code from}'s height minus
+     * {@code from} moved by (north, east, down) metres. Latitude and longitude come from the
+     * original's WGS-84 displacement by (north, east, 0) (tangent plane at {@code from}, with its
+     * geocentric-latitude quirk); the height is exactly {@code from}'s height minus
      * {@code down}. The original displaced by (north, east, down) in one step: its tilted "down" put a
      * 100 m climb about 0.33 m north, and the tangent plane and the tilt left the height off by up to
      * 0.3 m per 100 m north at these latitudes; here "100 m up" is straight up, to the metre.

@@ -6,7 +6,7 @@ import groovy.lang.DelegatesTo;
 import java.util.Set;
 
 /**
- * The delegate of {@code pos { lat x; lon y; hae h }} (reference C.5): degrees and metres above mean
+ * The delegate of {@code pos { lat x; lon y; hae h }}: degrees and metres above mean
  * sea level; {@code height} is another name for {@code hae}. Each is 0 unless given. A negative value
  * needs parentheses: {@code lon(-8.6)}.
  */

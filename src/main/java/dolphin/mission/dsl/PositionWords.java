@@ -8,7 +8,7 @@ import java.util.Arrays;
 import java.util.stream.Collectors;
 
 /**
- * The script-level {@code move} of the original plugin (reference C.5): {@code move(p, { north n;
+ * The script-level {@code move} of the original plugin: {@code move(p, { north n;
  * east e; down d })} and {@code move(p, moveDistance { ... })}, a position displaced by an offset.
  *
  * <p>It is a platform word (resolved when nothing else answers), not a static import like

@@ -19,11 +19,6 @@ final class FileValues {
     private FileValues() {
     }
 
-    /** degE7 as the nearest double in degrees; writes back to the same degE7 through {@link #degE7(String)}. */
-    static double degreesValue(int degE7) {
-        return degE7 / 1e7;
-    }
-
     /** Degrees (any decimal text) to degE7, rounded half-even; NaN and infinities give 0 (no position). */
     static int degE7(String text) {
         long e7 = parseDegE7(text);

@@ -1,5 +1,16 @@
 package dolphin.mission.flight;
 
+import com.MAVLink.common.msg_mission_item_reached;
+import com.MAVLink.enums.MAV_CMD;
+import com.MAVLink.enums.MAV_MODE_FLAG;
+import com.MAVLink.enums.MAV_RESULT;
+import com.MAVLink.enums.MISSION_STATE;
+import dolphin.core.CompletionState;
+import dolphin.core.Node;
+import dolphin.core.PlatformTaskExecutor;
+import dolphin.core.Position;
+import dolphin.mavlink.CommandResult;
+import dolphin.mavlink.VehicleState;
 import dolphin.mission.model.DroneCommand;
 import dolphin.mission.model.HeightCheck;
 import dolphin.mission.model.JumpToItem;
@@ -8,109 +19,73 @@ import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
 import dolphin.mission.transfer.MissionVerification;
 import dolphin.mission.transfer.TransferResult;
-import com.MAVLink.common.msg_mission_item_reached;
-import com.MAVLink.enums.MAV_CMD;
-import com.MAVLink.enums.MAV_MODE_FLAG;
-import com.MAVLink.enums.MAV_RESULT;
-import com.MAVLink.enums.MISSION_STATE;
-import dolphin.core.CompletionState;
-import dolphin.core.Node;
-import dolphin.core.Position;
-import dolphin.core.PlatformTaskExecutor;
-import dolphin.mavlink.CommandResult;
-import dolphin.mavlink.MAVLinkCommunications;
-import dolphin.mavlink.MAVLinkNode;
-import dolphin.mavlink.VehicleFamily;
-import dolphin.mavlink.VehicleState;
 import java.time.Duration;
 import java.util.ArrayDeque;
+import java.util.Deque;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.OptionalLong;
 import java.util.TreeMap;
 import java.util.concurrent.CompletableFuture;
+import java.util.function.Function;
 
 /**
- * Flies a {@link Mission} on one vehicle (report Listing 8; design §6): a state machine stepped on
- * the script thread, PREPARE, UPLOAD, VERIFY, ARM, START, RUNNING, then DONE or ERROR, each state
- * with a deadline in clock time. Commands and transfers run on the communications thread; each
- * state waits for one of them, and their completion wakes the task tree.
+ * Flies a {@link Mission} on one vehicle: a state machine stepped on the script thread, PREPARE,
+ * UPLOAD, VERIFY (each list: fence, rally points, mission), ARM, START, RUNNING, then DONE or ERROR
+ * (docs/decisions.md, "The mission executor"). Each state is an object that owns its data and its
+ * deadline in clock time; it waits for one command or transfer at a time, whose completion wakes
+ * the task tree. The vehicle is reached through {@link MissionVehicle} only.
  */
 public final class MissionExecutor extends PlatformTaskExecutor {
 
     public enum State { PREPARE, UPLOAD, VERIFY, ARM, START, RUNNING, DONE, ERROR }
 
+    private static final Duration JUMP_RESEND = Duration.ofSeconds(1);
+
     private final Mission mission;
-    private final Map<JumpToItem, Integer> jumpsLeft = new HashMap<>();
-    private MAVLinkNode node;
-    private MAVLinkCommunications comms;
+    private final Function<Node, MissionVehicle> vehicles;
+    /** MISSION_ITEM_REACHED heard since the start, written on the communications thread. */
+    private final ItemsReached reached = new ItemsReached();
+    private MissionVehicle vehicle;
     private MissionExecutorConfig config;
     private FlightRules rules;
-    /** The commands of PREPARE and START. */
-    private CommandSteps steps;
-    private List<MissionItem> items;
-    /** The lists still to upload and verify, in order (fence, rally points, mission); the first is in transfer. */
-    private final ArrayDeque<Map.Entry<MissionType, List<MissionItem>>> lists = new ArrayDeque<>();
-    private MissionEnd end;
-    private TreeMap<Integer, List<DroneCommand>> keyed;
+    private Stage stage;
     private volatile State state = State.PREPARE;
     private String failure;
-    private long deadline;
-    private CompletableFuture<?> pending;
-    private String uploadError;
-    private long nextAttempt;
-    private boolean armModeSet;
-    private volatile int reached;
-    private int sentUpTo;
-    private int reported;
-    private boolean active;
-    /** Whether the vehicle has shown itself ready; until then PREPARE waits (Readiness). */
-    private boolean ready;
-    /** What the vehicle was last waiting for, shown once per change; null when it has not waited. */
-    private String waitingFor;
-    private long prepareStart;
-    /** A jump sent and not yet seen on the vehicle (MISSION_CURRENT back at or before its item); null when none. */
-    private JumpToItem jumping;
-    private long resendJump;
 
-    public MissionExecutor(Mission mission) {
-        super(mission);
-        this.mission = mission;
+    /** @param vehicles the mission side of the vehicle the executor is given; null when it has none */
+    public MissionExecutor(MissionTask task, Function<Node, MissionVehicle> vehicles) {
+        super(task);
+        this.mission = task.mission();
+        this.vehicles = vehicles;
     }
 
     public State state() {
         return state;
     }
 
-    /** The report's consume(MISSION_ITEM_REACHED), on the communications thread: "reached at least seq". */
+    public Mission mission() {
+        return mission;
+    }
+
+    /** MISSION_ITEM_REACHED, on the communications thread: "reached at least seq". */
     public void consume(msg_mission_item_reached message) {
-        synchronized (this) {
-            // Until the vehicle shows it jumped, a MISSION_ITEM_REACHED may be from before the jump.
-            if (jumping == null) {
-                reached = Math.max(reached, message.seq);
-            }
-        }
+        reached.reached(message.seq);
     }
 
     @Override
     protected void onStart() {
-        Node vehicle = getVehicle();
-        if (!(vehicle instanceof MAVLinkNode n)) {
-            failure = "vehicle " + vehicle.getId() + " is not a MAVLink vehicle";
+        Node node = getVehicle();
+        vehicle = vehicles.apply(node);
+        if (vehicle == null) {
+            failure = "vehicle " + node.getId() + " is not a MAVLink vehicle";
             return;
         }
-        node = n;
-        comms = node.communications();
-        config = comms.missionExecutorConfig();
-        rules = FlightRules.of(node.getFamily());
-        steps = new CommandSteps(node.getId(), node::state, config.retry(), this::waitFor, this::watch);
-        node.setExecutor(this);
-        keyed = new TreeMap<>(mission.nonMissionCommands());
-        keyed.values().forEach(cmds -> cmds.stream().filter(c -> c instanceof JumpToItem)
-                .forEach(c -> jumpsLeft.put((JumpToItem) c, ((JumpToItem) c).repetitions())));
-        prepareStart = clock().nanoTime();
-        enter(State.PREPARE, config.prepare());
+        config = vehicle.executorConfig();
+        rules = FlightRules.of(vehicle.state().family());
+        vehicle.flying(this);
+        enter(new Preparing(clock().nanoTime()));
     }
 
     @Override
@@ -118,26 +93,63 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         if (failure != null) {
             return fail(failure);
         }
-        long now = clock().nanoTime();
-        if (state != State.RUNNING && now > deadline) {
-            return fail(state == State.PREPARE ? notReady() : state + " did not finish within its deadline");
+        if (state == State.DONE) {
+            return CompletionState.DONE;
         }
-        return switch (state) {
-            case PREPARE -> prepare(now);
-            case UPLOAD -> upload();
-            case VERIFY -> verify();
-            case ARM -> arm(now);
-            case START -> {
-                if (steps.run(now)) {
-                    progress("started");
-                    enter(State.RUNNING, Duration.ZERO);
-                }
-                yield steps.failure() != null ? fail(steps.failure()) : CompletionState.IN_PROGRESS;
-            }
-            case RUNNING -> running();
-            case DONE -> CompletionState.DONE;
-            case ERROR -> fail(failure);
-        };
+        long now = clock().nanoTime();
+        if (state != State.RUNNING && now > stage.deadline) {
+            return fail(stage.overdue());
+        }
+        return stage.step(now);
+    }
+
+    /** Cut short (a condition, a stopped sequence): the vehicle is sent home if it may be flying. */
+    @Override
+    protected void onStop() {
+        if (vehicle != null && (state == State.ARM || state == State.START || state == State.RUNNING)) {
+            vehicle.command(MAV_CMD.MAV_CMD_DO_SET_MODE, MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED,
+                    vehicle.state().family().modeNumber("RTL").orElse(0));
+            progress("cut short: RTL");
+        }
+        landed();
+    }
+
+    @Override
+    protected void onCompletion() {
+        landed();
+    }
+
+    private void landed() {
+        if (vehicle != null) {
+            vehicle.landed(this);
+        }
+    }
+
+    private void enter(Stage next) {
+        stage = next;
+        state = next.state;
+    }
+
+    /** One state of the flight: its data and its deadline. */
+    private abstract class Stage {
+        final State state;
+        final long deadline;
+
+        Stage(State state, Duration limit) {
+            this.state = state;
+            this.deadline = clock().nanoTime() + limit.toNanos();
+        }
+
+        abstract CompletionState step(long now);
+
+        /** Why the flight fails when the deadline passes. */
+        String overdue() {
+            return state + " did not finish within its deadline";
+        }
+    }
+
+    /** What the flight follows once uploaded: the items, how its end is judged, and the ground-side commands by item. */
+    private record Plan(List<MissionItem> items, MissionEnd end, TreeMap<Integer, List<DroneCommand>> keyed) {
     }
 
     /**
@@ -145,359 +157,442 @@ public final class MissionExecutor extends PlatformTaskExecutor {
      * sets the mission's home, checks the heights against home, and starts the upload. A vehicle
      * that refuses DO_SET_HOME for now (FAILED: no position estimate yet) is asked again.
      */
-    private CompletionState prepare(long now) {
-        if (!ready) {
-            var missing = Readiness.missing(node.state(), mission.getHome() == null);
-            if (missing.isPresent()) {
-                waitFor(missing.get());
-                return CompletionState.IN_PROGRESS;
+    private final class Preparing extends Stage {
+        private final long since;
+        private final CommandSteps steps;
+        private boolean ready;
+        /** What the vehicle was last waiting for, shown once per change; null when it has not waited. */
+        private String waitingFor;
+
+        Preparing(long now) {
+            super(State.PREPARE, config.prepare());
+            since = now;
+            steps = commandSteps(this::waitFor);
+        }
+
+        @Override
+        CompletionState step(long now) {
+            if (!ready) {
+                var missing = Readiness.missing(vehicle.state(), mission.getHome() == null);
+                if (missing.isPresent()) {
+                    waitFor(missing.get());
+                    return CompletionState.IN_PROGRESS;
+                }
+                ready = true;
+                hold();
             }
-            ready = true;
-            queuePreparation();
-        }
-        if (!steps.run(now)) {
-            return steps.failure() != null ? fail(steps.failure()) : CompletionState.IN_PROGRESS;
-        }
-        try {
-            items = mission.items(node.getHome());
-            Position home = mission.getHome() != null ? mission.getHome() : node.getHome();
-            var low = HeightCheck.firstTooLow(mission, home);
-            if (low.isPresent()) {
-                return fail(low.get().message());
+            if (!steps.run(now)) {
+                return steps.failure() != null ? fail(steps.failure()) : CompletionState.IN_PROGRESS;
             }
-        } catch (RuntimeException e) {
-            return fail(e.getMessage());
-        }
-        end = new MissionEnd(rules, items, node.getId(), config.modeGrace(), config.landingStall());
-        List<DroneCommand> beforeUpload = keyed.remove(0);
-        if (beforeUpload != null) {
-            beforeUpload.forEach(c -> c.toMavLinkMessage(node).forEach(node::send));
-        }
-        if (waitingFor != null) {
-            progress("vehicle ready after " + (now - prepareStart) / 1_000_000_000L + " s");
-        }
-        if (!mission.fence().isEmpty()) {
-            lists.add(Map.entry(MissionType.FENCE, mission.fence().items()));
-        }
-        if (!mission.rally().isEmpty()) {
-            lists.add(Map.entry(MissionType.RALLY, mission.rally().items()));
-        }
-        lists.add(Map.entry(MissionType.MISSION, items));
-        startUpload();
-        return CompletionState.IN_PROGRESS;
-    }
-
-    /** Uploads the next list: the fence and rally points go before the mission (docs/airspace.md). */
-    private void startUpload() {
-        var next = lists.peek();
-        uploadError = null;
-        progress("uploading " + (next.getKey() == MissionType.MISSION ? "" : "the " + next.getKey().label() + ": ")
-                + next.getValue().size() + (next.getValue().size() == 1 ? " item" : " items"));
-        pending = watch(node.getUploadProtocol().upload(next.getKey(), next.getValue()));
-        enter(State.UPLOAD, config.upload());
-    }
-
-    private void queuePreparation() {
-        VehicleState s = node.state();
-        if (s.armed() && isMode(s, "AUTO")) {
-            String hold = rules.holdMode();
-            steps.add(new CommandSteps.Step("leaving AUTO for " + hold + " before the new mission", () -> setMode(hold), st -> isMode(st, hold)));
-        }
-        if (mission.getHome() != null) {
-            var h = mission.getHome();
-            steps.add(new CommandSteps.Step("DO_SET_HOME", () -> comms.command(node, MAV_CMD.MAV_CMD_DO_SET_HOME, 0, 0, 0, 0,
-                    (float) h.latitudeDegrees(), (float) h.longitudeDegrees(), (float) h.hae()),
-                    st -> st.home() != null && st.home().distanceTo(h) < 1, true));
-        }
-    }
-
-    /** Says what the vehicle is waiting for, once per change. */
-    private void waitFor(String what) {
-        if (!what.equals(waitingFor)) {
-            waitingFor = what;
-            context().listener().message("waiting for vehicle " + node.getId() + ": " + what);
-        }
-    }
-
-    /** PREPARE's deadline passed: what the vehicle was waiting for, in its own words when it said any. */
-    private String notReady() {
-        String why = Readiness.prearmText(node.state()).orElse(waitingFor != null ? waitingFor : "not ready");
-        return "vehicle " + node.getId() + " was not ready within " + config.prepare().toSeconds() + " s: " + why;
-    }
-
-    private CompletionState upload() {
-        TransferResult r = done();
-        if (r == null) {
+            List<MissionItem> items;
+            try {
+                Position vehicleHome = vehicle.state().home();
+                items = mission.items(vehicleHome);
+                var low = HeightCheck.firstTooLow(mission, mission.getHome() != null ? mission.getHome() : vehicleHome);
+                if (low.isPresent()) {
+                    return fail(low.get().message());
+                }
+            } catch (RuntimeException e) {
+                return fail(e.getMessage());
+            }
+            TreeMap<Integer, List<DroneCommand>> keyed = new TreeMap<>(mission.nonMissionCommands());
+            List<DroneCommand> beforeUpload = keyed.remove(0);
+            if (beforeUpload != null) {
+                beforeUpload.forEach(MissionExecutor.this::send);
+            }
+            if (waitingFor != null) {
+                progress("vehicle ready after " + (now - since) / 1_000_000_000L + " s");
+            }
+            Deque<Map.Entry<MissionType, List<MissionItem>>> lists = new ArrayDeque<>();
+            if (!mission.fence().isEmpty()) {
+                lists.add(Map.entry(MissionType.FENCE, mission.fence().items()));
+            }
+            if (!mission.rally().isEmpty()) {
+                lists.add(Map.entry(MissionType.RALLY, mission.rally().items()));
+            }
+            lists.add(Map.entry(MissionType.MISSION, items));
+            enter(new Uploading(lists, new Plan(items, new MissionEnd(rules, items, vehicle.id(), config.modeGrace(),
+                    config.landingStall()), keyed)));
             return CompletionState.IN_PROGRESS;
         }
-        if (!r.success()) {
-            if (!config.verify()) {
+
+        private void hold() {
+            VehicleState s = vehicle.state();
+            if (s.armed() && isMode(s, "AUTO")) {
+                String hold = rules.holdMode();
+                steps.add(new CommandSteps.Step("leaving AUTO for " + hold + " before the new mission", () -> setMode(hold),
+                        st -> isMode(st, hold)));
+            }
+            if (mission.getHome() != null) {
+                var h = mission.getHome();
+                steps.add(new CommandSteps.Step("DO_SET_HOME", () -> vehicle.command(MAV_CMD.MAV_CMD_DO_SET_HOME, 0, 0, 0, 0,
+                        (float) h.latitudeDegrees(), (float) h.longitudeDegrees(), (float) h.hae()),
+                        st -> st.home() != null && st.home().distanceTo(h) < 1, true));
+            }
+        }
+
+        /** Says what the vehicle is waiting for, once per change. */
+        private void waitFor(String what) {
+            if (!what.equals(waitingFor)) {
+                waitingFor = what;
+                context().listener().message("waiting for vehicle " + vehicle.id() + ": " + what);
+            }
+        }
+
+        /** What the vehicle was waiting for, in its own words when it said any. */
+        @Override
+        String overdue() {
+            String why = Readiness.prearmText(vehicle.state()).orElse(waitingFor != null ? waitingFor : "not ready");
+            return "vehicle " + vehicle.id() + " was not ready within " + config.prepare().toSeconds() + " s: " + why;
+        }
+    }
+
+    /** Uploads the first of the lists still to go: the fence and rally points before the mission (docs/airspace.md). */
+    private final class Uploading extends Stage {
+        private final Deque<Map.Entry<MissionType, List<MissionItem>>> lists;
+        private final Plan plan;
+        private final CompletableFuture<TransferResult> pending;
+
+        Uploading(Deque<Map.Entry<MissionType, List<MissionItem>>> lists, Plan plan) {
+            super(State.UPLOAD, config.upload());
+            this.lists = lists;
+            this.plan = plan;
+            var next = lists.peek();
+            progress("uploading " + (next.getKey() == MissionType.MISSION ? "" : "the " + next.getKey().label() + ": ")
+                    + next.getValue().size() + (next.getValue().size() == 1 ? " item" : " items"));
+            pending = watch(vehicle.upload(next.getKey(), next.getValue()));
+        }
+
+        @Override
+        CompletionState step(long now) {
+            if (!pending.isDone()) {
+                return CompletionState.IN_PROGRESS;
+            }
+            TransferResult r = pending.join();
+            if (!r.success() && !config.verify()) {
                 return fail(r.error());
             }
-            // The vehicle may hold the mission although the final ACK was lost: the download decides.
-            uploadError = r.error();
+            if (config.verify()) {
+                // The vehicle may hold the list although the final ACK was lost: the download decides.
+                enter(new Verifying(lists, plan, r.success() ? null : r.error()));
+            } else {
+                nextList(lists, plan);
+            }
+            return CompletionState.IN_PROGRESS;
         }
-        if (config.verify()) {
-            pending = watch(node.getDownloadProtocol().download(lists.peek().getKey()));
-            enter(State.VERIFY, config.upload());
-        } else {
-            nextList();
+    }
+
+    /** Downloads the list just uploaded and compares it with what was sent. */
+    private final class Verifying extends Stage {
+        private final Deque<Map.Entry<MissionType, List<MissionItem>>> lists;
+        private final Plan plan;
+        /** Why the upload failed, when it did: the download may still find the whole list on the vehicle. */
+        private final String uploadError;
+        private final CompletableFuture<TransferResult> pending;
+
+        Verifying(Deque<Map.Entry<MissionType, List<MissionItem>>> lists, Plan plan, String uploadError) {
+            super(State.VERIFY, config.upload());
+            this.lists = lists;
+            this.plan = plan;
+            this.uploadError = uploadError;
+            pending = watch(vehicle.download(lists.peek().getKey()));
         }
-        return CompletionState.IN_PROGRESS;
+
+        @Override
+        CompletionState step(long now) {
+            if (!pending.isDone()) {
+                return CompletionState.IN_PROGRESS;
+            }
+            TransferResult r = pending.join();
+            if (!r.success()) {
+                return fail(uploadError != null ? uploadError : "verifying the upload failed: " + r.error());
+            }
+            MissionType type = lists.peek().getKey();
+            var difference = MissionVerification.firstDifference(type, lists.peek().getValue(), r.items());
+            if (difference.isPresent()) {
+                return fail(uploadError != null ? uploadError
+                        : "the vehicle holds another " + type.label() + " than the one uploaded: " + difference.get());
+            }
+            String what = type == MissionType.MISSION ? "upload" : type.label();
+            progress(uploadError == null ? what + " verified" : what + " verified by download (" + uploadError + ")");
+            nextList(lists, plan);
+            return CompletionState.IN_PROGRESS;
+        }
     }
 
     /** The list in transfer is done: the next one, or ARM after the mission. */
-    private void nextList() {
+    private void nextList(Deque<Map.Entry<MissionType, List<MissionItem>>> lists, Plan plan) {
         lists.poll();
-        if (lists.isEmpty()) {
-            enterArm();
-        } else {
-            startUpload();
-        }
-    }
-
-    private CompletionState verify() {
-        TransferResult r = done();
-        if (r == null) {
-            return CompletionState.IN_PROGRESS;
-        }
-        if (!r.success()) {
-            return fail(uploadError != null ? uploadError : "verifying the upload failed: " + r.error());
-        }
-        MissionType type = lists.peek().getKey();
-        var difference = MissionVerification.firstDifference(type, lists.peek().getValue(), r.items());
-        if (difference.isPresent()) {
-            return fail(uploadError != null ? uploadError
-                    : "the vehicle holds another " + type.label() + " than the one uploaded: " + difference.get());
-        }
-        String what = type == MissionType.MISSION ? "upload" : type.label();
-        progress(uploadError == null ? what + " verified" : what + " verified by download (" + uploadError + ")");
-        nextList();
-        return CompletionState.IN_PROGRESS;
-    }
-
-    private void enterArm() {
-        enter(State.ARM, config.arm());
-        nextAttempt = clock().nanoTime();
+        enter(lists.isEmpty() ? new Arming(plan) : new Uploading(lists, plan));
     }
 
     /** In the family's arming mode, if it has one, then arm; arming is retried until the deadline. */
-    private CompletionState arm(long now) {
-        var armMode = rules.armMode();
-        if (armMode.isPresent() && !armModeSet) {
-            String mode = armMode.get();
-            if (pending == null) {
-                pending = watch(setMode(mode));
+    private final class Arming extends Stage {
+        private final Plan plan;
+        private final CommandSteps commands = commandSteps(what -> { });
+        private boolean armModeSet;
+        private CompletableFuture<CommandResult> pending;
+        private long nextAttempt;
+
+        Arming(Plan plan) {
+            super(State.ARM, config.arm());
+            this.plan = plan;
+            nextAttempt = clock().nanoTime();
+        }
+
+        @Override
+        CompletionState step(long now) {
+            var armMode = rules.armMode();
+            if (armMode.isPresent() && !armModeSet) {
+                String mode = armMode.get();
+                if (pending == null) {
+                    pending = watch(setMode(mode));
+                }
+                CommandResult r = answer();
+                if (r == null) {
+                    return CompletionState.IN_PROGRESS;
+                }
+                if (!commands.tookEffect(r, st -> isMode(st, mode))) {
+                    return fail(commands.refusal(mode, r));
+                }
+                armModeSet = true;
             }
-            CommandResult r = commandDone();
+            if (pending == null) {
+                if (now < nextAttempt) {
+                    return CompletionState.IN_PROGRESS;
+                }
+                pending = watch(vehicle.command(MAV_CMD.MAV_CMD_COMPONENT_ARM_DISARM, 1));
+            }
+            CommandResult r = answer();
             if (r == null) {
                 return CompletionState.IN_PROGRESS;
             }
-            if (!steps.tookEffect(r, st -> isMode(st, mode))) {
-                return fail(steps.refusal(mode, r));
-            }
-            armModeSet = true;
-        }
-        if (pending == null) {
-            if (now < nextAttempt) {
+            if (commands.tookEffect(r, VehicleState::armed)) {
+                progress("armed");
+                enter(new Starting(plan));
                 return CompletionState.IN_PROGRESS;
             }
-            pending = watch(comms.command(node, MAV_CMD.MAV_CMD_COMPONENT_ARM_DISARM, 1));
-        }
-        CommandResult r = commandDone();
-        if (r == null) {
+            if (now + config.retry().toNanos() > deadline) {
+                return fail("vehicle " + vehicle.id() + " refused to arm for " + config.arm().toSeconds() + " s: "
+                        + lastArmText(r));
+            }
+            nextAttempt = now + config.retry().toNanos();
             return CompletionState.IN_PROGRESS;
         }
-        if (steps.tookEffect(r, VehicleState::armed)) {
-            progress("armed");
-            // From the first item, whatever the vehicle ran before: ArduPilot keeps its mission's current item
-            // across an upload, and a copter on the ground refuses AUTO unless that item leads to a take-off.
-            if (mission.fenceEnabled()) {
-                steps.add(new CommandSteps.Step("MAV_CMD_DO_FENCE_ENABLE 1", () -> comms.command(node,
-                        MAV_CMD.MAV_CMD_DO_FENCE_ENABLE, 1, 0), st -> false));
-            }
-            steps.add(new CommandSteps.Step("MAV_CMD_DO_SET_MISSION_CURRENT 1", () -> comms.command(node,
-                    MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT, 1, 1), st -> st.missionSeq() == 1));
-            steps.add(new CommandSteps.Step("AUTO", () -> setMode("AUTO"), st -> isMode(st, "AUTO")));
-            if (rules.needsMissionStart()) {
-                steps.add(new CommandSteps.Step("MAV_CMD_MISSION_START", () -> comms.command(node, MAV_CMD.MAV_CMD_MISSION_START, 0, 0),
-                        st -> st.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE));
-            }
-            enter(State.START, config.start());
-            return CompletionState.IN_PROGRESS;
-        }
-        if (now + config.retry().toNanos() > deadline) {
-            return fail("vehicle " + node.getId() + " refused to arm for " + config.arm().toSeconds() + " s: "
-                    + lastArmText(r));
-        }
-        nextAttempt = now + config.retry().toNanos();
-        return CompletionState.IN_PROGRESS;
-    }
 
-    private String lastArmText(CommandResult r) {
-        List<String> texts = node.state().statusTexts();
-        for (int i = texts.size() - 1; i >= 0; i--) {
-            if (texts.get(i).contains("Arm")) {
-                return texts.get(i);
+        private CommandResult answer() {
+            if (pending == null || !pending.isDone()) {
+                return null;
             }
+            CommandResult r = pending.join();
+            pending = null;
+            return r;
         }
-        return r.resultName();
-    }
 
-    private CompletionState running() {
-        VehicleState s = node.state();
-        if (s.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE) {
-            active = true;
+        private String lastArmText(CommandResult r) {
+            List<String> texts = vehicle.state().statusTexts();
+            for (int i = texts.size() - 1; i >= 0; i--) {
+                if (texts.get(i).contains("Arm")) {
+                    return texts.get(i);
+                }
+            }
+            return r.resultName();
         }
-        int last = items.size() - 1;
-        if (!jumpSeen(s)) {
-            return CompletionState.IN_PROGRESS;
-        }
-        int r = reached;
-        if (active && s.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE) {
-            r = Math.max(r, s.missionSeq() - 1);
-        }
-        if (r > reported) {
-            reported = r;
-            progress("item " + Math.min(r, last) + " of " + last + " reached");
-        }
-        sendKeyedCommands(r);
-        MissionEnd.Verdict verdict = end.judge(s, r, isMode(s, "AUTO"), clock().nanoTime());
-        if (verdict.done()) {
-            return finish();
-        }
-        return verdict.error() != null ? fail(verdict.error()) : CompletionState.IN_PROGRESS;
     }
 
     /**
-     * After a jump, MISSION_CURRENT and MISSION_ITEM_REACHED from before it (items past the jump's key)
-     * still arrive: they are ignored until MISSION_CURRENT is back at or before the jump's item. The jump's
-     * MISSION_SET_CURRENT is sent again each second until then, in case it was lost.
+     * The fence on if the script says so, the first item current, AUTO, and MISSION_START where the
+     * family needs it. From the first item whatever the vehicle ran before: ArduPilot keeps its
+     * mission's current item across an upload, and a copter on the ground refuses AUTO unless that
+     * item leads to a take-off.
      */
-    private boolean jumpSeen(VehicleState s) {
-        synchronized (this) {
+    private final class Starting extends Stage {
+        private final Plan plan;
+        private final CommandSteps steps = commandSteps(what -> { });
+
+        Starting(Plan plan) {
+            super(State.START, config.start());
+            this.plan = plan;
+            if (mission.fenceEnabled()) {
+                steps.add(new CommandSteps.Step("MAV_CMD_DO_FENCE_ENABLE 1", () -> vehicle.command(
+                        MAV_CMD.MAV_CMD_DO_FENCE_ENABLE, 1, 0), st -> false));
+            }
+            steps.add(new CommandSteps.Step("MAV_CMD_DO_SET_MISSION_CURRENT 1", () -> vehicle.command(
+                    MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT, 1, 1), st -> st.missionSeq() == 1));
+            steps.add(new CommandSteps.Step("AUTO", () -> setMode("AUTO"), st -> isMode(st, "AUTO")));
+            if (rules.needsMissionStart()) {
+                steps.add(new CommandSteps.Step("MAV_CMD_MISSION_START", () -> vehicle.command(MAV_CMD.MAV_CMD_MISSION_START, 0, 0),
+                        st -> st.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE));
+            }
+        }
+
+        @Override
+        CompletionState step(long now) {
+            if (steps.run(now)) {
+                progress("started");
+                enter(new Following(plan));
+            }
+            return steps.failure() != null ? fail(steps.failure()) : CompletionState.IN_PROGRESS;
+        }
+    }
+
+    /** Follows the flight: items reached, ground-side commands and jumps at their items, and the end (MissionEnd). */
+    private final class Following extends Stage {
+        private final Plan plan;
+        private final Map<JumpToItem, Integer> jumpsLeft = new HashMap<>();
+        /** Whether the vehicle has shown the mission active (MISSION_CURRENT), so its current item counts as progress. */
+        private boolean active;
+        private int sentUpTo;
+        private int reported;
+        private long resendJump;
+
+        Following(Plan plan) {
+            super(State.RUNNING, Duration.ZERO);
+            this.plan = plan;
+            plan.keyed().values().forEach(cmds -> cmds.stream().filter(c -> c instanceof JumpToItem)
+                    .forEach(c -> jumpsLeft.put((JumpToItem) c, ((JumpToItem) c).repetitions())));
+        }
+
+        @Override
+        CompletionState step(long now) {
+            VehicleState s = vehicle.state();
+            if (s.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE) {
+                active = true;
+            }
+            int last = plan.items().size() - 1;
+            if (!jumpSeen(s, now)) {
+                return CompletionState.IN_PROGRESS;
+            }
+            int r = reached.get();
+            if (active && s.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE) {
+                r = Math.max(r, s.missionSeq() - 1);
+            }
+            if (r > reported) {
+                reported = r;
+                progress("item " + Math.min(r, last) + " of " + last + " reached");
+            }
+            sendKeyedCommands(r, now);
+            MissionEnd.Verdict verdict = plan.end().judge(s, r, isMode(s, "AUTO"), now);
+            if (verdict.done()) {
+                MissionExecutor.this.state = State.DONE;
+                progress("done");
+                return CompletionState.DONE;
+            }
+            return verdict.error() != null ? fail(verdict.error()) : CompletionState.IN_PROGRESS;
+        }
+
+        /**
+         * After a jump, MISSION_CURRENT and MISSION_ITEM_REACHED from before it (items past the jump's key)
+         * still arrive: they are ignored until MISSION_CURRENT is back at or before the jump's item. The jump's
+         * MISSION_SET_CURRENT is sent again each second until then, in case it was lost.
+         */
+        private boolean jumpSeen(VehicleState s, long now) {
+            JumpToItem jumping = reached.jumpPending(s);
             if (jumping == null) {
                 return true;
             }
-            if (s.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE && s.missionSeq() >= 0 && s.missionSeq() <= jumping.item()) {
-                jumping = null;
-                return true;
+            if (now >= resendJump) {
+                send(jumping);
+                resendJump = now + JUMP_RESEND.toNanos();
             }
+            return false;
         }
-        long now = clock().nanoTime();
-        if (now >= resendJump) {
-            jumping.toMavLinkMessage(node).forEach(node::send);
-            resendJump = now + Duration.ofSeconds(1).toNanos();
-        }
-        return false;
-    }
 
-    /** Sends the non-mission commands keyed by the items reached; a jump goes back and runs them again. */
-    private void sendKeyedCommands(int r) {
-        if (r <= sentUpTo) {
-            return;
-        }
-        for (Map.Entry<Integer, List<DroneCommand>> e : keyed.subMap(sentUpTo, false, r, true).entrySet()) {
-            for (DroneCommand c : e.getValue()) {
-                if (c instanceof JumpToItem jump) {
-                    int left = jumpsLeft.getOrDefault(jump, 0);
-                    if (left > 0) {
-                        jumpsLeft.put(jump, left - 1);
-                        jump.toMavLinkMessage(node).forEach(node::send);
-                        progress("jump to item " + jump.item());
-                        synchronized (this) {
-                            reached = jump.item() - 1;
-                            jumping = jump;
+        /** Sends the non-mission commands keyed by the items reached; a jump goes back and runs them again. */
+        private void sendKeyedCommands(int r, long now) {
+            if (r <= sentUpTo) {
+                return;
+            }
+            for (Map.Entry<Integer, List<DroneCommand>> e : plan.keyed().subMap(sentUpTo, false, r, true).entrySet()) {
+                for (DroneCommand c : e.getValue()) {
+                    if (c instanceof JumpToItem jump) {
+                        int left = jumpsLeft.getOrDefault(jump, 0);
+                        if (left > 0) {
+                            jumpsLeft.put(jump, left - 1);
+                            send(jump);
+                            progress("jump to item " + jump.item());
+                            reached.jumped(jump);
+                            resendJump = now + JUMP_RESEND.toNanos();
+                            sentUpTo = jump.item() - 1;
+                            reported = sentUpTo;
+                            return;
                         }
-                        resendJump = clock().nanoTime() + Duration.ofSeconds(1).toNanos();
-                        sentUpTo = jump.item() - 1;
-                        reported = sentUpTo;
-                        return;
+                    } else {
+                        send(c);
                     }
-                } else {
-                    c.toMavLinkMessage(node).forEach(node::send);
                 }
+                sentUpTo = e.getKey();
             }
-            sentUpTo = e.getKey();
         }
     }
 
-    private CompletionState finish() {
-        state = State.DONE;
-        progress("done");
-        return CompletionState.DONE;
+    /**
+     * The items the vehicle reported reached (MISSION_ITEM_REACHED, on the communications thread) and the
+     * ground-side jump not yet seen on the vehicle (script thread): until the vehicle shows the jump, a
+     * MISSION_ITEM_REACHED may be from before it.
+     */
+    private static final class ItemsReached {
+        private int reached;
+        private JumpToItem jumping;
+
+        synchronized void reached(int seq) {
+            if (jumping == null) {
+                reached = Math.max(reached, seq);
+            }
+        }
+
+        synchronized int get() {
+            return reached;
+        }
+
+        synchronized void jumped(JumpToItem jump) {
+            reached = jump.item() - 1;
+            jumping = jump;
+        }
+
+        /** The jump still not seen on the vehicle (MISSION_CURRENT not yet back at or before its item), or null. */
+        synchronized JumpToItem jumpPending(VehicleState s) {
+            if (jumping != null && s.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE && s.missionSeq() >= 0
+                    && s.missionSeq() <= jumping.item()) {
+                jumping = null;
+            }
+            return jumping;
+        }
+    }
+
+    private CommandSteps commandSteps(java.util.function.Consumer<String> waiting) {
+        return new CommandSteps(vehicle.id(), vehicle::state, config.retry(), waiting, this::watch);
+    }
+
+    private void send(DroneCommand command) {
+        command.messages(vehicle.system(), vehicle.component()).forEach(vehicle::send);
     }
 
     private CompletableFuture<CommandResult> setMode(String name) {
-        OptionalLong mode = getFamily().modeNumber(name);
+        OptionalLong mode = vehicle.state().family().modeNumber(name);
         if (mode.isEmpty()) {
             return CompletableFuture.completedFuture(new CommandResult(MAV_CMD.MAV_CMD_DO_SET_MODE, MAV_RESULT.MAV_RESULT_UNSUPPORTED, 0));
         }
-        return comms.command(node, MAV_CMD.MAV_CMD_DO_SET_MODE, MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED, mode.getAsLong());
-    }
-
-    private VehicleFamily getFamily() {
-        return node.getFamily();
+        return vehicle.command(MAV_CMD.MAV_CMD_DO_SET_MODE, MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED, mode.getAsLong());
     }
 
     private static boolean isMode(VehicleState s, String name) {
         return s.heartbeat() != null && s.family().modeNumber(name).orElse(-1) == s.customMode();
     }
 
-    private CommandResult commandDone() {
-        return (CommandResult) done();
-    }
-
-    @SuppressWarnings("unchecked")
-    private <T> T done() {
-        if (pending == null || !pending.isDone()) {
-            return null;
-        }
-        T r = (T) pending.join();
-        pending = null;
-        return r;
-    }
-
-    private void enter(State next, Duration limit) {
-        state = next;
-        deadline = clock().nanoTime() + limit.toNanos();
-    }
-
     /** Steps the task tree as soon as the operation completes, not at the next tick. */
     private <T> CompletableFuture<T> watch(CompletableFuture<T> operation) {
-        operation.whenComplete((r, e) -> comms.wakeScript());
+        operation.whenComplete((r, e) -> vehicle.wake());
         return operation;
     }
 
     private CompletionState fail(String why) {
         failure = why;
         state = State.ERROR;
-        return CompletionState.error("mission " + mission.getId() + (node != null ? " on vehicle " + node.getId() : "") + ": " + why);
+        return CompletionState.error("mission " + mission.getId() + (vehicle != null ? " on vehicle " + vehicle.id() : "") + ": " + why);
     }
 
     private void progress(String what) {
-        context().listener().message("mission " + mission.getId() + " on vehicle " + node.getId() + ": " + what);
-    }
-
-    /** Cut short (a condition, a stopped sequence): the vehicle is sent home if it may be flying. */
-    @Override
-    protected void onStop() {
-        if (node != null && (state == State.ARM || state == State.START || state == State.RUNNING)) {
-            comms.command(node, MAV_CMD.MAV_CMD_DO_SET_MODE, MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED,
-                    getFamily().modeNumber("RTL").orElse(0));
-            progress("cut short: RTL");
-        }
-        release();
-    }
-
-    @Override
-    protected void onCompletion() {
-        release();
-    }
-
-    private void release() {
-        if (node != null && node.getExecutor() == this) {
-            node.setExecutor(null);
-        }
+        context().listener().message("mission " + mission.getId() + " on vehicle " + vehicle.id() + ": " + what);
     }
 }

@@ -5,7 +5,8 @@ import java.util.List;
 import java.util.Objects;
 
 /**
- * Start taking pictures: one MAV_CMD_IMAGE_START_CAPTURE in MAV_FRAME_MISSION (design §5, F-10).
+ * Start taking pictures: one MAV_CMD_IMAGE_START_CAPTURE in MAV_FRAME_MISSION, its parameters as
+ * MAVLink defines them (the original put the interval in p1 and forced p2 = 10).
  * p1 = 0 (all cameras), p2 = interval (s), p3 = number of pictures (0: until {@code stopCapturing}),
  * p4 = 0. {@code capturePhoto} is (0, 1), {@code captureSeveralPhotos n, t} is (t, n),
  * {@code captureUntilStop t} is (t, 0).

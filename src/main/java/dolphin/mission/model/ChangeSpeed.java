@@ -4,13 +4,13 @@ import com.MAVLink.enums.MAV_CMD;
 import java.util.List;
 
 /**
- * {@code speed(newSpeed, speedType = 0)}: one MAV_CMD_DO_CHANGE_SPEED in MAV_FRAME_MISSION (design
- * §5, F-8). p1 = speed type (0 airspeed, 1 ground speed, 2 climb, 3 descent), p2 = speed (m/s),
- * p3 = -1 (throttle unchanged; the original forced 10 %, E-9), p4 = 0.
+ * {@code speed(newSpeed, speedType = 0)}: one MAV_CMD_DO_CHANGE_SPEED in MAV_FRAME_MISSION, as
+ * MAVLink defines it. p1 = speed type (0 airspeed, 1 ground speed, 2 climb, 3 descent),
+ * p2 = speed (m/s), p3 = -1 (throttle unchanged; the original forced 10 %), p4 = 0.
  */
 public final class ChangeSpeed extends MissionPoint {
 
-    /** Airspeed (F-8: the report and MissionCommands.txt agree on 0). */
+    /** Airspeed: the report and the original's command list say 0 (its code used 1, ground speed). */
     public static final int DEFAULT_TYPE = 0;
 
     private final float speed;

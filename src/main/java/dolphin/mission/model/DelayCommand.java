@@ -4,8 +4,9 @@ import com.MAVLink.enums.MAV_CMD;
 import java.util.List;
 
 /**
- * {@code delay(seconds)}: one MAV_CMD_NAV_DELAY in MAV_FRAME_MISSION (design §5, F-10): p1 = seconds,
- * p2 = p3 = p4 = -1 (no time of day). The original left p1 at 0 and split the time into h/m/s (E-9).
+ * {@code delay(seconds)}: one MAV_CMD_NAV_DELAY in MAV_FRAME_MISSION, as MAVLink defines it:
+ * p1 = seconds, p2 = p3 = p4 = -1 (no time of day). The original left p1 at 0 and split the time
+ * into h/m/s, with the hours in p3.
  */
 public final class DelayCommand extends MissionPoint {
 

@@ -1,13 +1,12 @@
 package dolphin.mission.model;
 
 import com.MAVLink.Messages.MAVLinkMessage;
-import dolphin.mavlink.MAVLinkNode;
 import java.util.List;
 
 /**
- * One command of a mission as the script wrote it (report Listing 6). Mission points become
+ * One command of a mission as the script wrote it. Mission points become
  * mission items; the other commands are sent by the ground station at a point of the flight
- * (keyed by item seq, design §5), like the ground-side {@code jumpToItem}.
+ * (keyed by item seq: docs/decisions.md, "Missions"), like the ground-side {@code jumpToItem}.
  */
 public abstract class DroneCommand {
 
@@ -19,6 +18,11 @@ public abstract class DroneCommand {
         return false;
     }
 
-    /** The messages that carry this command to a vehicle (for non-mission commands). */
-    public abstract List<MAVLinkMessage> toMavLinkMessage(MAVLinkNode dest);
+    /**
+     * What the ground station sends a vehicle for this command when its place in the flight comes;
+     * nothing for mission points, which are flown as items.
+     */
+    public List<MAVLinkMessage> messages(int system, int component) {
+        return List.of();
+    }
 }

@@ -6,8 +6,8 @@ import java.util.List;
 import java.util.Objects;
 
 /**
- * Fly to a position: one MAV_CMD_NAV_WAYPOINT (reference C.6 row 3). Made by {@code goPos},
- * {@code move}, {@code moveFromHome}, {@code returnHome} and {@code altitude}.
+ * Fly to a position: one MAV_CMD_NAV_WAYPOINT (command 3 of docs/mission-commands.md). Made by
+ * {@code goPos}, {@code move}, {@code moveFromHome}, {@code returnHome} and {@code altitude}.
  * p1 = 0 (no hold), p2 = 50 m acceptance radius, p3 = 0 (pass through), p4 = NaN (keep the yaw mode).
  */
 public final class GoToPoint extends MissionPoint {

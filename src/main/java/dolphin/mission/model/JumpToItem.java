@@ -2,11 +2,10 @@ package dolphin.mission.model;
 
 import com.MAVLink.Messages.MAVLinkMessage;
 import com.MAVLink.common.msg_mission_set_current;
-import dolphin.mavlink.MAVLinkNode;
 import java.util.List;
 
 /**
- * {@code jumpToItem item, repetitions}: a ground-side jump (F-20). When the vehicle reaches the item
+ * {@code jumpToItem item, repetitions}: a ground-side jump, as in the original. When the vehicle reaches the item
  * before this command, the ground station sends MISSION_SET_CURRENT(item), at most
  * {@code repetitions} times per flight. {@code item} is the uploaded seq (home is 0).
  */
@@ -34,10 +33,10 @@ public final class JumpToItem extends DroneCommand {
     }
 
     @Override
-    public List<MAVLinkMessage> toMavLinkMessage(MAVLinkNode dest) {
+    public List<MAVLinkMessage> messages(int system, int component) {
         msg_mission_set_current m = new msg_mission_set_current();
-        m.target_system = (short) dest.getMavLinkId();
-        m.target_component = (short) dest.getAutopilotCompid();
+        m.target_system = (short) system;
+        m.target_component = (short) component;
         m.seq = item;
         return List.of(m);
     }

@@ -6,9 +6,9 @@ import java.util.List;
 import java.util.Objects;
 
 /**
- * Land at a position: one MAV_CMD_NAV_LAND (reference C.6 rows 17 and 20). p1 = 0 (abort altitude:
- * the vehicle's default), p2 = precision land mode (PRECISION_LAND_MODE: 0 disabled, 1 opportunistic,
- * 2 required), p3 = 0, p4 = yaw (degrees, NaN: keep the yaw mode).
+ * Land at a position: one MAV_CMD_NAV_LAND (commands 17 and 20 of docs/mission-commands.md).
+ * p1 = 0 (abort altitude: the vehicle's default), p2 = precision land mode (PRECISION_LAND_MODE:
+ * 0 disabled, 1 opportunistic, 2 required), p3 = 0, p4 = yaw (degrees, NaN: keep the yaw mode).
  */
 public final class LandingPoint extends MissionPoint {
 

@@ -4,8 +4,8 @@ import com.MAVLink.enums.MAV_CMD;
 import dolphin.core.Position;
 
 /**
- * Circle a position until the mission is cut short: one MAV_CMD_NAV_LOITER_UNLIM (reference C.6
- * rows 8, 11, 14, 19). p1 = p2 = 0, p3 = radius (metres, clockwise), p4 = 0.
+ * Circle a position until the mission is cut short: one MAV_CMD_NAV_LOITER_UNLIM (commands 8, 11,
+ * 14 and 19 of docs/mission-commands.md). p1 = p2 = 0, p3 = radius (metres, clockwise), p4 = 0.
  */
 public final class LoiterPoint extends CirclingPoint {
 

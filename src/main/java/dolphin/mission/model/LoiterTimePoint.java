@@ -4,7 +4,8 @@ import com.MAVLink.enums.MAV_CMD;
 import dolphin.core.Position;
 
 /**
- * Circle a position for a time: one MAV_CMD_NAV_LOITER_TIME (reference C.6 rows 10, 13, 16).
+ * Circle a position for a time: one MAV_CMD_NAV_LOITER_TIME (commands 10, 13 and 16 of
+ * docs/mission-commands.md).
  * p1 = seconds, p2 = 0, p3 = radius (metres, clockwise), p4 = 0 (exit at the centre).
  */
 public final class LoiterTimePoint extends CirclingPoint {

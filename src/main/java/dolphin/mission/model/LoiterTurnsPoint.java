@@ -4,7 +4,8 @@ import com.MAVLink.enums.MAV_CMD;
 import dolphin.core.Position;
 
 /**
- * Circle a position a number of times: one MAV_CMD_NAV_LOITER_TURNS (reference C.6 rows 9, 12, 15).
+ * Circle a position a number of times: one MAV_CMD_NAV_LOITER_TURNS (commands 9, 12 and 15
+ * of docs/mission-commands.md).
  * p1 = turns (default 10), p2 = 0, p3 = radius (metres, clockwise), p4 = 0 (exit at the centre).
  */
 public final class LoiterTurnsPoint extends CirclingPoint {

@@ -1,27 +1,23 @@
 package dolphin.mission.model;
 
-import dolphin.mission.flight.MissionExecutor;
-import com.MAVLink.Messages.MAVLinkMessage;
 import com.MAVLink.enums.MAV_CMD;
 import dolphin.core.EnvironmentException;
-import dolphin.core.NodeFilter;
-import dolphin.core.PlatformTask;
-import dolphin.core.PlatformTaskExecutor;
 import dolphin.core.Position;
-import dolphin.mavlink.MAVLinkNode;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
 /**
- * A MAVLink mission as a Dolphin task (report Listing 5): the commands of a {@code mission { }}
- * block, turned into the items a vehicle flies. Item 0 is always the home placeholder, which
- * ArduPilot overwrites with its home; real items start at 1 (design §5). The same Mission object
- * may fly on several vehicles at once (E-3): it holds no per-flight state.
+ * A MAVLink mission: the commands of a {@code mission { }} block (or of a file), turned into the
+ * items a vehicle flies, with the fence and rally points that go with it. Item 0 is always the home
+ * placeholder, which ArduPilot overwrites with its home; real items start at 1 (docs/decisions.md,
+ * "Missions"). Flying it is the flight layer's {@code MissionTask}; the same Mission may fly on
+ * several vehicles at once, so it holds no per-flight state.
  */
-public final class Mission extends PlatformTask {
+public final class Mission {
 
+    private final String id;
     private final Position home;
     private final boolean belowHomeAllowed;
     private final List<DroneCommand> droneCommands = new ArrayList<>();
@@ -40,7 +36,7 @@ public final class Mission extends PlatformTask {
      *        ({@code allowBelowHome true}; see {@link HeightCheck})
      */
     public Mission(String name, Position home, List<DroneCommand> commands, boolean belowHomeAllowed) {
-        super(name);
+        this.id = name;
         this.home = home;
         this.belowHomeAllowed = belowHomeAllowed;
         setDroneCommands(commands);
@@ -96,9 +92,9 @@ public final class Mission extends PlatformTask {
         return home;
     }
 
-    @Override
-    public String kind() {
-        return "mission";
+    /** The mission's name, as the script gave it or the default. */
+    public String getId() {
+        return id;
     }
 
     /** The number of items, the home placeholder included: what MISSION_COUNT says. */
@@ -139,17 +135,8 @@ public final class Mission extends PlatformTask {
         throw new EnvironmentException("mission " + getId() + " has no home: name one with 'home', or give it a position");
     }
 
-    /** The MISSION_ITEM_INT messages for a vehicle (report's toMissionMessages). */
-    public List<MAVLinkMessage> toMissionMessages(MAVLinkNode dest) {
-        List<MAVLinkMessage> out = new ArrayList<>();
-        for (MissionItem i : items(dest.getHome())) {
-            out.add(i.toMessage(dest.getMavLinkId(), dest.getAutopilotCompid()));
-        }
-        return out;
-    }
-
     /**
-     * The commands that are not mission items, keyed by item seq (F-3): key 0 for those before the
+     * The commands that are not mission items, keyed by item seq: key 0 for those before the
      * first mission point (sent before the upload), key k for those after the point whose last
      * item is k (sent when the vehicle reports item k reached).
      */
@@ -166,23 +153,8 @@ public final class Mission extends PlatformTask {
         return byKey;
     }
 
-    /** The report's droneCommandsToMissionItem: the non-mission commands' messages, keyed by item seq. */
-    public Map<Integer, List<MAVLinkMessage>> droneCommandsToMissionItem(MAVLinkNode dest) {
-        Map<Integer, List<MAVLinkMessage>> out = new LinkedHashMap<>();
-        nonMissionCommands().forEach((k, cmds) -> cmds.forEach(c -> out.computeIfAbsent(k, x -> new ArrayList<>())
-                .addAll(c.toMavLinkMessage(dest))));
-        return out;
-    }
-
-    /** One vehicle of any type. */
     @Override
-    public List<NodeFilter> getRequirements() {
-        return List.of(NodeFilter.ANY);
-    }
-
-    /** A new executor that uploads, starts and follows this mission on its vehicle. */
-    @Override
-    public PlatformTaskExecutor getExecutor() {
-        return new MissionExecutor(this);
+    public String toString() {
+        return id;
     }
 }

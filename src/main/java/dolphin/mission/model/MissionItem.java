@@ -9,7 +9,8 @@ import dolphin.mavlink.EnumNames;
 /**
  * One item of a MAVLink mission as it goes on the wire (MISSION_ITEM_INT): x and y are latitude
  * and longitude in degE7, z is metres (above mean sea level in MAV_FRAME_GLOBAL_INT, the frame this
- * project uses: design §4). Immutable; equal items compare equal, NaN parameters included.
+ * project uses: docs/decisions.md, "Heights and positions"). Immutable; equal items compare equal,
+ * NaN parameters included.
  */
 public record MissionItem(int seq, int command, int frame, float param1, float param2, float param3, float param4,
                           int x, int y, float z, boolean autocontinue) {

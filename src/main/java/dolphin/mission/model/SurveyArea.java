@@ -9,8 +9,8 @@ import java.util.Objects;
 
 /**
  * {@code surveyArea}: a lawn-mower pattern of MAV_CMD_NAV_WAYPOINTs over a {@code length} x
- * {@code width} area from a base position (reference C.8), made self-consistent as F-4 and design
- * §5 ask:
+ * {@code width} area from a base position: the original's pattern, made self-consistent
+ * (docs/decisions.md, "Missions"):
  *
  * <ul>
  *   <li>N = round(width / spacing) + 1 passes (Java {@link Math#round}, half up);</li>
@@ -21,9 +21,10 @@ import java.util.Objects;
  * </ul>
  *
  * <p>That is 2N items, numbered consecutively, and {@link #messageCount()} is 2N too (the original
- * emitted about half the passes with duplicate seqs, E-8). Every waypoint is at the base's height,
- * with p1 = 0, p2 = 25 m acceptance radius, p3 = 0, p4 = NaN. Horizontal steps use the WGS-84
- * displacement of reference B.5, each from the previous waypoint.
+ * emitted about half the passes with duplicate seqs, and declared fewer items than it emitted).
+ * Every waypoint is at the base's height, with p1 = 0, p2 = 25 m acceptance radius, p3 = 0,
+ * p4 = NaN. Horizontal steps use the original's WGS-84 displacement ({@code Wgs84}), each from the
+ * previous waypoint.
  */
 public final class SurveyArea extends MissionPoint {
 

@@ -1,7 +1,7 @@
 package dolphin.mission.model;
 
 /**
- * The direction of a survey (reference C.8): the first word says whether the first pass flies north
+ * The direction of a survey: the first word says whether the first pass flies north
  * or south, the second whether the passes step east or west.
  */
 public enum SurveyDirection {

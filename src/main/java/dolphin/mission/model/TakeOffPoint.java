@@ -6,7 +6,8 @@ import java.util.List;
 import java.util.Objects;
 
 /**
- * Take off and climb to a position: one MAV_CMD_NAV_TAKEOFF (reference C.6 rows 4 and 5).
+ * Take off and climb to a position: one MAV_CMD_NAV_TAKEOFF (commands 4 and 5 of
+ * docs/mission-commands.md).
  * p1 = pitch (degrees, default 15), p2 = p3 = 0, p4 = yaw (degrees, default NaN: keep the yaw mode).
  */
 public final class TakeOffPoint extends MissionPoint {

@@ -11,33 +11,27 @@ import com.MAVLink.common.msg_mission_request_int;
 import com.MAVLink.common.msg_mission_request_list;
 import com.MAVLink.enums.MAV_FRAME;
 import com.MAVLink.enums.MAV_MISSION_RESULT;
-import dolphin.mavlink.MAVLinkCommunications;
-import dolphin.mavlink.MAVLinkNode;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 
 /**
- * Downloads a vehicle's mission (reference C.11, with storage, timeouts and retries): MISSION_REQUEST_LIST
+ * Downloads a vehicle's mission (unlike the original's, it keeps the items and has timeouts and retries): MISSION_REQUEST_LIST
  * until MISSION_COUNT, then MISSION_REQUEST_INT for each seq, again on timeout, accepting
  * MISSION_ITEM_INT (or float MISSION_ITEM, converted), and the final MISSION_ACK ACCEPTED.
  * The result's items include item 0 (ArduPilot's home).
  */
 public final class MissionDownloadProtocol {
 
-    private final MAVLinkCommunications comms;
-    private final MAVLinkNode node;
     private final MissionTransfers transfers;
 
-    MissionDownloadProtocol(MAVLinkCommunications comms, MAVLinkNode node, MissionTransfers transfers) {
-        this.comms = comms;
-        this.node = node;
+    MissionDownloadProtocol(MissionTransfers transfers) {
         this.transfers = transfers;
     }
 
     /** Downloads the vehicle's mission; from any thread. */
     public CompletableFuture<TransferResult> download() {
-        return download(comms.missionTransferConfig(), TransferProgress.NONE);
+        return download(transfers.config(), TransferProgress.NONE);
     }
 
     public CompletableFuture<TransferResult> download(MissionTransferConfig config, TransferProgress progress) {
@@ -46,11 +40,11 @@ public final class MissionDownloadProtocol {
 
     /** Downloads the vehicle's fence, rally points or mission; from any thread. */
     public CompletableFuture<TransferResult> download(MissionType type) {
-        return download(type, comms.missionTransferConfig(), TransferProgress.NONE);
+        return download(type, transfers.config(), TransferProgress.NONE);
     }
 
     public CompletableFuture<TransferResult> download(MissionType type, MissionTransferConfig config, TransferProgress progress) {
-        Download d = new Download(comms, node, config, progress, type);
+        Download d = new Download(transfers.vehicle(), transfers.timers(), config, progress, type);
         transfers.submit(d);
         return d.result;
     }
@@ -69,14 +63,14 @@ public final class MissionDownloadProtocol {
     }
 
     /** The state machine of one download; communications thread only. */
-    private static final class Download extends MissionTransfer {
+    private static final class Download extends Transfer {
         private final List<MissionItem> items = new ArrayList<>();
         private int count = -1;        // -1 until MISSION_COUNT
         private int tries;
 
-        Download(MAVLinkCommunications comms, MAVLinkNode node, MissionTransferConfig config, TransferProgress progress,
+        Download(VehicleChannel vehicle, ProtocolTimers timers, MissionTransferConfig config, TransferProgress progress,
                  MissionType type) {
-            super(comms, node, config, progress, type);
+            super(vehicle, timers, config, progress, type);
         }
 
         @Override
@@ -91,8 +85,8 @@ public final class MissionDownloadProtocol {
 
         private void sendList() {
             msg_mission_request_list m = new msg_mission_request_list();
-            m.target_system = (short) node.getMavLinkId();
-            m.target_component = (short) node.getAutopilotCompid();
+            m.target_system = (short) vehicle.system();
+            m.target_component = (short) vehicle.component();
             m.mission_type = (short) type.wire();
             tries++;
             send(m);
@@ -108,8 +102,8 @@ public final class MissionDownloadProtocol {
 
         private void request() {
             msg_mission_request_int m = new msg_mission_request_int();
-            m.target_system = (short) node.getMavLinkId();
-            m.target_component = (short) node.getAutopilotCompid();
+            m.target_system = (short) vehicle.system();
+            m.target_component = (short) vehicle.component();
             m.seq = items.size();
             m.mission_type = (short) type.wire();
             tries++;
@@ -165,8 +159,8 @@ public final class MissionDownloadProtocol {
 
         private void finishDownload() {
             msg_mission_ack ack = new msg_mission_ack();
-            ack.target_system = (short) node.getMavLinkId();
-            ack.target_component = (short) node.getAutopilotCompid();
+            ack.target_system = (short) vehicle.system();
+            ack.target_component = (short) vehicle.component();
             ack.type = MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
             ack.mission_type = (short) type.wire();
             send(ack);

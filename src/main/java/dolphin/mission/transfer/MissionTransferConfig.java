@@ -3,7 +3,8 @@ package dolphin.mission.transfer;
 import java.time.Duration;
 
 /**
- * Timeouts and retries of mission transfers (design §6, spec "default 1500 ms, max 5 retries").
+ * Timeouts and retries of mission transfers (the MAVLink mission protocol's recommended 1.5 s and 5 tries, as QGroundControl uses; docs/decisions.md,
+ * "Mission transfers").
  *
  * @param timeout how long, in clock time, to wait for the vehicle's next message before sending again
  * @param tries how many times a message (MISSION_COUNT, an item, MISSION_REQUEST_LIST, a request) is sent

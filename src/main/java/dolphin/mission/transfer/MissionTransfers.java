@@ -7,32 +7,34 @@ import com.MAVLink.common.msg_mission_item;
 import com.MAVLink.common.msg_mission_item_int;
 import com.MAVLink.common.msg_mission_request;
 import com.MAVLink.common.msg_mission_request_int;
-import dolphin.mavlink.MAVLinkCommunications;
-import dolphin.mavlink.MAVLinkNode;
-import dolphin.mavlink.MessageHandler;
 import java.util.ArrayDeque;
 import java.util.Deque;
+import java.util.function.Supplier;
 
 /**
  * A vehicle's mission transfers: its {@link MissionUploadProtocol} and {@link MissionDownloadProtocol}
  * and the queue that runs their transfers one at a time (ArduPilot answers DENIED to a download
  * during an upload, and a second upload restarts the first). Everything but {@link #submit} runs on
- * the communications thread.
+ * the protocol's thread ({@link ProtocolTimers}). The mission layer feeds it the vehicle's mission
+ * messages through {@link #handle}.
  */
 public final class MissionTransfers {
 
-    private final MAVLinkCommunications comms;
-    private final MAVLinkNode node;
+    private final VehicleChannel vehicle;
+    private final ProtocolTimers timers;
+    private final Supplier<MissionTransferConfig> config;
     private final MissionUploadProtocol upload;
     private final MissionDownloadProtocol download;
-    private final Deque<MissionTransfer> waiting = new ArrayDeque<>();
-    private MissionTransfer active;
+    private final Deque<Transfer> waiting = new ArrayDeque<>();
+    private Transfer active;
 
-    public MissionTransfers(MAVLinkCommunications comms, MAVLinkNode node) {
-        this.comms = comms;
-        this.node = node;
-        this.upload = new MissionUploadProtocol(comms, node, this);
-        this.download = new MissionDownloadProtocol(comms, node, this);
+    /** @param config the timeout and tries of transfers started from now on (a command line may change them) */
+    public MissionTransfers(VehicleChannel vehicle, ProtocolTimers timers, Supplier<MissionTransferConfig> config) {
+        this.vehicle = vehicle;
+        this.timers = timers;
+        this.config = config;
+        this.upload = new MissionUploadProtocol(this);
+        this.download = new MissionDownloadProtocol(this);
     }
 
     public MissionUploadProtocol upload() {
@@ -43,19 +45,21 @@ public final class MissionTransfers {
         return download;
     }
 
-    /** Routes the vehicles' mission messages to their nodes' transfers; called once by the communications. */
-    public static void route(MessageHandler handler) {
-        handler.on(msg_mission_request.class, (n, m) -> n.missionTransfers().handle(m, m.target_system, m.mission_type));
-        handler.on(msg_mission_request_int.class, (n, m) -> n.missionTransfers().handle(m, m.target_system, m.mission_type));
-        handler.on(msg_mission_ack.class, (n, m) -> n.missionTransfers().handle(m, m.target_system, m.mission_type));
-        handler.on(msg_mission_count.class, (n, m) -> n.missionTransfers().handle(m, m.target_system, m.mission_type));
-        handler.on(msg_mission_item_int.class, (n, m) -> n.missionTransfers().handle(m, m.target_system, m.mission_type));
-        handler.on(msg_mission_item.class, (n, m) -> n.missionTransfers().handle(m, m.target_system, m.mission_type));
+    VehicleChannel vehicle() {
+        return vehicle;
+    }
+
+    ProtocolTimers timers() {
+        return timers;
+    }
+
+    MissionTransferConfig config() {
+        return config.get();
     }
 
     /** Queues a transfer; from any thread. */
-    void submit(MissionTransfer transfer) {
-        comms.execute(() -> {
+    void submit(Transfer transfer) {
+        timers.execute(() -> {
             waiting.add(transfer);
             pump();
         });
@@ -68,21 +72,41 @@ public final class MissionTransfers {
 
     private void pump() {
         if (active == null && !waiting.isEmpty()) {
-            MissionTransfer t = waiting.poll();
+            Transfer t = waiting.poll();
             active = t;
             t.begin(() -> {
                 if (active == t) {
                     active = null;
-                    comms.execute(this::pump);
+                    timers.execute(this::pump);
                 }
             });
+        }
+    }
+
+    /**
+     * A mission protocol message from the vehicle (MISSION_REQUEST, _INT, MISSION_ACK, MISSION_COUNT,
+     * MISSION_ITEM_INT, MISSION_ITEM), on the protocol's thread; the others are ignored.
+     */
+    public void handle(MAVLinkMessage message) {
+        if (message instanceof msg_mission_request m) {
+            handle(message, m.target_system, m.mission_type);
+        } else if (message instanceof msg_mission_request_int m) {
+            handle(message, m.target_system, m.mission_type);
+        } else if (message instanceof msg_mission_ack m) {
+            handle(message, m.target_system, m.mission_type);
+        } else if (message instanceof msg_mission_count m) {
+            handle(message, m.target_system, m.mission_type);
+        } else if (message instanceof msg_mission_item_int m) {
+            handle(message, m.target_system, m.mission_type);
+        } else if (message instanceof msg_mission_item m) {
+            handle(message, m.target_system, m.mission_type);
         }
     }
 
     private void handle(MAVLinkMessage message, int targetSystem, int missionType) {
         // messages for another ground station, or of another list than the transfer's, are not ours
         if (active == null || missionType != active.type.wire()
-                || (targetSystem != 0 && targetSystem != comms.config().sysid())) {
+                || (targetSystem != 0 && targetSystem != vehicle.groundSystem())) {
             return;
         }
         active.handle(message);

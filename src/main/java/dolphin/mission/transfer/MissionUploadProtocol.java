@@ -1,6 +1,5 @@
 package dolphin.mission.transfer;
 
-import dolphin.mission.model.Mission;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
 import com.MAVLink.Messages.MAVLinkMessage;
@@ -10,14 +9,13 @@ import com.MAVLink.common.msg_mission_request;
 import com.MAVLink.common.msg_mission_request_int;
 import com.MAVLink.enums.MAV_MISSION_RESULT;
 import dolphin.mavlink.EnumNames;
-import dolphin.mavlink.MAVLinkCommunications;
-import dolphin.mavlink.MAVLinkNode;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 
 /**
- * Uploads a mission to one vehicle (MAVLink mission protocol, design §6; reference C.10 without
- * its defects E-4, E-5, E-19). MISSION_COUNT, sent again on timeout until the first request;
+ * Uploads a mission to one vehicle (MAVLink mission protocol; unlike the original it sends
+ * MISSION_COUNT once, resends what is lost and fails on error ACKs instead of hanging:
+ * docs/decisions.md, "Mission transfers"). MISSION_COUNT, sent again on timeout until the first request;
  * MISSION_REQUEST and MISSION_REQUEST_INT both answered with MISSION_ITEM_INT, again when repeated;
  * the last item sent again when the next request does not come; MISSION_ACK ACCEPTED after the
  * last item is success, any error ACK a failure naming the item, its command and the parameter.
@@ -26,24 +24,15 @@ import java.util.concurrent.CompletableFuture;
  */
 public final class MissionUploadProtocol {
 
-    private final MAVLinkCommunications comms;
-    private final MAVLinkNode node;
     private final MissionTransfers transfers;
 
-    MissionUploadProtocol(MAVLinkCommunications comms, MAVLinkNode node, MissionTransfers transfers) {
-        this.comms = comms;
-        this.node = node;
+    MissionUploadProtocol(MissionTransfers transfers) {
         this.transfers = transfers;
     }
 
     /** Uploads the items (item 0 is home; seq must equal the index); from any thread. */
     public CompletableFuture<TransferResult> upload(List<MissionItem> items) {
-        return upload(items, comms.missionTransferConfig(), TransferProgress.NONE);
-    }
-
-    /** Uploads a mission's items for this vehicle ({@link Mission#items} with the vehicle's home). */
-    public CompletableFuture<TransferResult> upload(Mission mission) {
-        return upload(mission.items(node.getHome()));
+        return upload(items, transfers.config(), TransferProgress.NONE);
     }
 
     public CompletableFuture<TransferResult> upload(List<MissionItem> items, MissionTransferConfig config, TransferProgress progress) {
@@ -52,12 +41,12 @@ public final class MissionUploadProtocol {
 
     /** Uploads a fence's or rally points' items (numbered from 0, no home), or a mission's; from any thread. */
     public CompletableFuture<TransferResult> upload(MissionType type, List<MissionItem> items) {
-        return upload(type, items, comms.missionTransferConfig(), TransferProgress.NONE);
+        return upload(type, items, transfers.config(), TransferProgress.NONE);
     }
 
     public CompletableFuture<TransferResult> upload(MissionType type, List<MissionItem> items, MissionTransferConfig config,
                                                     TransferProgress progress) {
-        Upload u = new Upload(comms, node, config, progress, type, List.copyOf(items));
+        Upload u = new Upload(transfers.vehicle(), transfers.timers(), config, progress, type, List.copyOf(items));
         transfers.submit(u);
         return u.result;
     }
@@ -98,16 +87,16 @@ public final class MissionUploadProtocol {
     }
 
     /** The state machine of one upload; communications thread only. */
-    private static final class Upload extends MissionTransfer {
+    private static final class Upload extends Transfer {
         private final List<MissionItem> items;
         private boolean requested;      // a first request came: MISSION_COUNT is no longer sent
         private int tries;              // sends of the current message without progress
         private int lastSent = -1;      // the item last sent, named in errors
         private int highest = -1;       // the highest seq requested
 
-        Upload(MAVLinkCommunications comms, MAVLinkNode node, MissionTransferConfig config, TransferProgress progress,
+        Upload(VehicleChannel vehicle, ProtocolTimers timers, MissionTransferConfig config, TransferProgress progress,
                MissionType type, List<MissionItem> items) {
-            super(comms, node, config, progress, type);
+            super(vehicle, timers, config, progress, type);
             this.items = items;
         }
 
@@ -129,8 +118,8 @@ public final class MissionUploadProtocol {
 
         private void sendCount() {
             msg_mission_count c = new msg_mission_count();
-            c.target_system = (short) node.getMavLinkId();
-            c.target_component = (short) node.getAutopilotCompid();
+            c.target_system = (short) vehicle.system();
+            c.target_component = (short) vehicle.component();
             c.count = items.size();
             c.mission_type = (short) type.wire();
             tries++;
@@ -150,7 +139,7 @@ public final class MissionUploadProtocol {
         private void sendItem(int seq) {
             lastSent = seq;
             tries++;
-            send(items.get(seq).toMessage(node.getMavLinkId(), node.getAutopilotCompid(), type));
+            send(items.get(seq).toMessage(vehicle.system(), vehicle.component(), type));
             arm(this::itemTimedOut);
         }
 

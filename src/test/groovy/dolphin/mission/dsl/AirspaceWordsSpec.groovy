@@ -1,5 +1,6 @@
 package dolphin.mission.dsl
 
+import dolphin.testing.MissionLayer
 import com.MAVLink.enums.MAV_CMD
 import com.MAVLink.enums.MAV_FRAME
 import dolphin.core.Position
@@ -49,8 +50,8 @@ class AirspaceWordsSpec extends Specification {
             }
             plain = mission { home homePos; takeOff location(40.444233, -7.375234, 850) }
         ''')
-        Mission m = h.engine.variable('m') as Mission
-        Mission plain = h.engine.variable('plain') as Mission
+        Mission m = MissionLayer.missionOf(h.engine.variable('m'))
+        Mission plain = MissionLayer.missionOf(h.engine.variable('plain'))
 
         then:
         r.outcome == COMPLETED
@@ -97,14 +98,14 @@ class AirspaceWordsSpec extends Specification {
     def "rally points below home are the script's choice with allowBelowHome"() {
         expect:
         run('m = mission { home 1, 2, 100; allowBelowHome true; rally location(1, 2, 90); goPos 1, 2, 130 }').outcome == COMPLETED
-        (h.engine.variable('m') as Mission).rally().items()[0].z() == 90f
+        (MissionLayer.missionOf(h.engine.variable('m'))).rally().items()[0].z() == 90f
     }
 
     def "missionFromFile gives a mission task with the file's fence and rally points, its home left to the vehicle"() {
         when:
         def r = run("m = missionFromFile('dsl-examples/square.plan', enableFence: true)\nplain = missionFromFile('${RAW}')")
-        Mission m = h.engine.variable('m') as Mission
-        Mission plain = h.engine.variable('plain') as Mission
+        Mission m = MissionLayer.missionOf(h.engine.variable('m'))
+        Mission plain = MissionLayer.missionOf(h.engine.variable('plain'))
 
         then:
         r.outcome == COMPLETED
@@ -120,7 +121,7 @@ class AirspaceWordsSpec extends Specification {
         plain.fence().isEmpty() && !plain.fenceEnabled()
         !plain.belowHomeAllowed()
         run("low = missionFromFile('${RAW}', allowBelowHome: true)").outcome == COMPLETED
-        (h.engine.variable('low') as Mission).belowHomeAllowed()
+        (MissionLayer.missionOf(h.engine.variable('low'))).belowHomeAllowed()
         h.messages.any { it.contains('read 5 mission items, a fence of 1 region') }
     }
 
@@ -141,9 +142,10 @@ class AirspaceWordsSpec extends Specification {
         "'dsl-examples/square.plan', fence: true"         | "missionFromFile: unknown option 'fence' (expected enableFence, allowBelowHome, name)"
     }
 
-    static final String SHARED = '../shared/mission-files/'
-    static final String RAW = SHARED + 'ArduPilot+ardupilot/Tools/autotest/Generic_Missions/CMAC-copter-circuit.txt'
-    static final String FENCE_ONLY = SHARED + 'ArduPilot+ardupilot/Tools/autotest/ArduCopter_Tests/HorizontalFence/fence-in-middle-of-nowhere.txt'
-    static final String WRONG = SHARED + 'mavlink+MAVSDK/cpp/src/mavsdk/plugins/mission_raw/test_plans/qgroundcontrol_sample_wrong_mission_version.plan'
+    /** Small files of each kind, written for these specs. */
+    static final String FILES = 'src/test/resources/missions/'
+    static final String RAW = FILES + 'circuit.waypoints'
+    static final String FENCE_ONLY = FILES + 'fence-only.txt'
+    static final String WRONG = FILES + 'wrong-version.plan'
 
 }

@@ -1,5 +1,7 @@
 package dolphin.mission.dsl
 
+import dolphin.mission.flight.MissionTask
+import dolphin.testing.MissionLayer
 import dolphin.core.Allocation
 import dolphin.core.ConcurrentTask
 import dolphin.core.EnvironmentException
@@ -69,8 +71,8 @@ class MissionScriptSpec extends Specification {
                  returnHomeAndLand()
             }
         ''')
-        Mission simple = variable('simpleMission')
-        Mission back = variable('returnHome')
+        Mission simple = MissionLayer.missionOf(variable('simpleMission'))
+        Mission back = MissionLayer.missionOf(variable('returnHome'))
         List<MissionItem> items = simple.items(null)
 
         then:
@@ -122,13 +124,13 @@ class MissionScriptSpec extends Specification {
                  surveyArea 3000, 10000, 500, "SOUTH_EAST"
             }
         ''')
-        List<MissionItem> north = variable('surveyNorth').items(null)
-        List<MissionItem> south = variable('surveySouth').items(null)
+        List<MissionItem> north = MissionLayer.missionOf(variable('surveyNorth')).items(null)
+        List<MissionItem> south = MissionLayer.missionOf(variable('surveySouth')).items(null)
 
         then: 'N = 10000 / 500 + 1 = 21 passes: 42 survey items after home and take-off, all counted'
         r.outcome == COMPLETED
         north.size() == 44
-        variable('surveyNorth').missionPoints() == 44
+        MissionLayer.missionOf(variable('surveyNorth')).missionPoints() == 44
         north*.seq() == (0..43).toList()
 
         and: 'the first leg is 3025 m north (south) of the take-off point over home, the last lane 20 x 500 m east, and the survey ends over home at the take-off height'
@@ -168,7 +170,7 @@ class MissionScriptSpec extends Specification {
 
         where:
         word           || delegate        | returns
-        'mission'      || MissionBuilder  | Mission
+        'mission'      || MissionBuilder  | MissionTask
         'pos'          || PositionBuilder | Position
         'moveDistance' || NedBuilder      | NedOffset
     }
@@ -188,7 +190,7 @@ class MissionScriptSpec extends Specification {
                 assigned = 5                 // assignments go to the script
             }
         ''')
-        Mission m = variable('m')
+        Mission m = MissionLayer.missionOf(variable('m'))
 
         then:
         r.outcome == COMPLETED
@@ -225,7 +227,7 @@ class MissionScriptSpec extends Specification {
         ((Position) variable('c')).hae() == 120d
 
         and: 'inside a mission, move(position) { } is still the position word: it adds no item'
-        Mission m = variable('inMission')
+        Mission m = MissionLayer.missionOf(variable('inMission'))
         m.items(null).size() == 2
         near(a.displacementTo(m.items(null)[1].position()), 10, 0)
     }
@@ -243,7 +245,6 @@ class MissionScriptSpec extends Specification {
             both = m1 | m2
             twice = m1 | m1
         ''')
-        Mission m1 = variable('m1')
         def both = variable('both')
         def twice = variable('twice')
         def seq = variable('seq')
@@ -266,8 +267,8 @@ class MissionScriptSpec extends Specification {
         b.allNodes()*.id == ['1', '2']
 
         and: 'each occurrence gets its own executor, which flies the mission'
-        m1.executor instanceof dolphin.mission.flight.MissionExecutor
-        !m1.executor.is(m1.executor)
+        variable('m1').executor instanceof dolphin.mission.flight.MissionExecutor
+        !variable('m1').executor.is(variable('m1').executor)
     }
 
     def "every command of C.6 rows 1 to 30, allowBelowHome, fence and rally, is a builder method, has its forms for errors and is documented"() {

@@ -1,5 +1,6 @@
 package dolphin.mission.file
 
+import dolphin.mission.model.ItemText
 import dolphin.mission.model.MissionItem
 import groovy.json.JsonSlurper
 
@@ -75,7 +76,7 @@ final class MavwpHarness {
             check('seq', t.seq == i)
             check('current', t.current == (i == 0 ? 1 : 0))
             check('command', t.command == o.command())
-            check('frame', t.frame == FileValues.fileFrame(o.frame()))
+            check('frame', t.frame == ItemText.fileFrame(o.frame()))
             check('param1', sameFloat(t.param1, o.param1()))
             check('param2', sameFloat(t.param2, o.param2()))
             check('param3', sameFloat(t.param3, o.param3()))

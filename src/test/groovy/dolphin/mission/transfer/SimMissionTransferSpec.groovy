@@ -1,5 +1,7 @@
 package dolphin.mission.transfer
 
+import dolphin.mission.flight.MissionService
+import dolphin.testing.MissionLayer
 import dolphin.mission.model.Fence
 import dolphin.mission.model.FenceRegion
 import dolphin.mission.model.MissionItem
@@ -48,17 +50,17 @@ class SimMissionTransferSpec extends Specification {
         def fleet = h.fleet(1, VehicleKind.COPTER, 1, SimOptions.DEFAULT, loss == 0 ? FaultModel.NONE : FaultModel.loss(loss, 7))
         h.eventually(20) { assert h.node('1')?.home != null }
         def node = h.node('1')
-        h.comms.missionTransferConfig = new MissionTransferConfig(Duration.ofMillis(1500), tries)
+        MissionService.of(h.comms).transferConfig = new MissionTransferConfig(Duration.ofMillis(1500), tries)
 
         expect:
         (1..rounds).each { round ->
             def items = missionAround(node.home, 4 + round, 20 + round)
-            def up = node.uploadProtocol.upload(items).get(60, TimeUnit.SECONDS)
+            def up = MissionLayer.uploads(node).upload(items).get(60, TimeUnit.SECONDS)
             if (!up.success()) {
                 // only the lost final ACK may leave us unsure; the download below settles it
                 assert up.error().contains('its ACK was lost'): up.error()
             }
-            def down = node.downloadProtocol.download().get(60, TimeUnit.SECONDS)
+            def down = MissionLayer.downloads(node).download().get(60, TimeUnit.SECONDS)
             assert down.success(): down.error()
             String diff = MissionVerification.firstDifference(items, down.items()).orElse(null)
             assert diff == null
@@ -87,11 +89,11 @@ class SimMissionTransferSpec extends Specification {
         RallyPoints rally = RallyPoints.at([home.displace(50, 50, -40.3), home.displace(-50, 50, -45)])
 
         when:
-        def up = [node.uploadProtocol.upload(mission), node.uploadProtocol.upload(MissionType.FENCE, fence.items()),
-                  node.uploadProtocol.upload(MissionType.RALLY, rally.items())]*.get(30, TimeUnit.SECONDS)
-        def downFence = node.downloadProtocol.download(MissionType.FENCE).get(30, TimeUnit.SECONDS)
-        def downRally = node.downloadProtocol.download(MissionType.RALLY).get(30, TimeUnit.SECONDS)
-        def downMission = node.downloadProtocol.download().get(30, TimeUnit.SECONDS)
+        def up = [MissionLayer.uploads(node).upload(mission), MissionLayer.uploads(node).upload(MissionType.FENCE, fence.items()),
+                  MissionLayer.uploads(node).upload(MissionType.RALLY, rally.items())]*.get(30, TimeUnit.SECONDS)
+        def downFence = MissionLayer.downloads(node).download(MissionType.FENCE).get(30, TimeUnit.SECONDS)
+        def downRally = MissionLayer.downloads(node).download(MissionType.RALLY).get(30, TimeUnit.SECONDS)
+        def downMission = MissionLayer.downloads(node).download().get(30, TimeUnit.SECONDS)
 
         then:
         up.every { it.success() }
@@ -105,7 +107,7 @@ class SimMissionTransferSpec extends Specification {
         fleet.vehicle(1).mission().size() == mission.size()
 
         when: 'a fence whose polygon stops short is refused as a whole, and the stored one stays'
-        def broken = node.uploadProtocol.upload(MissionType.FENCE, fence.items().take(2)).get(30, TimeUnit.SECONDS)
+        def broken = MissionLayer.uploads(node).upload(MissionType.FENCE, fence.items().take(2)).get(30, TimeUnit.SECONDS)
 
         then:
         !broken.success()
@@ -118,12 +120,12 @@ class SimMissionTransferSpec extends Specification {
         def fleet = h.fleet(1, VehicleKind.COPTER, 1, SimOptions.DEFAULT, FaultModel.loss(0.3, 7))
         h.eventually(20) { assert h.node('1')?.home != null }
         def node = h.node('1')
-        h.comms.missionTransferConfig = new MissionTransferConfig(Duration.ofMillis(1500), 30)
+        MissionService.of(h.comms).transferConfig = new MissionTransferConfig(Duration.ofMillis(1500), 30)
 
         expect:
         (1..4).each { round ->
-            node.uploadProtocol.upload(missionAround(node.home, 4 + round, 20 + round)).get(90, TimeUnit.SECONDS)
-            def down = node.downloadProtocol.download().get(90, TimeUnit.SECONDS)
+            MissionLayer.uploads(node).upload(missionAround(node.home, 4 + round, 20 + round)).get(90, TimeUnit.SECONDS)
+            def down = MissionLayer.downloads(node).download().get(90, TimeUnit.SECONDS)
             assert down.success(): down.error()
             assert MissionVerification.firstDifference(fleet.vehicle(1).mission(), down.items()).orElse(null) == null
         }
@@ -135,7 +137,7 @@ class SimMissionTransferSpec extends Specification {
         h.eventually(20) { assert h.node('1')?.home != null }
         def node = h.node('1')
         def items = missionAround(node.home, 3, 25)
-        assert node.uploadProtocol.upload(items).get(30, TimeUnit.SECONDS).success()
+        assert MissionLayer.uploads(node).upload(items).get(30, TimeUnit.SECONDS).success()
         def messages = new java.util.concurrent.CopyOnWriteArrayList()
         def engine = new Engine(new MAVLinkPlatform(h.comms), h.clock)
         engine.addListener(new EngineListener() {
@@ -146,7 +148,7 @@ class SimMissionTransferSpec extends Specification {
         def result = engine.run('''
             v = pick { id '1'; timeout 20 }
             m = downloadMission(v)
-            message "points ${m.missionPoints()} first ${m.getCommandList()[0].item().commandName()}"
+            message "points ${m.mission().missionPoints()} first ${m.mission().getCommandList()[0].item().commandName()}"
         ''', 'download.dolphin').await(Duration.ofSeconds(30))
 
         then:

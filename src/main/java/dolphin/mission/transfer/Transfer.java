@@ -3,18 +3,16 @@ package dolphin.mission.transfer;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
 import com.MAVLink.Messages.MAVLinkMessage;
-import dolphin.mavlink.MAVLinkCommunications;
-import dolphin.mavlink.MAVLinkNode;
 import java.util.concurrent.CompletableFuture;
 
 /**
  * One upload or download to one vehicle: a state machine that lives on the communications thread
  * (started, fed messages and timed out there only), with one clock-time timer at a time.
  */
-abstract class MissionTransfer {
+abstract class Transfer {
 
-    final MAVLinkCommunications comms;
-    final MAVLinkNode node;
+    final VehicleChannel vehicle;
+    final ProtocolTimers timers;
     final MissionTransferConfig config;
     final TransferProgress progress;
     final MissionType type;
@@ -24,11 +22,11 @@ abstract class MissionTransfer {
     private int timerGeneration;
     private Runnable onDone = () -> { };
 
-    MissionTransfer(MAVLinkCommunications comms, MAVLinkNode node, MissionTransferConfig config, TransferProgress progress,
-                    MissionType type) {
-        this.comms = comms;
+    Transfer(VehicleChannel vehicle, ProtocolTimers timers, MissionTransferConfig config, TransferProgress progress,
+             MissionType type) {
+        this.vehicle = vehicle;
+        this.timers = timers;
         this.type = type;
-        this.node = node;
         this.config = config;
         this.progress = progress == null ? TransferProgress.NONE : progress;
     }
@@ -52,13 +50,13 @@ abstract class MissionTransfer {
     }
 
     final void send(MAVLinkMessage message) {
-        comms.send(node, message);
+        vehicle.send(message);
     }
 
     /** Runs {@code action} after the timeout unless the transfer ends or another timer is armed first. */
     final void arm(Runnable action) {
         int generation = ++timerGeneration;
-        comms.schedule(config.timeout(), () -> {
+        timers.schedule(config.timeout(), () -> {
             if (!done() && generation == timerGeneration) {
                 action.run();
             }
@@ -70,11 +68,11 @@ abstract class MissionTransfer {
     }
 
     final void fail(String reason) {
-        String lost = node.isConnected() ? "" : " (vehicle " + node.getId() + " is lost: no heartbeat within "
-                + node.getConnectionTimeout() + " s)";
+        String silence = vehicle.silence();
+        String lost = silence.isEmpty() ? "" : " (vehicle " + vehicle.vehicleId() + " is lost: " + silence + ")";
         String of = type == MissionType.MISSION ? "" : " of the " + type.label();
         String[] w = what().split(" ", 2);
-        finish(TransferResult.failed(w[0] + of + " " + w[1] + " vehicle " + node.getId() + " failed: " + reason + lost,
+        finish(TransferResult.failed(w[0] + of + " " + w[1] + " vehicle " + vehicle.vehicleId() + " failed: " + reason + lost,
                 resends, ignoredAcks));
     }
 
@@ -85,10 +83,6 @@ abstract class MissionTransfer {
         timerGeneration++;
         result.complete(r);
         onDone.run();
-    }
-
-    final int gcsSysid() {
-        return comms.config().sysid();
     }
 
     final int tries() {

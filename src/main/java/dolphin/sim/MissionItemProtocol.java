@@ -24,7 +24,7 @@ import dolphin.mission.model.MissionType;
  * ArduPilot has one MissionItemProtocol a mission_type; a message of another mission_type is
  * UNSUPPORTED. Runs on the fleet's thread, under the vehicle's lock.
  */
-final class MissionTransfer {
+final class MissionItemProtocol {
 
     static final long RESEND_NANOS = 1_000_000_000L;
     static final long UPLOAD_TIMEOUT_NANOS = 8_000_000_000L;
@@ -54,7 +54,7 @@ final class MissionTransfer {
     private long lastRequest;
     private boolean floatWarned;
 
-    MissionTransfer(ItemStore store, Host host) {
+    MissionItemProtocol(ItemStore store, Host host) {
         this.store = store;
         this.type = store.type();
         this.host = host;

@@ -1,0 +1,102 @@
+package dolphin.mission.flight;
+
+import com.MAVLink.common.msg_mission_ack;
+import com.MAVLink.common.msg_mission_count;
+import com.MAVLink.common.msg_mission_item;
+import com.MAVLink.common.msg_mission_item_int;
+import com.MAVLink.common.msg_mission_item_reached;
+import com.MAVLink.common.msg_mission_request;
+import com.MAVLink.common.msg_mission_request_int;
+import dolphin.core.Node;
+import dolphin.mavlink.MAVLinkCommunications;
+import dolphin.mavlink.MAVLinkNode;
+import dolphin.mavlink.MessageHandler;
+import dolphin.mission.transfer.MissionTransferConfig;
+import dolphin.mission.transfer.ProtocolTimers;
+import java.time.Duration;
+import java.util.Map;
+import java.util.Objects;
+import java.util.concurrent.ConcurrentHashMap;
+
+/**
+ * The mission layer on one {@link MAVLinkCommunications}: it registers for the mission protocol's
+ * messages and MISSION_ITEM_REACHED, and keeps each vehicle's {@link VehicleMissions} (transfers and
+ * the executor flying on it) and how transfers and flights are configured. The link layer knows
+ * nothing of it: it is attached as an extension of the communications on first use.
+ */
+public final class MissionService {
+
+    private final MAVLinkCommunications comms;
+    private final Map<MAVLinkNode, VehicleMissions> vehicles = new ConcurrentHashMap<>();
+    private final ProtocolTimers timers;
+    private volatile MissionTransferConfig transferConfig = MissionTransferConfig.DEFAULT;
+    private volatile MissionExecutorConfig executorConfig = MissionExecutorConfig.DEFAULT;
+
+    private MissionService(MAVLinkCommunications comms) {
+        this.comms = comms;
+        this.timers = new ProtocolTimers() {
+            @Override
+            public void execute(Runnable action) {
+                comms.execute(action);
+            }
+
+            @Override
+            public void schedule(Duration delay, Runnable action) {
+                comms.schedule(delay, action);
+            }
+        };
+        route(comms.messageHandler());
+    }
+
+    /** The mission layer of these communications, attached on first use. */
+    public static MissionService of(MAVLinkCommunications comms) {
+        return comms.extension(MissionService.class, MissionService::new);
+    }
+
+    /** The missions of a MAVLink vehicle; null for a vehicle of another platform. */
+    public static MissionVehicle vehicleOf(Node node) {
+        return node instanceof MAVLinkNode n ? of(n.communications()).vehicle(n) : null;
+    }
+
+    public VehicleMissions vehicle(MAVLinkNode node) {
+        return vehicles.computeIfAbsent(node, n -> new VehicleMissions(n, this));
+    }
+
+    /** Timeout and tries of mission uploads and downloads started from now on. */
+    public MissionTransferConfig transferConfig() {
+        return transferConfig;
+    }
+
+    public void setTransferConfig(MissionTransferConfig config) {
+        transferConfig = Objects.requireNonNull(config, "config");
+    }
+
+    /** How missions started from now on are flown. */
+    public MissionExecutorConfig executorConfig() {
+        return executorConfig;
+    }
+
+    public void setExecutorConfig(MissionExecutorConfig config) {
+        executorConfig = Objects.requireNonNull(config, "config");
+    }
+
+    ProtocolTimers timers() {
+        return timers;
+    }
+
+    private void route(MessageHandler handler) {
+        handler.on(msg_mission_request.class, (n, m) -> vehicle(n).transfers().handle(m));
+        handler.on(msg_mission_request_int.class, (n, m) -> vehicle(n).transfers().handle(m));
+        handler.on(msg_mission_ack.class, (n, m) -> vehicle(n).transfers().handle(m));
+        handler.on(msg_mission_count.class, (n, m) -> vehicle(n).transfers().handle(m));
+        handler.on(msg_mission_item_int.class, (n, m) -> vehicle(n).transfers().handle(m));
+        handler.on(msg_mission_item.class, (n, m) -> vehicle(n).transfers().handle(m));
+        handler.on(msg_mission_item_reached.class, (n, m) -> {
+            MissionExecutor executor = vehicle(n).executor();
+            if (executor != null) {
+                executor.consume(m);
+                comms.wakeScript();
+            }
+        });
+    }
+}

@@ -1,0 +1,136 @@
+package dolphin.mission.flight;
+
+import com.MAVLink.Messages.MAVLinkMessage;
+import dolphin.mavlink.CommandResult;
+import dolphin.mavlink.MAVLinkNode;
+import dolphin.mavlink.VehicleState;
+import dolphin.mission.model.MissionItem;
+import dolphin.mission.model.MissionType;
+import dolphin.mission.transfer.MissionTransfers;
+import dolphin.mission.transfer.TransferResult;
+import dolphin.mission.transfer.VehicleChannel;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.atomic.AtomicReference;
+
+/** One MAVLink vehicle's missions: its transfers and the executor flying on it, kept by {@link MissionService}. */
+public final class VehicleMissions implements MissionVehicle {
+
+    private final MAVLinkNode node;
+    private final MissionService service;
+    private final MissionTransfers transfers;
+    private final AtomicReference<MissionExecutor> executor = new AtomicReference<>();
+
+    VehicleMissions(MAVLinkNode node, MissionService service) {
+        this.node = node;
+        this.service = service;
+        this.transfers = new MissionTransfers(new NodeChannel(node), service.timers(), service::transferConfig);
+    }
+
+    public MAVLinkNode node() {
+        return node;
+    }
+
+    /** The vehicle's uploads and downloads, one at a time. */
+    public MissionTransfers transfers() {
+        return transfers;
+    }
+
+    /** The executor flying a mission on the vehicle, or null. */
+    public MissionExecutor executor() {
+        return executor.get();
+    }
+
+    @Override
+    public void flying(MissionExecutor e) {
+        executor.set(e);
+    }
+
+    @Override
+    public void landed(MissionExecutor e) {
+        executor.compareAndSet(e, null);
+    }
+
+    @Override
+    public String id() {
+        return node.getId();
+    }
+
+    @Override
+    public int system() {
+        return node.getMavLinkId();
+    }
+
+    @Override
+    public int component() {
+        return node.getAutopilotCompid();
+    }
+
+    @Override
+    public VehicleState state() {
+        return node.state();
+    }
+
+    @Override
+    public CompletableFuture<CommandResult> command(int command, float... params) {
+        return node.communications().command(node, command, params);
+    }
+
+    @Override
+    public void send(MAVLinkMessage message) {
+        node.send(message);
+    }
+
+    @Override
+    public CompletableFuture<TransferResult> upload(MissionType type, List<MissionItem> items) {
+        return transfers.upload().upload(type, items);
+    }
+
+    @Override
+    public CompletableFuture<TransferResult> download(MissionType type) {
+        return transfers.download().download(type);
+    }
+
+    @Override
+    public MissionExecutorConfig executorConfig() {
+        return service.executorConfig();
+    }
+
+    @Override
+    public void wake() {
+        node.communications().wakeScript();
+    }
+
+    /** The node as the transfer protocols see it. */
+    private record NodeChannel(MAVLinkNode node) implements VehicleChannel {
+        @Override
+        public void send(MAVLinkMessage message) {
+            node.send(message);
+        }
+
+        @Override
+        public int system() {
+            return node.getMavLinkId();
+        }
+
+        @Override
+        public int component() {
+            return node.getAutopilotCompid();
+        }
+
+        @Override
+        public int groundSystem() {
+            return node.communications().config().sysid();
+        }
+
+        @Override
+        public String vehicleId() {
+            return node.getId();
+        }
+
+        @Override
+        public String silence() {
+            return node.isConnected() ? "" : "no heartbeat within " + node.getConnectionTimeout() + " s";
+        }
+    }
+}

@@ -1,0 +1,29 @@
+package dolphin.mission.transfer;
+
+import com.MAVLink.Messages.MAVLinkMessage;
+
+/**
+ * What a transfer needs of the link to its vehicle: where its messages go, the ids they carry, and
+ * whether the vehicle is still heard (to say so when a transfer fails). Production code passes the
+ * vehicle's MAVLink node; protocol specs pass a recording fake.
+ */
+public interface VehicleChannel {
+
+    /** Sends a message to the vehicle. */
+    void send(MAVLinkMessage message);
+
+    /** The vehicle's system id, the target of every message. */
+    int system();
+
+    /** The vehicle's autopilot component id. */
+    int component();
+
+    /** Our own system id: messages targeted at another ground station are not ours. */
+    int groundSystem();
+
+    /** The vehicle's name in messages ("1", "2@2"). */
+    String vehicleId();
+
+    /** Why the vehicle is not heard ("no heartbeat within 5 s"), or empty while it is. */
+    String silence();
+}

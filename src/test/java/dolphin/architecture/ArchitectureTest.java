@@ -1,0 +1,61 @@
+package dolphin.architecture;
+
+import static com.tngtech.archunit.library.Architectures.layeredArchitecture;
+import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.slices;
+
+import com.tngtech.archunit.core.importer.ImportOption;
+import com.tngtech.archunit.junit.AnalyzeClasses;
+import com.tngtech.archunit.junit.ArchTest;
+import com.tngtech.archunit.lang.ArchRule;
+
+/**
+ * The layers of docs/architecture.md, lowest first: each may use only those below it, never one
+ * above or beside it, and no two packages use each other, even through a third.
+ */
+@AnalyzeClasses(packages = "dolphin", importOptions = ImportOption.DoNotIncludeTests.class)
+class ArchitectureTest {
+
+    private static final String CORE = "core runtime";
+    private static final String DSL = "script engine";
+    private static final String LINK = "MAVLink link layer";
+    private static final String MODEL = "mission model";
+    private static final String FILES = "mission files";
+    private static final String TRANSFER = "mission transfer";
+    private static final String FLIGHT = "mission flight";
+    private static final String LANGUAGE = "mission language";
+    private static final String PLATFORM = "MAVLink platform";
+    private static final String SIMULATOR = "simulator";
+    private static final String WEB = "web view";
+    private static final String CLI = "command line";
+
+    @ArchTest
+    static final ArchRule layersPointDownwards = layeredArchitecture().consideringOnlyDependenciesInLayers()
+            .layer(CORE).definedBy("dolphin.core..")
+            .layer(DSL).definedBy("dolphin.dsl..")
+            .layer(LINK).definedBy("dolphin.mavlink..")
+            .layer(MODEL).definedBy("dolphin.mission.model..")
+            .layer(FILES).definedBy("dolphin.mission.file..")
+            .layer(TRANSFER).definedBy("dolphin.mission.transfer..")
+            .layer(FLIGHT).definedBy("dolphin.mission.flight..")
+            .layer(LANGUAGE).definedBy("dolphin.mission.dsl..")
+            .layer(PLATFORM).definedBy("dolphin.platform..")
+            .layer(SIMULATOR).definedBy("dolphin.sim..")
+            .layer(WEB).definedBy("dolphin.web..")
+            .layer(CLI).definedBy("dolphin.cli..")
+            .whereLayer(CORE).mayNotAccessAnyLayer()
+            .whereLayer(DSL).mayOnlyAccessLayers(CORE)
+            .whereLayer(LINK).mayOnlyAccessLayers(CORE, DSL)
+            .whereLayer(MODEL).mayOnlyAccessLayers(CORE, DSL, LINK)
+            .whereLayer(FILES).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL)
+            .whereLayer(TRANSFER).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL)
+            .whereLayer(FLIGHT).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, TRANSFER)
+            .whereLayer(LANGUAGE).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT)
+            .whereLayer(PLATFORM).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE)
+            .whereLayer(SIMULATOR).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, PLATFORM)
+            .whereLayer(WEB).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, PLATFORM)
+            .whereLayer(CLI).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, PLATFORM,
+                    SIMULATOR, WEB);
+
+    @ArchTest
+    static final ArchRule noPackageCycles = slices().matching("dolphin.(**)").should().beFreeOfCycles();
+}
