@@ -1,6 +1,7 @@
 package dolphin.dsl;
 
 import groovy.lang.Closure;
+import groovy.lang.DelegatesTo;
 import java.util.Collection;
 import java.util.Comparator;
 import java.util.List;
@@ -17,7 +18,7 @@ public final class Blocks {
      * that the block's words reach the builder and everything else the script; the caller's closure is
      * left as it was. Returns what the block returns.
      */
-    public static Object run(Closure<?> block, Object delegate, Object... arguments) {
+    public static Object run(@DelegatesTo(strategy = Closure.DELEGATE_FIRST) Closure<?> block, Object delegate, Object... arguments) {
         Closure<?> c = (Closure<?>) block.clone();
         c.setDelegate(delegate);
         c.setResolveStrategy(Closure.DELEGATE_FIRST);

@@ -211,7 +211,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 lists.add(Map.entry(MissionType.RALLY, mission.rally().items()));
             }
             lists.add(Map.entry(MissionType.MISSION, items));
-            enter(new Uploading(lists, new Plan(items, new MissionEnd(rules, items, vehicle.id(), config.modeGrace(),
+            enter(new Uploading(lists, new Plan(items, new MissionEnd(rules, items, vehicle.vehicleId(), config.modeGrace(),
                     config.landingStall()), keyed)));
             return CompletionState.IN_PROGRESS;
         }
@@ -235,7 +235,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         private void waitFor(String what) {
             if (!what.equals(waitingFor)) {
                 waitingFor = what;
-                context().listener().message("waiting for vehicle " + vehicle.id() + ": " + what);
+                context().listener().message("waiting for vehicle " + vehicle.vehicleId() + ": " + what);
             }
         }
 
@@ -243,7 +243,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         @Override
         String overdue() {
             String why = Readiness.prearmText(vehicle.state()).orElse(waitingFor != null ? waitingFor : "not ready");
-            return "vehicle " + vehicle.id() + " was not ready within " + config.prepare().toSeconds() + " s: " + why;
+            return "vehicle " + vehicle.vehicleId() + " was not ready within " + config.prepare().toSeconds() + " s: " + why;
         }
     }
 
@@ -373,7 +373,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 return CompletionState.IN_PROGRESS;
             }
             if (now + config.retry().toNanos() > deadline) {
-                return fail("vehicle " + vehicle.id() + " refused to arm for " + config.arm().toSeconds() + " s: "
+                return fail("vehicle " + vehicle.vehicleId() + " refused to arm for " + config.arm().toSeconds() + " s: "
                         + lastArmText(r));
             }
             nextAttempt = now + config.retry().toNanos();
@@ -471,7 +471,10 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 reported = r;
                 progress("item " + Math.min(r, last) + " of " + last + " reached");
             }
-            sendKeyedCommands(r, now);
+            if (sendKeyedCommands(r, now)) {
+                // The flight goes back: what the vehicle said before the jump no longer tells its end.
+                return CompletionState.IN_PROGRESS;
+            }
             MissionEnd.Verdict verdict = plan.end().judge(s, r, isMode(s, "AUTO"), now);
             if (verdict.done()) {
                 MissionExecutor.this.state = State.DONE;
@@ -498,10 +501,13 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             return false;
         }
 
-        /** Sends the non-mission commands keyed by the items reached; a jump goes back and runs them again. */
-        private void sendKeyedCommands(int r, long now) {
+        /**
+         * Sends the non-mission commands keyed by the items reached; a jump goes back and runs them again.
+         * True when a jump was sent.
+         */
+        private boolean sendKeyedCommands(int r, long now) {
             if (r <= sentUpTo) {
-                return;
+                return false;
             }
             for (Map.Entry<Integer, List<DroneCommand>> e : plan.keyed().subMap(sentUpTo, false, r, true).entrySet()) {
                 for (DroneCommand c : e.getValue()) {
@@ -515,7 +521,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                             resendJump = now + JUMP_RESEND.toNanos();
                             sentUpTo = jump.item() - 1;
                             reported = sentUpTo;
-                            return;
+                            return true;
                         }
                     } else {
                         send(c);
@@ -523,6 +529,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 }
                 sentUpTo = e.getKey();
             }
+            return false;
         }
     }
 
@@ -561,7 +568,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     }
 
     private CommandSteps commandSteps(java.util.function.Consumer<String> waiting) {
-        return new CommandSteps(vehicle.id(), vehicle::state, config.retry(), waiting, this::watch);
+        return new CommandSteps(vehicle.vehicleId(), vehicle::state, config.retry(), waiting, this::watch);
     }
 
     private void send(DroneCommand command) {
@@ -589,10 +596,10 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     private CompletionState fail(String why) {
         failure = why;
         state = State.ERROR;
-        return CompletionState.error("mission " + mission.getId() + (vehicle != null ? " on vehicle " + vehicle.id() : "") + ": " + why);
+        return CompletionState.error("mission " + mission.getId() + (vehicle != null ? " on vehicle " + vehicle.vehicleId() : "") + ": " + why);
     }
 
     private void progress(String what) {
-        context().listener().message("mission " + mission.getId() + " on vehicle " + vehicle.id() + ": " + what);
+        context().listener().message("mission " + mission.getId() + " on vehicle " + vehicle.vehicleId() + ": " + what);
     }
 }

@@ -1,37 +1,26 @@
 package dolphin.mission.flight;
 
-import com.MAVLink.Messages.MAVLinkMessage;
 import dolphin.mavlink.CommandResult;
 import dolphin.mavlink.VehicleState;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
 import dolphin.mission.transfer.TransferResult;
+import dolphin.mission.transfer.VehicleChannel;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 
 /**
- * What a {@link MissionExecutor} needs of the vehicle it flies: its state, commands, messages and
- * transfers, and a way to wake the script when one of them completes. {@link VehicleMissions} is the
- * real one (a MAVLink node); executor specs pass a scripted fake on a manual clock.
+ * What a {@link MissionExecutor} needs of the vehicle it flies: beside the channel its messages go
+ * on, its state, commands and transfers, and a way to wake the script when one of them completes.
+ * {@link VehicleMissions} is the real one (a MAVLink node); executor specs pass a fake on a manual clock.
  */
-public interface MissionVehicle {
-
-    /** The vehicle's name in messages. */
-    String id();
-
-    /** Its system and autopilot component ids, the target of the messages the executor builds. */
-    int system();
-
-    int component();
+public interface MissionVehicle extends VehicleChannel {
 
     /** The latest snapshot of its telemetry. */
     VehicleState state();
 
     /** Sends a COMMAND_LONG; completes with its COMMAND_ACK, or NO_ACK after the last attempt. */
     CompletableFuture<CommandResult> command(int command, float... params);
-
-    /** Sends a message as it is. */
-    void send(MAVLinkMessage message);
 
     CompletableFuture<TransferResult> upload(MissionType type, List<MissionItem> items);
 

@@ -8,12 +8,14 @@ import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
 import dolphin.mission.transfer.MissionTransfers;
 import dolphin.mission.transfer.TransferResult;
-import dolphin.mission.transfer.VehicleChannel;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.atomic.AtomicReference;
 
-/** One MAVLink vehicle's missions: its transfers and the executor flying on it, kept by {@link MissionService}. */
+/**
+ * One MAVLink vehicle's missions: its transfers and the executor flying on it, kept by
+ * {@link MissionService}; the vehicle as the transfers and the executor see it.
+ */
 public final class VehicleMissions implements MissionVehicle {
 
     private final MAVLinkNode node;
@@ -24,7 +26,7 @@ public final class VehicleMissions implements MissionVehicle {
     VehicleMissions(MAVLinkNode node, MissionService service) {
         this.node = node;
         this.service = service;
-        this.transfers = new MissionTransfers(new NodeChannel(node), service.timers(), service::transferConfig);
+        this.transfers = new MissionTransfers(this, service.timers(), service::transferConfig);
     }
 
     public MAVLinkNode node() {
@@ -52,7 +54,7 @@ public final class VehicleMissions implements MissionVehicle {
     }
 
     @Override
-    public String id() {
+    public String vehicleId() {
         return node.getId();
     }
 
@@ -92,6 +94,16 @@ public final class VehicleMissions implements MissionVehicle {
     }
 
     @Override
+    public int groundSystem() {
+        return node.communications().config().sysid();
+    }
+
+    @Override
+    public String silence() {
+        return node.isConnected() ? "" : "no heartbeat within " + node.getConnectionTimeout() + " s";
+    }
+
+    @Override
     public MissionExecutorConfig executorConfig() {
         return service.executorConfig();
     }
@@ -99,38 +111,5 @@ public final class VehicleMissions implements MissionVehicle {
     @Override
     public void wake() {
         node.communications().wakeScript();
-    }
-
-    /** The node as the transfer protocols see it. */
-    private record NodeChannel(MAVLinkNode node) implements VehicleChannel {
-        @Override
-        public void send(MAVLinkMessage message) {
-            node.send(message);
-        }
-
-        @Override
-        public int system() {
-            return node.getMavLinkId();
-        }
-
-        @Override
-        public int component() {
-            return node.getAutopilotCompid();
-        }
-
-        @Override
-        public int groundSystem() {
-            return node.communications().config().sysid();
-        }
-
-        @Override
-        public String vehicleId() {
-            return node.getId();
-        }
-
-        @Override
-        public String silence() {
-            return node.isConnected() ? "" : "no heartbeat within " + node.getConnectionTimeout() + " s";
-        }
     }
 }

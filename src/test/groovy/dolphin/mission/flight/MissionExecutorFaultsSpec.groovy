@@ -1,232 +1,570 @@
 package dolphin.mission.flight
 
-import dolphin.mission.model.Mission
+import com.MAVLink.enums.MAV_LANDED_STATE
+import com.MAVLink.enums.MAV_RESULT
+import com.MAVLink.enums.MISSION_STATE
+import dolphin.core.Allocation
+import dolphin.core.CompletionState
+import dolphin.core.Position
+import dolphin.core.TaskContext
+import dolphin.mavlink.CommandResult
+import dolphin.mavlink.VehicleFamily
+import dolphin.mission.dsl.MissionDsl
+import dolphin.mission.flight.MissionExecutor.State
 import dolphin.mission.model.MissionItem
-import dolphin.mission.transfer.MissionTransferConfig
-import dolphin.mission.transfer.MissionVerification
-import dolphin.dsl.Engine
-import dolphin.dsl.EngineListener
-import dolphin.dsl.ScriptResult
-import dolphin.mavlink.FleetHarness
-import dolphin.mavlink.MAVLinkConfig
-import dolphin.platform.MAVLinkPlatform
-import dolphin.sim.FaultModel
-import dolphin.sim.SimOptions
-import dolphin.sim.SimVehicle
-import dolphin.sim.VehicleKind
+import dolphin.mission.model.MissionType
 import java.time.Duration
-import spock.lang.AutoCleanup
-import spock.lang.Specification
-import spock.lang.Timeout
 import spock.lang.Unroll
 
+import static dolphin.mission.flight.FakeFlightVehicle.HOME
+
 /**
- * Missions flown end to end under faults: a lossy, duplicating or reordering link, a vehicle that
- * refuses to arm or to change mode, a vehicle lost or switched out of AUTO mid-mission. Faults in
- * the middle of a flight are injected by a thread that waits (with a deadline) for the executor's
- * progress messages, never by sleeping.
+ * The MissionExecutor under faults, on a FakeFlightVehicle and a ManualClock (no socket, no thread,
+ * no sleep): a vehicle that is not ready or never becomes ready, commands refused or unanswered
+ * (every COMMAND_ACK lost on a bad link: the vehicle's state decides), transfers that fail or never
+ * end, a mission the vehicle holds differently, and someone else's hand during the flight. Each
+ * deadline is met to the 100 ms tick. Link faults within a transfer are MissionTransferSpec's.
  */
-@Timeout(120)
-class MissionExecutorFaultsSpec extends Specification {
+class MissionExecutorFaultsSpec extends MissionFlights {
 
-    static final int LOITER = 5   // COPTER_MODE_LOITER
+    static final int NO_ACK = CommandResult.NO_ACK
+    static final int DONE = FakeFlightVehicle.DONE_WITHOUT_ACK
 
-    /**
-     * The executor is RUNNING and has seen the vehicle fly in AUTO: it reports the items reached as
-     * "at least k", so the first report may name any item before the landing.
-     */
-    static final Closure<Boolean> RUNNING = { String m -> m ==~ /mission hop on vehicle 1: item [1-3] of 4 reached/ }
-
-    @AutoCleanup
-    FleetHarness h = new FleetHarness()
-    List<String> messages = new java.util.concurrent.CopyOnWriteArrayList()
-    Engine engine
-    List<Throwable> injectorFailures = new java.util.concurrent.CopyOnWriteArrayList()
-
-    static final String HOP = '''
-        hop = mission {
+    /** Take-off, two waypoints, a landing: 5 items with home. */
+    static MissionTask hop5() {
+        MissionDsl.mission {
             name 'hop'
-            takeOff location(40.444233, -7.375234, 840)
+            takeOff Position.fromDegrees(40.444233, -7.375234, 840)
             goPos 40.4444, -7.375234, 840
             goPos 40.4446, -7.375234, 840
             landingPoint 40.4446, -7.375234, 820
         }
-    '''
-
-    ScriptResult run(String script) {
-        engine = new Engine(new MAVLinkPlatform(h.comms), h.clock)
-        engine.addListener(new EngineListener() {
-            void message(String text) { messages << text }
-        })
-        def result = engine.run(script, 'fly.dolphin').await(Duration.ofSeconds(100))
-        assert result != null: "script did not end; messages: ${messages}"
-        result
     }
 
-    /** Runs {@code action} on another thread as soon as a message matching {@code wanted} arrives (60 s real-time deadline). */
-    Thread onMessage(Closure<Boolean> wanted, Closure action) {
-        Thread t = Thread.start {
-            long end = System.nanoTime() + 60_000_000_000L
-            try {
-                while (!seen(wanted)) {
-                    if (System.nanoTime() > end) {
-                        throw new AssertionError("no awaited message within 60 s; messages: ${messages}")
-                    }
-                    Thread.sleep(5)
-                }
-                action()
-            } catch (Throwable e) {
-                injectorFailures << e
-            }
-        }
-        t
+    /** The executor's error as the script sees it. */
+    String failure(MissionExecutor e = executor) {
+        assert e.completionState.error: "${e.mission().id} did not fail: ${e.completionState}; messages ${messages}"
+        e.completionState.message
     }
 
-    /** The script thread adds messages meanwhile: a copy-on-write list is iterated on a snapshot. */
-    boolean seen(Closure<Boolean> wanted) {
-        messages.any(wanted)
+    // ---- PREPARE
+
+    def "a vehicle that never becomes ready: it says once per change what it waits for, uploads nothing, and fails just after the prepare deadline in the vehicle's words"() {
+        given: 'a vehicle without a position estimate; 15 s after boot it says why; a 40 s readiness deadline'
+        vehicle.executorConfig = MissionExecutorConfig.DEFAULT.withPrepare(Duration.ofSeconds(40))
+        vehicle.prearm(false)
+        clock.schedule(Duration.ofSeconds(15)) { vehicle.text('PreArm: Need Position Estimate') }
+
+        when:
+        launch(hop())
+        step()
+        def at40 = runTo(40)
+
+        then:
+        at40 == CompletionState.IN_PROGRESS
+        executor.state() == State.PREPARE
+        messages == ['waiting for vehicle 1: no position estimate yet', 'waiting for vehicle 1: PreArm: Need Position Estimate']
+
+        when:
+        def after = runTo(41)
+
+        then:
+        after.error
+        now() == 40.1d
+        failure() == 'mission hop on vehicle 1: vehicle 1 was not ready within 40 s: PreArm: Need Position Estimate'
+        executor.state() == State.ERROR
+        vehicle.log.empty
+        vehicle.executors == ['flying hop', 'landed hop']
     }
 
-    static List<String> diffs(List<MissionItem> intended, List<MissionItem> stored) {
-        MissionVerification.firstDifference(intended, stored).map { [it] }.orElse([])
+    def "a vehicle booting: each wait said once, in order, until it is ready; then how long it waited, and the upload"() {
+        given:
+        vehicle.prearm(false)
+        def at = { double s, Closure change -> clock.schedule(Duration.ofMillis(Math.round(s * 1000))) { change() } }
+        at(5) { vehicle.at(0, 0); vehicle.state = vehicle.state.withEkfFlags(167) }
+        at(10) { vehicle.state = vehicle.state.withEkfFlags(831) }
+        at(15) { vehicle.state = vehicle.state.withHome(HOME); vehicle.text('PreArm: Gyros inconsistent') }
+        at(30) { vehicle.prearm(true) }
+
+        when:
+        launch(hop())
+        step()
+        runTo(29.9)
+
+        then:
+        messages == ['waiting for vehicle 1: no position estimate yet',
+                     'waiting for vehicle 1: no position estimate yet (EKF: no absolute horizontal position)',
+                     'waiting for vehicle 1: no home position yet',
+                     'waiting for vehicle 1: PreArm: Gyros inconsistent']
+        vehicle.log.empty
+
+        when:
+        runTo(30)
+
+        then:
+        messages.drop(4) == said(['vehicle ready after 30 s', 'uploading 4 items'])
+        vehicle.log == ['30.0 upload mission: 4 items']
     }
 
     @Unroll
-    def "fault: #fault -> #outcome #fragment"() {
+    def "a vehicle not ready within the deadline, #why: '#what'"() {
         given:
-        if (attempts) {
-            h.close()
-            h = new FleetHarness(MAVLinkConfig.of('udpin:127.0.0.1:0').withCommandAttempts(attempts))
-        }
-        if (executorConfig) {
-            h.comms.missionExecutorConfig = executorConfig
-        }
-        if (tries) {
-            h.comms.missionTransferConfig = new MissionTransferConfig(MissionTransferConfig.DEFAULT.timeout(), tries)
-        }
-        def fleet = h.fleet(1, VehicleKind.COPTER, 1, options, faults)
-        SimVehicle vehicle = fleet.vehicle(1)
-        Thread injector = inject ? onMessage(RUNNING) { inject(vehicle) } : null
+        vehicle.executorConfig = MissionExecutorConfig.DEFAULT.withPrepare(Duration.ofSeconds(10))
+        vehicle.ready()
+        vehicle.state = vehicle.state.withHome(null)
+        vehicle.answers['DO_SET_HOME 40.444233 -7.375234 820.0'] = MAV_RESULT.MAV_RESULT_FAILED
+        def task = withHome ? MissionDsl.mission {
+            name 'hop'
+            home Position.fromDegrees(40.444233, -7.375234, 820)
+            takeOff Position.fromDegrees(40.444233, -7.375234, 840)
+        } : hop()
 
         when:
-        def result = run(HOP + """
-            v = pick { timeout 10 }
-            setConnectionTimeout v: ${timeout}
-            execute v: watch(hop) onError { msg -> message "caught: \${msg}"; ignore() }
-        """)
-        injector?.join(10_000)
+        launch(task)
+        step()
+        runTo(11)
 
         then:
-        injectorFailures.empty
-        !injector?.alive
-        result.outcome == ScriptResult.Outcome.COMPLETED
+        now() == 10.1d
+        failure() == "mission hop on vehicle 1: vehicle 1 was not ready within 10 s: ${what}".toString()
+        vehicle.commands*.time == (withHome ? [0.0d, 2.0d, 4.0d, 6.0d, 8.0d, 10.0d] : [])
 
-        and: 'DONE with the intended mission stored on the vehicle, or ERROR with the expected text'
-        if (outcome == 'DONE') {
-            assert messages.contains('mission hop on vehicle 1: done'): messages
-            assert !messages.any { it.startsWith('caught:') }: messages
-            assert diffs(((Mission) engine.variable('hop')).items(vehicle.home()), vehicle.mission()) == []
-            assert !vehicle.armed()
-        } else {
-            assert !messages.contains('mission hop on vehicle 1: done'): messages
-            String caught = messages.find { it.startsWith('caught: ') }
-            assert caught != null: messages
-            assert caught.contains(fragment)
-        }
-
-        // At 20 % loss both ways a command unheard after 12 attempts (0.2^12) or an upload the vehicle
-        // cancels after eight unanswered requests (0.36^8 per item) are rare enough for a test that must
-        // not flake; at 30 % ArduPilot's own 8 s upload timeout already cancels about 0.2 % of the items.
         where:
-        fault                                  | options                                                 | faults                                 | tries | attempts | executorConfig                                                  | timeout | inject                          || outcome | fragment
-        'no fault'                             | SimOptions.DEFAULT                                      | FaultModel.NONE                        | 0     | 0        | null                                                            | 30      | null                            || 'DONE'  | ''
-        '10% loss both ways'                   | SimOptions.DEFAULT                                      | FaultModel.loss(0.1, 11)               | 0     | 0        | null                                                            | 30      | null                            || 'DONE'  | ''
-        '20% loss both ways'                   | SimOptions.DEFAULT                                      | FaultModel.loss(0.2, 12)               | 20    | 12       | null                                                            | 30      | null                            || 'DONE'  | ''
-        'duplication and reordering'           | SimOptions.DEFAULT                                      | new FaultModel(0, 0.3, 0.02, 0.3, 13)  | 0     | 0        | null                                                            | 30      | null                            || 'DONE'  | ''
-        'not ready at first, then ready'       | SimOptions.DEFAULT.withWarmup(8)                        | FaultModel.NONE                        | 0     | 0        | null                                                            | 30      | null                            || 'DONE'  | ''
-        'never ready'                          | SimOptions.DEFAULT.withWarmup(600)                      | FaultModel.NONE                        | 0     | 0        | MissionExecutorConfig.DEFAULT.withPrepare(Duration.ofSeconds(10)) | 30    | null                            || 'ERROR' | 'vehicle 1 was not ready within 10 s: '
-        'mode change refused'                  | new SimOptions(0, 14, true, true)                       | FaultModel.NONE                        | 0     | 0        | null                                                            | 30      | null                            || 'ERROR' | 'refused GUIDED'
-        'vehicle lost during the mission'      | SimOptions.DEFAULT                                      | FaultModel.NONE                        | 0     | 0        | null                                                            | 5       | { SimVehicle v -> v.setSilent(true) }   || 'ERROR' | 'vehicle 1 lost'
-        'mode switched by someone else'        | SimOptions.DEFAULT                                      | FaultModel.NONE                        | 0     | 0        | null                                                            | 30      | { SimVehicle v -> v.setMode(LOITER) }   || 'ERROR' | 'vehicle 1 left AUTO for LOITER during item '
+        why                                                 | withHome || what
+        'no home and no text'                               | false    || 'no home position yet'
+        'DO_SET_HOME FAILED throughout, the vehicle silent' | true     || 'DO_SET_HOME FAILED'
     }
 
-    def "a plane flies a waypoint mission and is DONE when it switches itself to RTL at the end"() {
+    def "a vehicle that is not a MAVLink vehicle fails at once"() {
         given:
-        def fleet = h.fleet(1, VehicleKind.PLANE)
-        SimVehicle plane = fleet.vehicle(1)
+        def e = new MissionExecutor(hop(), { null })
+        def allocation = new Allocation()
+        allocation.assign([vehicle.node])
+        e.initialize(new TaskContext(clock, listener), allocation)
+        e.start()
 
-        when:
-        def result = run('''
-            tour = mission {
-                name 'tour'
-                takeOff location(40.444233, -7.375234, 870)
-                goPos 40.4455, -7.375234, 870
-                goPos 40.4455, -7.3737, 870
-            }
-            v = pick { timeout 10 }
-            r = execute v: tour
-            message "result: ${r}"
-        ''')
-
-        then:
-        result.outcome == ScriptResult.Outcome.COMPLETED
-        messages.contains('result: DONE')
-        messages.contains('mission tour on vehicle 1: done')
-        diffs(((Mission) engine.variable('tour')).items(plane.home()), plane.mission()) == []
-        plane.modeName() == 'RTL'
+        expect:
+        e.step().message == 'mission hop: vehicle 1 is not a MAVLink vehicle'
+        e.state() == State.ERROR
+        vehicle.executors.empty
     }
 
-    def "jumpToItem flies a leg again the requested number of times"() {
-        given:
-        h.fleet(1)
+    @Unroll
+    def "PREPARE's #command answered #answer: #outcome"() {
+        given: 'a copter flying another mission in AUTO, and a mission naming its home'
+        vehicle.ready()
+        vehicle.heartbeat(true, 'AUTO')
+        vehicle.missionCurrent(3)
+        vehicle.state = vehicle.state.withHome(HOME.displace(100, 0, 0))
+        vehicle.autopilot = true
+        vehicle.answers[command] = result
+        def task = MissionDsl.mission {
+            name 'hop'
+            home Position.fromDegrees(40.444233, -7.375234, 820)
+            takeOff Position.fromDegrees(40.444233, -7.375234, 840)
+        }
 
         when:
-        def result = run('''
-            loop = mission {
-                name 'loop'
-                takeOff location(40.444233, -7.375234, 840)
-                goPos 40.4444, -7.375234, 840
-                goPos 40.4444, -7.37500, 840
-                jumpToItem 2, 2
-                landingPoint 40.4444, -7.37500, 820
-            }
-            v = pick { timeout 10 }
-            r = execute v: loop
-            message "result: ${r}"
-        ''')
+        launch(task)
+        step()
 
         then:
-        result.outcome == ScriptResult.Outcome.COMPLETED
-        messages.contains('result: DONE')
-        messages.count('mission loop on vehicle 1: jump to item 2') == 2
-        // item 3 (the leg's end, after which the jump is keyed) is reached once, then once per jump
-        messages.count('mission loop on vehicle 1: item 3 of 4 reached') == 3
-        messages.contains('mission loop on vehicle 1: done')
+        vehicle.commands*.text == sent
+        (error == null) ? executor.state() == State.UPLOAD : failure() == "mission hop on vehicle 1: ${error}".toString()
+
+        where:
+        command                                 | answer                     | result                       || sent                                                            | error
+        'DO_SET_MODE LOITER'                    | 'DENIED'                   | MAV_RESULT.MAV_RESULT_DENIED || ['DO_SET_MODE LOITER']                                          | 'vehicle 1 refused leaving AUTO for LOITER before the new mission: DENIED'
+        'DO_SET_MODE LOITER'                    | 'nothing (mode unchanged)' | NO_ACK                       || ['DO_SET_MODE LOITER']                                          | 'vehicle 1 did not answer leaving AUTO for LOITER before the new mission: no COMMAND_ACK after 5 attempt(s)'
+        'DO_SET_MODE LOITER'                    | 'nothing (mode changed)'   | DONE                         || ['DO_SET_MODE LOITER', 'DO_SET_HOME 40.444233 -7.375234 820.0'] | null
+        'DO_SET_HOME 40.444233 -7.375234 820.0' | 'DENIED'                   | MAV_RESULT.MAV_RESULT_DENIED || ['DO_SET_MODE LOITER', 'DO_SET_HOME 40.444233 -7.375234 820.0'] | 'vehicle 1 refused DO_SET_HOME: DENIED'
+        'DO_SET_HOME 40.444233 -7.375234 820.0' | 'nothing (home not moved)' | NO_ACK                       || ['DO_SET_MODE LOITER', 'DO_SET_HOME 40.444233 -7.375234 820.0'] | 'vehicle 1 did not answer DO_SET_HOME: no COMMAND_ACK after 5 attempt(s)'
+        'DO_SET_HOME 40.444233 -7.375234 820.0' | 'nothing (home moved)'     | DONE                         || ['DO_SET_MODE LOITER', 'DO_SET_HOME 40.444233 -7.375234 820.0'] | null
+        outcome = error ?: 'the upload starts'
     }
 
-    def "a mission ending in loiterPos never completes by itself; during 20 ends it DONE and the vehicle gets RTL"() {
+    def "an item lower than the vehicle's home plus 2 m fails the mission before the upload, naming it; allowBelowHome lets it fly"() {
         given:
-        def fleet = h.fleet(1)
-        SimVehicle vehicle = fleet.vehicle(1)
+        vehicle.ready()
+        Closure low = { boolean allowed ->
+            MissionDsl.mission {
+                name 'hop'
+                allowBelowHome allowed
+                takeOff Position.fromDegrees(40.444233, -7.375234, 840)
+                goPos 40.4446, -7.375234, 821
+                landingPoint 40.4446, -7.375234, 820
+            }
+        }
 
         when:
-        def result = run('''
-            stay = mission {
-                name 'stay'
-                takeOff location(40.444233, -7.375234, 840)
-                loiterPos 40.4444, -7.375234, 840
-            }
-            v = pick { timeout 10 }
-            execute v: during(20) run stay
-        ''')
+        launch(low(false))
+        step()
 
         then:
-        result.outcome == ScriptResult.Outcome.COMPLETED
-        // LOITER_UNLIM is never "reached" (ArduPilot's verify never ends it): only item 1 is reported
-        messages.contains('mission stay on vehicle 1: item 1 of 2 reached')
-        !messages.contains('mission stay on vehicle 1: item 2 of 2 reached')
-        messages.contains('mission stay on vehicle 1: cut short: RTL')
-        !messages.contains('mission stay on vehicle 1: done')
-        h.eventually(5) { assert vehicle.modeName() == 'RTL' }
+        failure() == "mission hop on vehicle 1: mission hop: item 2 (goPos, NAV_WAYPOINT) is 1.0 m above home (home at 820.0 m): lower" +
+                " than the 2 m clearance, into the ground or nearly; only landings go lower. Raise it, or write 'allowBelowHome true'" +
+                " in the mission if this is intended"
+        vehicle.log.empty
+
+        when:
+        def allowed = launch(low(true))
+        step(allowed)
+
+        then:
+        allowed.state() == State.UPLOAD
+    }
+
+    // ---- UPLOAD and VERIFY
+
+    @Unroll
+    def "#what: #outcome"() {
+        given: 'a willing vehicle, but for the transfers'
+        vehicle.ready()
+        vehicle.autopilot = true
+        vehicle.executorConfig = MissionExecutorConfig.DEFAULT.withVerify(verify)
+        vehicle.transferAnswers['upload mission'] = upload
+        vehicle.transferAnswers['download mission'] = download
+
+        when:
+        launch(hop())
+        driveTo(State.UPLOAD)
+        for (int i = 0; i < 3 && !executor.completed && executor.state() != State.ARM; i++) {
+            step()
+        }
+
+        then:
+        vehicle.transfers*.toString() == transfers
+        error == null ? executor.state() == State.ARM : failure() == "mission hop on vehicle 1: ${error}".toString()
+        messages.drop(1) == said(progress)
+
+        where:
+        what                                               | verify | upload             | download      || transfers                                               | progress                                                        | error
+        'an upload failed, the download finds the mission' | true   | heldButFailed('E') | null          || ['0.0 upload mission: 4 items', '0.0 download mission'] | ['upload verified by download (upload to vehicle 1 failed: E)'] | null
+        'an upload failed, the download finds another'     | true   | failed('E')        | held(2, 845f) || ['0.0 upload mission: 4 items', '0.0 download mission'] | []                                                              | 'upload to vehicle 1 failed: E'
+        'an upload failed, the download too'               | true   | failed('E')        | failed('D')   || ['0.0 upload mission: 4 items', '0.0 download mission'] | []                                                              | 'upload to vehicle 1 failed: E'
+        'an upload done, the vehicle holds another'        | true   | null               | held(2, 845f) || ['0.0 upload mission: 4 items', '0.0 download mission'] | []                                                              | 'the vehicle holds another mission than the one uploaded: item 2 (NAV_WAYPOINT): z sent 840.0, vehicle has 845.0'
+        'an upload done, its download failed'              | true   | null               | failed('D')   || ['0.0 upload mission: 4 items', '0.0 download mission'] | []                                                              | 'verifying the upload failed: download from vehicle 1 failed: D'
+        'an upload failed, no verification'                | false  | failed('E')        | null          || ['0.0 upload mission: 4 items']                         | []                                                              | 'upload to vehicle 1 failed: E'
+        'an upload done, no verification'                  | false  | null               | null          || ['0.0 upload mission: 4 items']                         | []                                                              | null
+        outcome = error ?: (progress ? progress[0] : 'ARM follows')
+    }
+
+    /** A transfer answer: it fails with "upload to vehicle 1 failed: E" (or download from). */
+    static Closure failed(String why) {
+        return { FakeFlightVehicle.Transfer t ->
+            t.result.complete(new dolphin.mission.transfer.TransferResult(false,
+                    "${t.upload ? 'upload to' : 'download from'} vehicle 1 failed: ${why}".toString(), [], 0, 0))
+        }
+    }
+
+    /** An upload answer: the vehicle holds the items, but the upload fails (its final ACK lost): "upload to vehicle 1 failed: E". */
+    static Closure heldButFailed(String why) {
+        return { FakeFlightVehicle v, FakeFlightVehicle.Transfer t ->
+            v.stored[t.type] = t.items
+            failed(why).call(t)
+        }
+    }
+
+    /** A download answer: the mission uploaded, but item {@code seq} at another height. */
+    static Closure held(int seq, float z) {
+        return { FakeFlightVehicle.Transfer t ->
+            def items = hop().mission().items(HOME).collect {
+                it.seq() == seq ? new MissionItem(it.seq(), it.command(), it.frame(), it.param1(), it.param2(), it.param3(), it.param4(),
+                        it.x(), it.y(), z, it.autocontinue()) : it
+            }
+            t.result.complete(new dolphin.mission.transfer.TransferResult(true, null, items, 0, 0))
+        }
+    }
+
+    def "a fence the vehicle holds differently fails the mission naming the fence; the mission is not uploaded"() {
+        given:
+        vehicle.ready()
+        vehicle.autopilot = true
+        def task = MissionDsl.mission {
+            name 'hop'
+            fence {
+                inclusion polygon(HOME.displace(500, 0, 0), HOME.displace(-300, 400, 0), HOME.displace(-300, -400, 0))
+            }
+            takeOff Position.fromDegrees(40.444233, -7.375234, 840)
+        }
+        def fence = task.mission().fence().items()
+        vehicle.transferAnswers['download fence'] = { FakeFlightVehicle.Transfer t ->
+            t.result.complete(new dolphin.mission.transfer.TransferResult(true, null, fence.take(2), 0, 0))
+        }
+
+        when:
+        launch(task)
+        driveTo(State.VERIFY)
+        step()
+
+        then:
+        failure() == 'mission hop on vehicle 1: the vehicle holds another fence than the one uploaded: the vehicle has 2 items, 3 were sent'
+        vehicle.transfers*.toString() == ['0.0 upload fence: 3 items', '0.0 download fence']
+    }
+
+    @Unroll
+    def "#stage waiting for ever fails just after its deadline (#limit s): '#stage did not finish within its deadline'"() {
+        given: 'a vehicle that never ends the transfer, or never answers the command'
+        vehicle.ready()
+        vehicle.autopilot = true
+        vehicle.transferAnswers[waitFor] = { t -> }
+        vehicle.answers[waitFor] = { c -> }
+
+        when:
+        launch(hop())
+        step()
+        driveTo(stage)
+        double entered = now()
+        runTo(entered + limit)
+
+        then:
+        !executor.completed
+
+        when:
+        runTo(entered + limit + 1)
+
+        then:
+        now() == entered + limit + 0.1d
+        failure() == "mission hop on vehicle 1: ${stage} did not finish within its deadline".toString()
+
+        where:
+        stage        | waitFor            || limit
+        State.UPLOAD | 'upload mission'   || 120
+        State.VERIFY | 'download mission' || 120
+        State.START  | 'DO_SET_MODE AUTO' || 30
+    }
+
+    // ---- ARM
+
+    @Unroll
+    def "ARM's GUIDED answered #answer: #outcome"() {
+        given:
+        vehicle.ready()
+        vehicle.autopilot = true
+        vehicle.answers['DO_SET_MODE GUIDED'] = result
+
+        when:
+        launch(hop())
+        driveTo(State.ARM)
+        step()
+
+        then:
+        vehicle.commands*.text == sent
+        (error == null) ? executor.state() == State.START : failure() == "mission hop on vehicle 1: ${error}".toString()
+
+        where:
+        answer                     | result                       || sent                          | error
+        'DENIED'                   | MAV_RESULT.MAV_RESULT_DENIED || ['DO_SET_MODE GUIDED']        | 'vehicle 1 refused GUIDED: DENIED'
+        'nothing (mode unchanged)' | NO_ACK                       || ['DO_SET_MODE GUIDED']        | 'vehicle 1 did not answer GUIDED: no COMMAND_ACK after 5 attempt(s)'
+        'nothing (mode changed)'   | DONE                         || ['DO_SET_MODE GUIDED', 'ARM'] | null
+        outcome = error ?: 'armed'
+    }
+
+    @Unroll
+    def "ARM refused is sent again every 2 s until the 10 s arm deadline, then the mission fails with #why"() {
+        given:
+        vehicle.ready()
+        vehicle.autopilot = true
+        vehicle.executorConfig = MissionExecutorConfig.DEFAULT.withArm(Duration.ofSeconds(10))
+        vehicle.answers['ARM'] = MAV_RESULT.MAV_RESULT_FAILED
+        texts.each { vehicle.text(it) }
+
+        when:
+        launch(hop())
+        driveTo(State.ARM)
+        step()
+        runTo(9.9)
+
+        then:
+        !executor.completed
+        vehicle.commands.findAll { it.text == 'ARM' }*.time == [0.0d, 2.0d, 4.0d, 6.0d, 8.0d]
+
+        when:
+        runTo(11)
+
+        then:
+        now() == 10.0d
+        vehicle.commands.findAll { it.text == 'ARM' }*.time == [0.0d, 2.0d, 4.0d, 6.0d, 8.0d, 10.0d]
+        failure() == "mission hop on vehicle 1: vehicle 1 refused to arm for 10 s: ${text}".toString()
+        !messages.contains('mission hop on vehicle 1: armed')
+
+        where:
+        why                                     | texts                                                                                   || text
+        "the vehicle's last text about arming"  | ['PreArm: Throttle below failsafe', 'Arm: Throttle too high', 'EKF3 IMU0 is using GPS'] || 'Arm: Throttle too high'
+        'the last answer, when it said nothing' | []                                                                                      || 'FAILED'
+    }
+
+    def "ARM accepted at the third attempt: armed at 4 s; ARM unanswered but the vehicle armed counts too"() {
+        given:
+        vehicle.ready()
+        vehicle.autopilot = true
+        int attempts = 0
+        vehicle.answers['ARM'] = { c ->
+            if (++attempts < 3) {
+                vehicle.answer(c, MAV_RESULT.MAV_RESULT_TEMPORARILY_REJECTED)
+            } else {
+                vehicle.effect(c)
+                vehicle.answer(c, NO_ACK)
+            }
+        }
+
+        when:
+        launch(hop())
+        driveTo(State.ARM)
+        step()
+        runTo(5)
+
+        then:
+        vehicle.commands.findAll { it.text == 'ARM' }*.time == [0.0d, 2.0d, 4.0d]
+        messages.contains('mission hop on vehicle 1: armed')
+        executor.state() == State.RUNNING
+        vehicle.commands.find { it.text == 'DO_SET_MISSION_CURRENT 1' }.time == 4.1d
+    }
+
+    // ---- START
+
+    @Unroll
+    def "START's #command answered #answer: #outcome"() {
+        given:
+        vehicle.ready()
+        vehicle.autopilot = true
+        vehicle.answers[command] = result
+        def task = MissionDsl.mission {
+            name 'hop'
+            fence {
+                inclusion polygon(HOME.displace(500, 0, 0), HOME.displace(-300, 400, 0), HOME.displace(-300, -400, 0))
+                enable true
+            }
+            takeOff Position.fromDegrees(40.444233, -7.375234, 840)
+        }
+
+        when:
+        launch(task)
+        driveTo(State.START)
+        step()
+
+        then:
+        vehicle.commands*.text.drop(2) == sent
+        (error == null) ? executor.state() == State.RUNNING : failure() == "mission hop on vehicle 1: ${error}".toString()
+
+        where:
+        command                    | answer                         | result                       || sent                                                                                   | error
+        'DO_FENCE_ENABLE 1'        | 'nothing'                      | NO_ACK                       || ['DO_FENCE_ENABLE 1']                                                                  | 'vehicle 1 did not answer MAV_CMD_DO_FENCE_ENABLE 1: no COMMAND_ACK after 5 attempt(s)'
+        'DO_SET_MISSION_CURRENT 1' | 'DENIED'                       | MAV_RESULT.MAV_RESULT_DENIED || ['DO_FENCE_ENABLE 1', 'DO_SET_MISSION_CURRENT 1']                                      | 'vehicle 1 refused MAV_CMD_DO_SET_MISSION_CURRENT 1: DENIED'
+        'DO_SET_MISSION_CURRENT 1' | 'nothing (item 1 current)'     | DONE                         || ['DO_FENCE_ENABLE 1', 'DO_SET_MISSION_CURRENT 1', 'DO_SET_MODE AUTO', 'MISSION_START'] | null
+        'DO_SET_MODE AUTO'         | 'DENIED'                       | MAV_RESULT.MAV_RESULT_DENIED || ['DO_FENCE_ENABLE 1', 'DO_SET_MISSION_CURRENT 1', 'DO_SET_MODE AUTO']                  | 'vehicle 1 refused AUTO: DENIED'
+        'DO_SET_MODE AUTO'         | 'nothing (mode changed)'       | DONE                         || ['DO_FENCE_ENABLE 1', 'DO_SET_MISSION_CURRENT 1', 'DO_SET_MODE AUTO', 'MISSION_START'] | null
+        'MISSION_START'            | 'nothing (mission not active)' | NO_ACK                       || ['DO_FENCE_ENABLE 1', 'DO_SET_MISSION_CURRENT 1', 'DO_SET_MODE AUTO', 'MISSION_START'] | 'vehicle 1 did not answer MAV_CMD_MISSION_START: no COMMAND_ACK after 5 attempt(s)'
+        'MISSION_START'            | 'nothing (mission active)'     | DONE                         || ['DO_FENCE_ENABLE 1', 'DO_SET_MISSION_CURRENT 1', 'DO_SET_MODE AUTO', 'MISSION_START'] | null
+        outcome = error ?: 'started'
+    }
+
+    // ---- RUNNING
+
+    @Unroll
+    def "during the mission, #what: ERROR naming the item and what the vehicle reported; no RTL"() {
+        given: 'a copter flying item 2 at 20 m, item 1 reported reached'
+        vehicle.ready()
+        vehicle.autopilot = true
+        launch(hop5())
+        stepUntil(State.RUNNING)
+        vehicle.landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR)
+        vehicle.at(0, 20)
+        vehicle.next(2)
+        runTo(5)
+        int sent = vehicle.commands.size()
+
+        when:
+        change.resolveStrategy = Closure.DELEGATE_FIRST
+        change.delegate = vehicle
+        change()
+        def cs = runTo(6)
+
+        then:
+        cs.error
+        now() == 5.1d
+        failure() == "mission hop on vehicle 1: ${text}".toString()
+        executor.state() == State.ERROR
+        vehicle.commands.size() == sent
+        vehicle.executors == ['flying hop', 'landed hop']
+
+        where:
+        what                                     | change                                                                                                                    || text
+        'someone switched it to LOITER'          | { -> mode('LOITER') }                                                                                                     || 'vehicle 1 left AUTO for LOITER during item 2 of 4 (NAV_WAYPOINT), before the mission ended: armed, LOITER, landed state IN_AIR, 20.0 m above home'
+        'its fence breached, RTL (fence action)' | { -> text('Polygon fence breached'); mode('RTL') }                                                                        || "vehicle 1 breached its fence during item 2 of 4 (NAV_WAYPOINT) and left AUTO for RTL (its fence action): armed, RTL, landed state IN_AIR, 20.0 m above home, last text 'Polygon fence breached'"
+        'it crashed and disarmed'                | { -> text('SIM Hit ground at 12 m/s'); at(0, 0); landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND); armed(false) } || "vehicle 1 disarmed during item 2 of 4 (NAV_WAYPOINT): disarmed, AUTO, landed state ON_GROUND, 0.0 m above home, last text 'SIM Hit ground at 12 m/s'"
+    }
+
+    def "a vehicle lost during the mission (no contact within its connection timeout): ERROR at the next step, no command sent"() {
+        given:
+        vehicle.ready()
+        vehicle.autopilot = true
+        vehicle.node.connectionTimeout = 5
+        launch(hop5())
+        stepUntil(State.RUNNING)
+        vehicle.next(2)
+        runTo(5)
+        int sent = vehicle.commands.size()
+
+        when:
+        vehicle.node.connected = false
+        def cs = runTo(6)
+
+        then:
+        cs.error
+        now() == 5.1d
+        cs.message == 'vehicle 1 lost: no contact within its connection timeout of 5 s'
+        vehicle.commands.size() == sent
+        vehicle.executors == ['flying hop', 'landed hop']
+    }
+
+    def "a plane that switches to RTL at its last item but never reports it reached: ERROR once the 3 s grace is over"() {
+        given:
+        vehicle = new FakeFlightVehicle(clock, '1', VehicleFamily.PLANE)
+        vehicle.ready()
+        vehicle.autopilot = true
+        launch(MissionDsl.mission {
+            name 'tour'
+            takeOff Position.fromDegrees(40.444233, -7.375234, 870)
+            goPos 40.4455, -7.375234, 870
+            goPos 40.4455, -7.3737, 870
+        })
+        stepUntil(State.RUNNING)
+        vehicle.landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR)
+        vehicle.at(0, 50)
+        vehicle.next(2)
+        runTo(5)
+        vehicle.next(3)
+        runTo(10)
+
+        when:
+        vehicle.mode('RTL')
+        def inGrace = runTo(13)
+        def after = runTo(14)
+
+        then: 'first seen at 10.1 s, still within the grace at 13.1 s'
+        inGrace == CompletionState.IN_PROGRESS
+        after.error
+        now() == 13.2d
+        failure() == 'mission tour on vehicle 1: vehicle 1 left AUTO for RTL during item 3 of 3 (NAV_WAYPOINT), before the mission ended:' +
+                ' armed, RTL, landed state IN_AIR, 50.0 m above home'
+    }
+
+    def "MISSION_CURRENT counts as progress only while the mission is active (it also counts items during an upload)"() {
+        given:
+        vehicle.ready()
+        vehicle.autopilot = true
+        launch(hop5())
+        stepUntil(State.RUNNING)
+        vehicle.landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR)
+        vehicle.at(0, 20)
+
+        when: 'MISSION_CURRENT 3 not active (an upload in progress elsewhere, say): no progress counted from it'
+        vehicle.missionCurrent(3, MISSION_STATE.MISSION_STATE_NOT_STARTED)
+        def cs = runTo(2)
+
+        then:
+        cs == CompletionState.IN_PROGRESS
+        !messages.any { it.contains('reached') }
     }
 }
