@@ -1,5 +1,6 @@
 package dolphin.sitl
 
+import dolphin.testing.MissionLayer
 import dolphin.core.Position
 import dolphin.dsl.ScriptResult
 import dolphin.mavlink.MAVLinkNode
@@ -58,6 +59,6 @@ class SitlPlaneSpec extends Specification {
                 'mission circuit on vehicle 11: armed', 'mission circuit on vehicle 11: started', 'mission circuit on vehicle 11: done',
                 'circuit: DONE')
         node.modeName == 'RTL'
-        !MissionVerification.firstDifference(r.engine.variable('circuit').items(node.home), sitl.download(node)).present
+        !MissionVerification.firstDifference(MissionLayer.missionOf(r.engine.variable('circuit')).items(node.home), sitl.download(node)).present
     }
 }

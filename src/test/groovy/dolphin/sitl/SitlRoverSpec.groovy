@@ -1,5 +1,6 @@
 package dolphin.sitl
 
+import dolphin.testing.MissionLayer
 import dolphin.core.Position
 import dolphin.dsl.ScriptResult
 import dolphin.mavlink.MAVLinkNode
@@ -53,6 +54,6 @@ class SitlRoverSpec extends Specification {
                 'mission square on vehicle 21: started', 'mission square on vehicle 21: done', 'square: DONE')
         node.modeName == 'AUTO'
         node.position.distanceTo(HOME) < 5
-        !MissionVerification.firstDifference(r.engine.variable('square').items(node.home), sitl.download(node)).present
+        !MissionVerification.firstDifference(MissionLayer.missionOf(r.engine.variable('square')).items(node.home), sitl.download(node)).present
     }
 }

@@ -3,7 +3,6 @@ package dolphin.mission.file;
 import dolphin.mission.model.ItemText;
 import dolphin.mission.model.Mission;
 import dolphin.mission.model.MissionItem;
-import com.MAVLink.enums.MAV_FRAME;
 import groovy.json.JsonOutput;
 import java.math.BigDecimal;
 import java.math.RoundingMode;

@@ -2,7 +2,6 @@ package dolphin.mission.model;
 
 import com.MAVLink.enums.MAV_CMD;
 import java.util.List;
-import java.util.Objects;
 
 /**
  * Start taking pictures: one MAV_CMD_IMAGE_START_CAPTURE in MAV_FRAME_MISSION, its parameters as
