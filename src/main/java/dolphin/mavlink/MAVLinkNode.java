@@ -111,22 +111,23 @@ public final class MAVLinkNode extends AbstractNode {
     }
 
     /**
-     * The battery as a fraction: waits up to 5 s for the first SYS_STATUS, then fails with a clear
-     * error, as it does for a vehicle without a battery monitor (-1). Never a made-up value: Groovy
-     * orders NaN above every number, so a NaN would silently satisfy {@code >=} (docs/decisions.md, "Engine semantics").
+     * The battery as a fraction: waits up to 5 s for a SYS_STATUS with a level, then fails with a clear
+     * error. A level of -1 is waited out too: ArduPilot reports it for its first seconds after boot,
+     * before its battery monitor has read the battery, and for good without a monitor. Never a made-up
+     * value: Groovy orders NaN above every number, so a NaN would silently satisfy {@code >=}
+     * (docs/decisions.md, "Engine semantics").
      */
     @Override
     public double batteryRemaining() {
-        if (!awaitTelemetry("battery", s -> s.systemStatus() != null)) {
-            throw new EnvironmentException("battery: vehicle " + getId() + " has sent no SYS_STATUS in "
-                    + TELEMETRY_WAIT.toSeconds() + " s (are its telemetry streams reaching us?)");
+        if (!awaitTelemetry("battery", s -> s.systemStatus() != null && s.batteryPercent() >= 0)) {
+            if (state.get().systemStatus() == null) {
+                throw new EnvironmentException("battery: vehicle " + getId() + " has sent no SYS_STATUS in "
+                        + TELEMETRY_WAIT.toSeconds() + " s (are its telemetry streams reaching us?)");
+            }
+            throw new EnvironmentException("battery: vehicle " + getId() + " reports no battery level (battery_remaining -1"
+                    + " for " + TELEMETRY_WAIT.toSeconds() + " s: no battery monitor configured)");
         }
-        int pct = state.get().batteryPercent();
-        if (pct < 0) {
-            throw new EnvironmentException("battery: vehicle " + getId() + " reports no battery level (battery_remaining -1:"
-                    + " no battery monitor configured)");
-        }
-        return pct / 100.0;
+        return state.get().batteryPercent() / 100.0;
     }
 
     /** The position, after waiting up to 5 s for the first GLOBAL_POSITION_INT; null if none came. */
