@@ -53,7 +53,7 @@ final class SimCommand implements Callable<Integer> {
     private double speedup;
 
     @Option(names = "--warmup", paramLabel = "SECONDS", defaultValue = "0",
-            description = "No position estimate this long after start, as ArduPilot while its EKF settles (SITL: about 42 s): "
+            description = "No position estimate this long after start, as ArduPilot while its EKF settles (SITL: about 41 s): "
                     + "position 0,0, no home, DO_SET_HOME failing, \"PreArm: Need Position Estimate\" (default: ${DEFAULT-VALUE}).")
     private double warmup;
 

@@ -1,6 +1,7 @@
 package dolphin.sim;
 
 import com.MAVLink.enums.COPTER_MODE;
+import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_LANDED_STATE;
 import com.MAVLink.enums.MAV_STATE;
 import com.MAVLink.enums.MAV_TYPE;
@@ -9,15 +10,26 @@ import dolphin.mavlink.VehicleFamily;
 import dolphin.mission.model.MissionItem;
 import java.util.Optional;
 import java.util.OptionalInt;
+import java.util.Set;
 
 /**
- * ArduCopter as SITL runs it with copter.parm: WPNAV_SPEED 10 m/s, WPNAV_SPEED_UP 2.5, WPNAV_SPEED_DN
- * 1.5; waypoints reached within about a metre (SITL: 0.6 to 1.5 m), whatever their param2; a
- * vertical take-off, hovering to hold, landing and RTL with LAND's descent; no streams until asked.
+ * ArduCopter as SITL runs it with copter.parm: WPNAV_SPD 10 m/s, WPNAV_SPD_UP 2.5, WPNAV_SPD_DN 1.5,
+ * WPNAV_ACC 2.5 m/s² (its jerk limit not simulated); waypoints reached within about a metre (SITL: 0.6
+ * to 1.5 m), whatever their param2, flown past without stopping when the next nav item is another
+ * point to fly to, else stopped on; a vertical take-off {@link #SPOOL_UP} seconds after it may take
+ * off, hovering to hold, landing and RTL with LAND's descent; no streams until asked.
  */
 final class CopterFirmware implements Firmware {
 
-    private static final Performance PERFORMANCE = new Performance(10, 2.5, 1.5, 1, 10);
+    /**
+     * How long SITL's copter stays on the ground once it may take off: its motors spool up and its
+     * throttle ramps up until it lifts (3.3 to 4 s in the recordings, docs/mavlink.md).
+     */
+    static final double SPOOL_UP = 3.5;
+
+    private static final Performance PERFORMANCE = new Performance(10, 2.5, 1.5, 1, 10, 2.5, 2.5);
+    private static final Set<Integer> FLOWN_ON_TO = Set.of(MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_CMD.MAV_CMD_NAV_SPLINE_WAYPOINT,
+            MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM, MAV_CMD.MAV_CMD_NAV_LOITER_TIME);
 
     @Override
     public int mavType() {
@@ -87,10 +99,16 @@ final class CopterFirmware implements Firmware {
         return true;
     }
 
-    /** AP_Arming_Copter::disarm resets the mission; AP_Mission, still running in AUTO, starts it over. */
+    /** AP_Arming_Copter::disarm resets the mission in any mode; AP_Mission, still running in AUTO, starts it over. */
     @Override
-    public boolean restartsMissionOnDisarm() {
+    public boolean resetsMissionOnDisarm(boolean inAuto) {
         return true;
+    }
+
+    /** ModeAuto::set_next_wp: on to another waypoint or a loiter; it stops before a landing, a take-off, RTL or LOITER_TURNS. */
+    @Override
+    public boolean passesOn(MissionItem next) {
+        return FLOWN_ON_TO.contains(next.command());
     }
 
     @Override
@@ -100,20 +118,24 @@ final class CopterFirmware implements Firmware {
 
     /** A copter must be at the point's height too: reached within the radius in three dimensions. */
     @Override
-    public boolean reach(Craft craft, Position target, double radius, double dt) {
-        craft.fly(target, dt);
+    public boolean reach(Craft craft, Position target, double radius, double endSpeed, double dt) {
+        craft.fly(target, endSpeed, radius, dt);
         double[] ned = craft.position().displacementTo(target);
-        return Math.sqrt(ned[0] * ned[0] + ned[1] * ned[1] + ned[2] * ned[2]) <= radius;
+        return Math.sqrt(ned[0] * ned[0] + ned[1] * ned[1] + ned[2] * ned[2]) <= radius && (endSpeed > 0 || craft.stopped());
     }
 
     @Override
     public Manoeuvre takeoff(Craft craft, double altitude) {
-        return new Takeoff(craft, altitude, craft::climbTo);
+        return new Takeoff(craft, altitude, craft::climbTo, SPOOL_UP);
     }
 
+    /** Hovers over the point, braking to it if it came in moving. */
     @Override
     public Manoeuvre holdAt(Craft craft, Position at) {
-        return Manoeuvre.STAY;
+        return dt -> {
+            craft.fly(at, dt);
+            return false;
+        };
     }
 
     @Override

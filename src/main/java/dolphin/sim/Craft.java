@@ -10,12 +10,16 @@ import java.util.function.Consumer;
  * goes below the ground: a move that would ends on it, there it stops (as SITL's vehicles stick
  * where they touch), and each new touch is reported as SITL reports it ("SIM Hit ground at 0.5
  * m/s"). It is on the ground (MAV_LANDED_STATE_ON_GROUND) until it lifts off, and again once it
- * has landed or is disarmed where it touches.
+ * has landed or is disarmed where it touches. Over the ground it moves with a velocity that changes
+ * at most at its firmware's acceleration (none given: it is at its speed at once, as a plane here),
+ * so it gathers speed, brakes for a point it stops at and overshoots one it turns back from.
  */
 final class Craft {
 
     /** Heights above the ground up to this count as touching it. */
     static final double CONTACT = 0.01;
+    /** Slower than this over the ground counts as stopped. */
+    static final double STOPPED = 0.05;
 
     private final double ground;
     private final Performance performance;
@@ -23,6 +27,9 @@ final class Craft {
     private Position position;
     private double speed;
     private double heading;
+    // horizontal velocity, m/s north and east
+    private double north;
+    private double east;
     private boolean contact = true;
     private boolean onGround = true;
 
@@ -67,7 +74,13 @@ final class Craft {
     void settle() {
         if (contact) {
             onGround = true;
+            stop();
         }
+    }
+
+    /** Not moving over the ground (always, for a craft without an acceleration limit). */
+    boolean stopped() {
+        return Math.hypot(north, east) < STOPPED;
     }
 
     double speed() {
@@ -94,36 +107,46 @@ final class Craft {
         return position.horizontalDistanceTo(p);
     }
 
-    /**
-     * Moves towards {@code t}: horizontally at its speed, vertically at the climb or sink rate. The
-     * height to change is the difference of heights, not the local "down" towards {@code t}, which over
-     * a kilometre includes the Earth's curvature (8 cm) and would bring a long leg at one height down
-     * to the ground.
-     */
+    /** Towards {@code t} to stop over it; see {@link #fly(Position, double, double, double)}. */
     void fly(Position t, double dt) {
+        fly(t, 0, 0, dt);
+    }
+
+    /**
+     * Moves towards {@code t}, horizontally to come within {@code within} metres of it at
+     * {@code endSpeed} (0: to stop on it), vertically at the climb or sink rate. The height to change
+     * is the difference of heights, not the local "down" towards {@code t}, which over a kilometre
+     * includes the Earth's curvature (8 cm) and would bring a long leg at one height down to the ground.
+     */
+    void fly(Position t, double endSpeed, double within, double dt) {
         double[] ned = position.displacementTo(t);
-        double h = Math.hypot(ned[0], ned[1]);
-        double f = h <= 0 ? 0 : Math.min(1, speed * dt / h);
-        turnTowards(ned);
+        double[] step = horizontal(ned[0], ned[1], endSpeed, endSpeed > 0 ? within : 0, false, dt);
         double dz = Math.max(-performance.sink() * dt, Math.min(performance.climb() * dt, t.hae() - position.hae()));
-        Position p = position.displace(ned[0] * f, ned[1] * f, 0);
+        Position p = position.displace(step[0], step[1], 0);
         moveTo(p.atHeight(position.hae() + dz), dt);
     }
 
-    /** Along the ground towards {@code t}, whose height does not matter, at its speed. */
+    /** Along the ground to stop at {@code t}, whose height does not matter. */
     void drive(Position t, double dt) {
-        double[] ned = position.displacementTo(t);
-        double h = Math.hypot(ned[0], ned[1]);
-        double f = h <= 0 ? 0 : Math.min(1, speed * dt / h);
-        turnTowards(ned);
-        Position p = position.displace(ned[0] * f, ned[1] * f, 0);
-        position = p.atHeight(ground);
+        drive(t, 0, 0, dt);
     }
 
-    /** Straight up (or down) towards {@code hae} at the climb or sink rate. */
+    /**
+     * Along the ground towards {@code t}, whose height does not matter, to come within {@code within}
+     * metres of it at {@code endSpeed}: steered, it heads for the point at once and only its speed is
+     * held to its acceleration.
+     */
+    void drive(Position t, double endSpeed, double within, double dt) {
+        double[] ned = position.displacementTo(t);
+        double[] step = horizontal(ned[0], ned[1], endSpeed, endSpeed > 0 ? within : 0, true, dt);
+        position = position.displace(step[0], step[1], 0).atHeight(ground);
+    }
+
+    /** Straight up (or down) towards {@code hae} at the climb or sink rate, braking to a stop over the ground. */
     void climbTo(double hae, double dt) {
-        double up = hae - position.hae();
-        moveTo(position.displace(0, 0, -Math.max(-performance.sink() * dt, Math.min(performance.climb() * dt, up))), dt);
+        double up = Math.max(-performance.sink() * dt, Math.min(performance.climb() * dt, hae - position.hae()));
+        double[] step = brake(dt);
+        moveTo(position.displace(step[0], step[1], 0).atHeight(position.hae() + up), dt);
     }
 
     /** Ahead along its heading at its speed, climbing towards {@code hae}: a plane's take-off run. */
@@ -133,9 +156,10 @@ final class Craft {
         moveTo(position.displace(d * Math.cos(heading), d * Math.sin(heading), -up), dt);
     }
 
-    /** Straight down at {@code rate} m/s, to the ground at most. */
+    /** Straight down at {@code rate} m/s, to the ground at most, braking to a stop over the ground. */
     void descend(double rate, double dt) {
-        moveTo(position.displace(0, 0, rate * dt), dt);
+        double[] step = brake(dt);
+        moveTo(position.displace(step[0], step[1], 0).atHeight(position.hae() - rate * dt), dt);
     }
 
     /**
@@ -156,12 +180,72 @@ final class Craft {
         double rate = dt > 0 ? (position.hae() - p.hae()) / dt : 0;
         position = p.atHeight(ground);
         contact = true;
+        stop();
         report.accept(String.format(Locale.ROOT, "SIM Hit ground at %f m/s", rate));
     }
 
-    private void turnTowards(double[] ned) {
-        if (Math.hypot(ned[0], ned[1]) > 0.01) {
-            heading = Math.atan2(ned[1], ned[0]);
+    /**
+     * One step of a horizontal move towards a point {@code n}, {@code e} metres away. Without an
+     * acceleration limit it goes at its speed at once. Otherwise it aims for the velocity that takes it
+     * there no faster than it can brake to {@code endSpeed} by {@code within} metres of the point
+     * (v² = end² + 2 a (d - within)), as ArduPilot's waypoint navigation does: a craft that flies
+     * changes its velocity by at most accel * dt (so it overshoots a point it turns back from), a
+     * {@code steered} one heads for the point and changes its speed only by that much. The step onto a
+     * point where it stops ends on it, stopped.
+     */
+    private double[] horizontal(double n, double e, double endSpeed, double within, boolean steered, double dt) {
+        double d = Math.hypot(n, e);
+        double accel = performance.accel();
+        if (accel <= 0) {
+            double f = d <= 0 ? 0 : Math.min(1, speed * dt / d);
+            turnTowards(n, e);
+            return new double[] {n * f, e * f};
+        }
+        double want = d <= 0 ? 0 : Math.min(speed, Math.sqrt(endSpeed * endSpeed + 2 * accel * Math.max(0, d - within)));
+        if (steered) {
+            double now = Math.hypot(north, east);
+            double v = Math.max(now - accel * dt, Math.min(now + accel * dt, want));
+            north = d <= 0 ? 0 : n / d * v;
+            east = d <= 0 ? 0 : e / d * v;
+        } else {
+            double dn = (d <= 0 ? 0 : n / d * want) - north;
+            double de = (d <= 0 ? 0 : e / d * want) - east;
+            double change = Math.hypot(dn, de);
+            if (change > accel * dt) {
+                dn *= accel * dt / change;
+                de *= accel * dt / change;
+            }
+            north += dn;
+            east += de;
+        }
+        if (endSpeed <= 0 && Math.hypot(north, east) * dt >= d) {
+            stop();
+            return new double[] {n, e};
+        }
+        turnTowards(north, east);
+        return new double[] {north * dt, east * dt};
+    }
+
+    /** One step of slowing to a stop at its acceleration limit, for a move that is not over the ground. */
+    private double[] brake(double dt) {
+        double v = Math.hypot(north, east);
+        if (v <= 0) {
+            return new double[] {0, 0};
+        }
+        double f = Math.max(0, v - performance.accel() * dt) / v;
+        north *= f;
+        east *= f;
+        return new double[] {north * dt, east * dt};
+    }
+
+    private void stop() {
+        north = 0;
+        east = 0;
+    }
+
+    private void turnTowards(double n, double e) {
+        if (Math.hypot(n, e) > 0.01) {
+            heading = Math.atan2(e, n);
         }
     }
 }

@@ -49,14 +49,27 @@ interface Firmware {
     /** Armed on the ground, it enters AUTO only when the first nav item is a take-off. */
     boolean autoNeedsTakeoff();
 
-    /** Disarmed in the middle of a mission in AUTO, it starts the mission again from the top. */
-    boolean restartsMissionOnDisarm();
+    /**
+     * Whether disarming resets its mission to the first item (AP_Mission::reset: no current item,
+     * the DO_JUMP counts at zero, the mission's state kept), given whether it is in AUTO.
+     */
+    boolean resetsMissionOnDisarm(boolean inAuto);
 
     /** How close a NAV_WAYPOINT counts as reached. */
     double acceptanceRadius(MissionItem waypoint);
 
-    /** Moves the craft towards {@code target} for {@code dt} seconds; true once within {@code radius}. */
-    boolean reach(Craft craft, Position target, double radius, double dt);
+    /**
+     * Moves the craft towards {@code target} for {@code dt} seconds, to come within {@code radius} of
+     * it at {@code endSpeed} (0: to stop on it); true once within {@code radius}, and stopped if it is
+     * to stop there.
+     */
+    boolean reach(Craft craft, Position target, double radius, double endSpeed, double dt);
+
+    /**
+     * Whether it flies on past a NAV_WAYPOINT that has no hold time towards {@code next}, the nav
+     * item after it, instead of stopping on the waypoint.
+     */
+    boolean passesOn(MissionItem next);
 
     Manoeuvre takeoff(Craft craft, double altitude);
 

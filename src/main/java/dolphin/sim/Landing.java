@@ -5,9 +5,9 @@ import dolphin.core.Position;
 
 /**
  * ArduCopter's landing (NAV_LAND, LAND mode, the end of RTL; a plane's is simplified to the same):
- * over the landing point at its height, then straight down at the sink rate above LAND_ALT_LOW and
- * LAND_SPEED below it, to the ground. It is over when the land detector has seen the craft on the
- * ground for {@link #DETECT} seconds (SITL disarms about 2 s after it touches down).
+ * over the landing point at its height, stopped, then straight down at the sink rate above
+ * LAND_ALT_LOW and LAND_SPEED below it, to the ground. It is over when the land detector has seen
+ * the craft on the ground for {@link #DETECT} seconds (SITL disarms about 2 s after it touches down).
  */
 final class Landing implements Manoeuvre {
 
@@ -32,7 +32,7 @@ final class Landing implements Manoeuvre {
         if (!above) {
             Position target = over.atHeight(craft.position().hae());
             craft.fly(target, dt);
-            above = craft.distanceTo(target) <= craft.performance().precisionRadius();
+            above = craft.distanceTo(target) <= craft.performance().precisionRadius() && craft.stopped();
             return false;
         }
         if (!craft.contact()) {

@@ -9,9 +9,6 @@ import com.MAVLink.enums.MAV_LANDED_STATE;
 @FunctionalInterface
 interface Manoeuvre {
 
-    /** Never ends: the vehicle stays where it is (a copter hovers, a rover stands). */
-    Manoeuvre STAY = dt -> false;
-
     /** Ends at once: what a vehicle cannot do, e.g. a rover's take-off. */
     Manoeuvre DONE = dt -> true;
 

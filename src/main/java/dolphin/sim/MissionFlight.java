@@ -4,14 +4,13 @@ import com.MAVLink.Messages.MAVLinkMessage;
 import com.MAVLink.common.msg_mission_current;
 import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_LANDED_STATE;
+import com.MAVLink.enums.MAV_RESULT;
 import com.MAVLink.enums.MAV_SEVERITY;
 import com.MAVLink.enums.MISSION_STATE;
 import dolphin.core.Position;
 import dolphin.mission.model.MissionItem;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
 import java.util.function.Supplier;
 
@@ -20,8 +19,9 @@ import java.util.function.Supplier;
  * clock time, by AP_Mission's rules: each item started says so ("Mission: 3 WP"); a nav item runs
  * until it completes; the DO items after it run when it does, in the same loop, so their
  * MISSION_ITEM_REACHED coalesces with its; CONDITION_DELAY runs beside the next nav item; DO_JUMP
- * loops. How the vehicle takes off, reaches a point, holds, lands, returns and ends the mission, and
- * whether it waits for MISSION_START or starts over when disarmed, is its {@link Firmware}'s.
+ * loops. Where the mission stands and whether it runs is its {@link MissionCursor}. How the vehicle
+ * takes off, reaches a point, holds, lands, returns and ends the mission, and whether it waits for
+ * MISSION_START or resets its mission when disarmed, is its {@link Firmware}'s.
  */
 final class MissionFlight {
 
@@ -74,35 +74,32 @@ final class MissionFlight {
     private final Firmware firmware;
     private final MissionStore store;
     private final Body body;
-    /** The next item to run. */
-    private int current = 1;
-    /** The nav item MISSION_CURRENT names: the one started last, 0 before any. */
-    private int navIndex;
-    private boolean started;
-    private boolean complete;
+    private final MissionCursor cursor;
     private boolean autoArmed;
     private boolean restartDue;
     private double groundSeconds;
     private int cameraCommands;
-    // the nav item under way
-    private int active = -1;
+    // the nav item under way: AP_Mission runs its own copy of it, whatever an upload writes meanwhile
+    private MissionItem active;
     private Phase phase;
     private double timer;
     private Manoeuvre manoeuvre;
+    private double exitSpeed;
     // RTL and LAND modes
     private Manoeuvre modeManoeuvre;
     // a CONDITION_DELAY running beside the nav item
     private int conditionSeq = -1;
     private double conditionLeft;
-    /** Jumps made by each DO_JUMP (by seq) since the mission started. */
-    private final Map<Integer, Integer> jumpsRun = new HashMap<>();
-    /** The last MISSION_CURRENT announced (seq/total/state); a change is sent at once, as ArduPilot does. */
+    /** The last MISSION_CURRENT sent (seq/total/state): a change goes out at the end of the tick. */
     private String lastCurrent = "0/0/" + MISSION_STATE.MISSION_STATE_NO_MISSION;
+    /** MISSION_CURRENT asked for (MSG_CURRENT_WAYPOINT), sent at the end of the tick even if unchanged. */
+    private boolean currentDue;
 
     MissionFlight(Firmware firmware, MissionStore store, Body body) {
         this.firmware = firmware;
         this.store = store;
         this.body = body;
+        this.cursor = new MissionCursor(store);
     }
 
     int cameraCommands() {
@@ -111,34 +108,38 @@ final class MissionFlight {
 
     /** The nav item MISSION_CURRENT reports. */
     int current() {
-        return navIndex;
+        return cursor.nav();
     }
 
-    /** MISSION_STATE of the stored mission. */
+    /**
+     * MISSION_STATE of the stored mission as GCS_MAVLINK::mission_state gives AP_Mission's state:
+     * NO_MISSION, or NOT_STARTED (stopped), ACTIVE (running) or COMPLETE; never PAUSED.
+     */
     int state() {
         if (store.count() <= 1) {
             return MISSION_STATE.MISSION_STATE_NO_MISSION;
         }
-        if (complete) {
-            return MISSION_STATE.MISSION_STATE_COMPLETE;
-        }
-        if (!started) {
-            return MISSION_STATE.MISSION_STATE_NOT_STARTED;
-        }
-        return body.mode() == firmware.autoMode() ? MISSION_STATE.MISSION_STATE_ACTIVE : MISSION_STATE.MISSION_STATE_PAUSED;
+        return switch (cursor.run()) {
+            case COMPLETE -> MISSION_STATE.MISSION_STATE_COMPLETE;
+            case STOPPED -> MISSION_STATE.MISSION_STATE_NOT_STARTED;
+            case RUNNING -> MISSION_STATE.MISSION_STATE_ACTIVE;
+        };
     }
 
-    /** Armed and running a mission in AUTO: ArduPilot then refuses MISSION_CLEAR_ALL. */
+    /** Armed with its mission running: ArduPilot then refuses MISSION_CLEAR_ALL (AP_Mission::clear). */
     boolean flyingMission() {
-        return body.armed() && body.mode() == firmware.autoMode() && started && !complete;
+        return body.armed() && cursor.running();
     }
 
-    /** ModeAuto::init: armed and landed, a copter enters AUTO only for a mission that starts with a take-off. */
+    /**
+     * ModeAuto::init: armed and landed, a copter enters AUTO only when the mission, from its current
+     * nav item (the first when it has none), goes on with a take-off.
+     */
     boolean autoAllowed() {
         if (!firmware.autoNeedsTakeoff() || !body.armed() || !body.craft().onGround()) {
             return true;
         }
-        for (int i = 1; i < store.count(); i++) {
+        for (int i = Math.max(1, cursor.nav()); i < store.count(); i++) {
             MissionItem item = store.get(i);
             if (nav(item.command())) {
                 return item.command() == MAV_CMD.MAV_CMD_NAV_TAKEOFF;
@@ -149,83 +150,143 @@ final class MissionFlight {
 
     /** EXTENDED_SYS_STATE's view of the manoeuvre under way: TAKEOFF, LANDING or IN_AIR. */
     int manoeuvreState() {
-        Manoeuvre m = body.mode() == firmware.autoMode() ? (active >= 0 ? manoeuvre : null) : modeManoeuvre;
+        Manoeuvre m = body.mode() == firmware.autoMode() ? (active != null ? manoeuvre : null) : modeManoeuvre;
         return m == null || !body.armed() ? MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR : m.landedState();
     }
 
-    /** Called after every mode change. */
+    /** Called after every mode change: leaving AUTO stops the mission, entering it resumes it (AP_Mission::resume). */
     void modeChanged(int from, int to) {
         if (to == from) {
             return;
         }
         modeManoeuvre = null;
-        active = -1;
-        manoeuvre = null;
+        dropActive();
         groundSeconds = 0;
+        if (from == firmware.autoMode()) {
+            cursor.stop();
+        }
         if (to == firmware.autoMode()) {
-            if (complete || current >= store.count()) {
-                restart();
-            }
+            cursor.resume();
             body.craft().resetSpeed();
         }
     }
 
-    /** MAV_CMD_MISSION_START: the copter's auto_armed; the mission (re)starts if it had ended. */
+    /** MAV_CMD_MISSION_START: the copter's auto_armed; a mission not running starts or resumes. */
     void missionStart() {
-        if (complete) {
-            restart();
+        if (!cursor.running()) {
+            cursor.resume();
+            dropActive();
         }
         if (body.armed()) {
             autoArmed = true;
         }
     }
 
-    /** MISSION_SET_CURRENT, MAV_CMD_DO_SET_MISSION_CURRENT: false if there is no such item. */
-    boolean setCurrent(int seq) {
-        if (seq < 1 || seq >= store.count()) {
+    /**
+     * MAV_CMD_DO_SET_MISSION_CURRENT (GCS_MAVLINK::handle_command_do_set_mission_current): DENIED for
+     * a seq not stored, FAILED when no nav item follows it. With {@code reset} (param2 = 1) the mission
+     * is reset, set to the item and resumed, so it runs (MISSION_CURRENT ACTIVE on its nav item) even
+     * outside AUTO; without, a mission not running stays NOT_STARTED at that item. MISSION_CURRENT
+     * follows at the end of the tick.
+     */
+    int setCurrentCommand(int seq, boolean reset) {
+        if (seq < 0 || seq >= store.count()) {
+            return MAV_RESULT.MAV_RESULT_DENIED;
+        }
+        if (reset) {
+            cursor.reset();
+        }
+        if (!setCurrentCmd(seq)) {
+            return MAV_RESULT.MAV_RESULT_FAILED;
+        }
+        if (reset) {
+            cursor.resume();
+        }
+        sayStarted();
+        currentDue = true;
+        return MAV_RESULT.MAV_RESULT_ACCEPTED;
+    }
+
+    /** MISSION_SET_CURRENT (GCS_MAVLINK::handle_mission_set_current): MISSION_CURRENT at once, with the seq asked for. */
+    void setCurrentMessage(int seq) {
+        if (setCurrentCmd(seq)) {
+            sayStarted();
+            body.send(missionCurrent(seq));
+        }
+    }
+
+    /** AP_Mission::set_current_cmd, for a seq stored; a running mission with no nav item after it completes. */
+    private boolean setCurrentCmd(int seq) {
+        if (seq < 0 || seq >= store.count() || store.count() <= 1) {
             return false;
         }
-        current = seq;
-        navIndex = seq;
-        complete = false;
-        active = -1;
-        manoeuvre = null;
-        announceCurrent(true);
-        return true;
+        boolean running = cursor.running();
+        dropActive();
+        if (cursor.setCurrent(seq)) {
+            return true;
+        }
+        if (running) {
+            finish();
+        }
+        return false;
     }
 
-    /** The stored mission changed: outside a running mission, start again from the first item. */
-    void missionChanged() {
-        if (!flyingMission()) {
-            restart();
+    /**
+     * Outside AUTO a running mission's items are started where it was set (AP_Mission starts them
+     * whatever the mode) and said so; they run when AUTO resumes them.
+     */
+    private void sayStarted() {
+        if (!cursor.running() || body.mode() == firmware.autoMode()) {
+            return;
+        }
+        for (int i = Math.min(cursor.next(), cursor.nav()); i <= cursor.nav(); i++) {
+            if (store.get(i).command() != MAV_CMD.MAV_CMD_DO_JUMP) {
+                announceStart(store.get(i));
+            }
         }
     }
 
-    /** From the first item again, with every DO_JUMP's count at zero (AP_Mission::start). */
-    private void restart() {
-        current = 1;
-        navIndex = 0;
-        started = false;
-        complete = false;
-        active = -1;
-        manoeuvre = null;
-        jumpsRun.clear();
+    /**
+     * The stored mission changed: an upload leaves the mission where it was, running or not (a copter
+     * flying it goes on with the nav item under way); a cleared mission has no place.
+     */
+    void missionChanged() {
+        if (store.count() <= 1) {
+            cursor.cleared();
+            dropActive();
+        }
     }
 
+    private void dropActive() {
+        active = null;
+        manoeuvre = null;
+    }
+
+    /**
+     * Disarmed: what the firmware resets (AP_Arming_*::disarm). A copter's mission that runs in AUTO
+     * starts over at once (restartAfterDisarm).
+     */
     void disarmed() {
         autoArmed = false;
         groundSeconds = 0;
-        if (firmware.restartsMissionOnDisarm() && body.mode() == firmware.autoMode() && started && !complete) {
+        boolean inAuto = body.mode() == firmware.autoMode();
+        if (!firmware.resetsMissionOnDisarm(inAuto)) {
+            return;
+        }
+        if (inAuto && cursor.running()) {
             restartDue = true;
+        } else {
+            cursor.reset();
+            dropActive();
         }
     }
 
     void tick(double dt) {
-        if (body.armed()) {
-            int mode = body.mode();
-            if (mode == firmware.autoMode()) {
-                auto(dt);
-            } else if (mode == firmware.rtlMode()) {
+        int mode = body.mode();
+        if (mode == firmware.autoMode()) {
+            auto(dt);
+        } else if (body.armed()) {
+            if (mode == firmware.rtlMode()) {
                 modeStep(dt, () -> firmware.returnHome(body.craft(), body.home(), false));
             } else if (firmware.landMode().isPresent() && mode == firmware.landMode().getAsInt()) {
                 modeStep(dt, () -> firmware.landing(body.craft(), null));
@@ -237,16 +298,23 @@ final class MissionFlight {
             restartAfterDisarm();
         }
         body.flush();
-        announceCurrent(false);
+        announceCurrent(currentDue);
+        currentDue = false;
     }
 
-    /** MISSION_CURRENT: seq is the nav item started last (kept once complete); total excludes home. */
+    /**
+     * MISSION_CURRENT (GCS_MAVLINK::send_mission_current): seq is the current nav item, kept once
+     * complete and kept by an upload, even past the new mission's end; total excludes home.
+     */
     MAVLinkMessage missionCurrent() {
+        return missionCurrent(state() == MISSION_STATE.MISSION_STATE_NO_MISSION ? 0 : cursor.nav());
+    }
+
+    private MAVLinkMessage missionCurrent(int seq) {
         msg_mission_current c = new msg_mission_current();
-        int state = state();
-        c.seq = state == MISSION_STATE.MISSION_STATE_NO_MISSION ? 0 : Math.min(navIndex, store.count() - 1);
+        c.seq = seq;
         c.total = Math.max(0, store.count() - 1);
-        c.mission_state = (short) state;
+        c.mission_state = (short) state();
         c.mission_mode = (short) (body.mode() == firmware.autoMode() ? 1 : 0);
         return c;
     }
@@ -270,30 +338,38 @@ final class MissionFlight {
         }
     }
 
+    /**
+     * One tick of AUTO. Disarmed, or a copter armed on the ground without MISSION_START, it does not
+     * move, but its mission runs: the DO items before the nav item run and the nav item starts. Such
+     * a copter disarms itself after DISARM_DELAY.
+     */
     private void auto(double dt) {
-        if (firmware.waitsForMissionStart() && !autoArmed) {
+        if (!cursor.running() || store.count() <= 1) {
+            return; // stopped or complete: it stays where the mission left it
+        }
+        boolean waiting = !body.armed();
+        if (!waiting && firmware.waitsForMissionStart() && !autoArmed) {
             if (!body.craft().onGround()) {
                 autoArmed = true;
             } else {
                 groundSeconds += dt;
                 if (groundSeconds >= DISARM_DELAY) {
                     body.disarm();
+                    return;
                 }
-                return;
+                waiting = true;
             }
         }
-        groundSeconds = 0;
-        if (complete || store.count() <= 1) {
-            return; // it stays where the mission left it
+        if (!waiting) {
+            groundSeconds = 0;
         }
-        started = true;
         conditionStep(dt);
         for (int guard = 0; guard < store.count() + 1; guard++) {
-            if (current >= store.count()) {
+            MissionItem item = item();
+            if (item == null) {
                 finish();
                 return;
             }
-            MissionItem item = store.get(current);
             if (item.command() == MAV_CMD.MAV_CMD_DO_JUMP) {
                 if (!jump(item)) {
                     finish();
@@ -305,30 +381,29 @@ final class MissionFlight {
                 if (startDo(item)) {
                     body.reached(item.seq());
                 }
-                current++;
+                cursor.next(item.seq() + 1);
                 continue;
             }
-            if (active != current) {
+            if (active == null) {
                 begin(item);
             }
-            if (!step(item, dt)) {
+            if (waiting || !step(item, dt)) {
                 return;
             }
-            body.reached(current);
-            current++;
-            active = -1;
-            manoeuvre = null;
+            body.reached(item.seq());
+            cursor.next(item.seq() + 1);
+            dropActive();
             dt = 0;
             if (!body.armed()) {
                 // landed and disarmed by the item: the mission goes on only through its DO items
-                while (current < store.count() && !nav(store.get(current).command())
-                        && store.get(current).command() != MAV_CMD.MAV_CMD_DO_JUMP) {
-                    if (startDo(store.get(current))) {
-                        body.reached(current);
+                while (cursor.next() < store.count() && !nav(store.get(cursor.next()).command())
+                        && store.get(cursor.next()).command() != MAV_CMD.MAV_CMD_DO_JUMP) {
+                    if (startDo(store.get(cursor.next()))) {
+                        body.reached(cursor.next());
                     }
-                    current++;
+                    cursor.next(cursor.next() + 1);
                 }
-                if (current >= store.count()) {
+                if (cursor.next() >= store.count()) {
                     finish();
                 }
                 return;
@@ -336,10 +411,18 @@ final class MissionFlight {
         }
     }
 
+    /** The item to run now: the nav item under way as it was started, else the next stored one; null past the end. */
+    private MissionItem item() {
+        if (active != null && active.seq() == cursor.next()) {
+            return active;
+        }
+        active = null;
+        return cursor.next() < store.count() ? store.get(cursor.next()) : null;
+    }
+
     private void finish() {
-        complete = true;
-        active = -1;
-        manoeuvre = null;
+        cursor.complete();
+        dropActive();
         firmware.missionComplete(body);
     }
 
@@ -350,21 +433,20 @@ final class MissionFlight {
      * disarmed. That item runs when the copter is armed and started again.
      */
     private void restartAfterDisarm() {
-        restart();
-        started = true;
+        cursor.start();
+        dropActive();
         List<Integer> toReport = new ArrayList<>();
-        while (current < store.count() && !nav(store.get(current).command())
-                && store.get(current).command() != MAV_CMD.MAV_CMD_DO_JUMP) {
-            if (startDo(store.get(current))) {
-                toReport.add(current);
+        while (cursor.next() < store.count() && !nav(store.get(cursor.next()).command())
+                && store.get(cursor.next()).command() != MAV_CMD.MAV_CMD_DO_JUMP) {
+            if (startDo(store.get(cursor.next()))) {
+                toReport.add(cursor.next());
             }
-            current++;
+            cursor.next(cursor.next() + 1);
         }
         body.flush();
         toReport.forEach(body::reached);
-        if (current < store.count() && nav(store.get(current).command())) {
-            navIndex = current;
-            announceStart(store.get(current));
+        if (cursor.next() < store.count() && nav(store.get(cursor.next()).command())) {
+            begin(store.get(cursor.next()));
         }
     }
 
@@ -380,17 +462,17 @@ final class MissionFlight {
             return false;
         }
         int times = (int) item.param2();
-        int run = jumpsRun.getOrDefault(item.seq(), 0);
+        int run = cursor.jumps(item.seq());
         if (times == FOREVER) {
-            current = target;
+            cursor.next(target);
         } else if (run < times) {
-            jumpsRun.put(item.seq(), run + 1);
+            cursor.jumped(item.seq());
             if (run > 0) {
                 body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Mission: " + item.seq() + " Jump " + (run + 1) + "/" + times);
             }
-            current = target;
+            cursor.next(target);
         } else {
-            current++;
+            cursor.next(item.seq() + 1);
         }
         return true;
     }
@@ -426,8 +508,9 @@ final class MissionFlight {
     }
 
     private void begin(MissionItem item) {
-        active = current;
-        navIndex = current;
+        active = item;
+        cursor.nav(item.seq());
+        exitSpeed = exitSpeed(item);
         phase = Phase.APPROACH;
         timer = 0;
         modeManoeuvre = null;
@@ -470,7 +553,7 @@ final class MissionFlight {
         if (phase == Phase.APPROACH) {
             double radius = item.command() == MAV_CMD.MAV_CMD_NAV_WAYPOINT ? firmware.acceptanceRadius(item)
                     : firmware.performance().waypointRadius();
-            if (!firmware.reach(body.craft(), t, radius, dt)) {
+            if (!firmware.reach(body.craft(), t, radius, exitSpeed, dt)) {
                 return false;
             }
             if (plainWaypoint) {
@@ -496,7 +579,7 @@ final class MissionFlight {
         double r = Math.abs(item.param3()) > 0 ? Math.abs(item.param3()) : performance.loiterRadius();
         Position centre = target(item);
         if (phase == Phase.APPROACH) {
-            if (!firmware.reach(body.craft(), Orbit.entry(centre, r), performance.precisionRadius(), dt)) {
+            if (!firmware.reach(body.craft(), Orbit.entry(centre, r), performance.precisionRadius(), 0, dt)) {
                 return false;
             }
             phase = Phase.HOLD;
@@ -522,10 +605,35 @@ final class MissionFlight {
 
     /** The item's position; lat = lon = 0 means here; z relative to home unless the frame is global. */
     private Position target(MissionItem item) {
-        Position p = body.craft().position();
-        double lat = item.x() == 0 && item.y() == 0 ? p.latitudeDegrees() : item.x() * 1e-7;
-        double lon = item.x() == 0 && item.y() == 0 ? p.longitudeDegrees() : item.y() * 1e-7;
+        return target(item, body.craft().position());
+    }
+
+    /** The item's position, {@code here}'s when its lat = lon = 0. */
+    private Position target(MissionItem item, Position here) {
+        double lat = item.x() == 0 && item.y() == 0 ? here.latitudeDegrees() : item.x() * 1e-7;
+        double lon = item.x() == 0 && item.y() == 0 ? here.longitudeDegrees() : item.y() * 1e-7;
         return Position.fromDegrees(lat, lon, altitude(item));
+    }
+
+    /**
+     * The speed at which it leaves a waypoint: 0, stopping on it, when the waypoint holds (p1 > 0),
+     * no nav item follows or its firmware stops before that one; else slowed for the turn to the next.
+     */
+    private double exitSpeed(MissionItem item) {
+        boolean waypoint = item.command() == MAV_CMD.MAV_CMD_NAV_WAYPOINT || item.command() == MAV_CMD.MAV_CMD_NAV_SPLINE_WAYPOINT;
+        int after = waypoint && item.param1() <= 0 ? cursor.navFrom(item.seq() + 1) : -1;
+        MissionItem next = after < 0 ? null : store.get(after);
+        if (next == null || !firmware.passesOn(next)) {
+            return 0;
+        }
+        Position here = body.craft().position();
+        Position at = target(item);
+        double[] in = here.displacementTo(at);
+        double[] out = at.displacementTo(target(next, at));
+        double turn = Math.hypot(in[0], in[1]) < 1 || Math.hypot(out[0], out[1]) < 1 ? Math.PI
+                : Math.atan2(out[1], out[0]) - Math.atan2(in[1], in[0]);
+        turn = Math.abs(Math.IEEEremainder(turn, 2 * Math.PI));
+        return firmware.performance().passingSpeed(body.craft().speed(), turn);
     }
 
     private double altitude(MissionItem item) {

@@ -3,9 +3,10 @@ package dolphin.sim;
 import dolphin.core.Position;
 
 /**
- * Circles a point at its radius, at the craft's speed, for a number of turns (infinite: for ever),
- * from the point of the circle nearest the craft (its north point when the craft is at the centre):
- * the craft follows a point going round, moving as its firmware moves it.
+ * Circles a point at its radius, at the craft's speed or, for a craft with an acceleration limit,
+ * no faster than that acceleration holds it on the circle (v² = a r), for a number of turns
+ * (infinite: for ever), from the point of the circle nearest the craft (its north point when the
+ * craft is at the centre): the craft follows a point going round, moving as its firmware moves it.
  */
 final class Orbit implements Manoeuvre {
 
@@ -34,10 +35,12 @@ final class Orbit implements Manoeuvre {
 
     @Override
     public boolean step(double dt) {
-        angle += craft.speed() / radius * dt;
+        double accel = craft.performance().accel();
+        double speed = accel > 0 ? Math.min(craft.speed(), Math.sqrt(accel * radius)) : craft.speed();
+        angle += speed / radius * dt;
         double done = 2 * Math.PI * Math.max(0, turns);
         double a = start + Math.min(angle, done);
-        firmware.reach(craft, centre.displace(radius * Math.cos(a), radius * Math.sin(a), 0), 0, dt);
+        firmware.reach(craft, centre.displace(radius * Math.cos(a), radius * Math.sin(a), 0), 0, speed, dt);
         return angle >= done;
     }
 }

@@ -13,7 +13,8 @@ import java.util.Optional;
 import java.util.OptionalInt;
 
 /**
- * ArduPlane as SITL runs it with plane.parm: 20 m/s cruise, climbing at 5 m/s and sinking at 3,
+ * ArduPlane as SITL runs it with plane.parm: 20 m/s cruise (at once: its acceleration is not
+ * simulated), climbing at 5 m/s and sinking at 3,
  * WP_RADIUS 55 m (or the item's param2), WP_LOITER_RAD 60 m; it arms in any mode and flies a
  * mission as soon as it is armed in AUTO; it holds by circling; at the end of its mission it
  * switches itself to RTL and circles home. Streams at 1 Hz from boot. Its landing is the copter's,
@@ -21,7 +22,7 @@ import java.util.OptionalInt;
  */
 final class PlaneFirmware implements Firmware {
 
-    private static final Performance PERFORMANCE = new Performance(20, 5, 3, 55, 60);
+    private static final Performance PERFORMANCE = new Performance(20, 5, 3, 55, 60, 0, 20);
 
     @Override
     public int mavType() {
@@ -88,9 +89,16 @@ final class PlaneFirmware implements Firmware {
         return false;
     }
 
+    /** AP_Arming_Plane::disarm resets the mission unless in AUTO. */
     @Override
-    public boolean restartsMissionOnDisarm() {
-        return false;
+    public boolean resetsMissionOnDisarm(boolean inAuto) {
+        return !inAuto;
+    }
+
+    /** A plane never stops: it flies on past every waypoint. */
+    @Override
+    public boolean passesOn(MissionItem next) {
+        return true;
     }
 
     @Override
@@ -100,14 +108,14 @@ final class PlaneFirmware implements Firmware {
 
     /** Within the radius horizontally; the height is only flown towards. */
     @Override
-    public boolean reach(Craft craft, Position target, double radius, double dt) {
-        craft.fly(target, dt);
+    public boolean reach(Craft craft, Position target, double radius, double endSpeed, double dt) {
+        craft.fly(target, endSpeed, radius, dt);
         return craft.distanceTo(target) <= radius;
     }
 
     @Override
     public Manoeuvre takeoff(Craft craft, double altitude) {
-        return new Takeoff(craft, altitude, craft::climbAhead);
+        return new Takeoff(craft, altitude, craft::climbAhead, 0);
     }
 
     @Override

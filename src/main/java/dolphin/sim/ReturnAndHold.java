@@ -25,7 +25,7 @@ final class ReturnAndHold implements Manoeuvre {
     public boolean step(double dt) {
         if (hold == null) {
             Position over = home.atHeight(craft.position().hae());
-            if (!firmware.reach(craft, over, craft.performance().waypointRadius(), dt)) {
+            if (!firmware.reach(craft, over, craft.performance().waypointRadius(), 0, dt)) {
                 return false;
             }
             hold = firmware.holdAt(craft, over);

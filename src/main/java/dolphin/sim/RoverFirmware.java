@@ -12,15 +12,17 @@ import java.util.Optional;
 import java.util.OptionalInt;
 
 /**
- * ArduRover with its defaults: it drives on the ground at WP_SPEED 2 m/s, heights ignored, a
- * waypoint reached within WP_RADIUS 2 m (the item's param2 does not count); it arms in any mode and drives a
+ * ArduRover as SITL runs it with rover.parm: it drives on the ground at WP_SPEED 5 m/s, gathering
+ * speed and braking at ATC_ACCEL_MAX 1 m/s² (ArduRover's default), heights ignored, a waypoint
+ * reached within WP_RADIUS 3 m (the item's param2 does not count) and driven past towards the next
+ * nav item, the last one stopped on; it arms in any mode and drives a
  * mission as soon as it is armed in AUTO; a take-off is done at once and a landing is a waypoint;
  * at the end of a mission it stops and stays in AUTO (MIS_DONE_BEHAVE 0, hold). Like a copter, no
  * streams until asked. It does not report a landed state (ArduRover has none: UNDEFINED).
  */
 final class RoverFirmware implements Firmware {
 
-    private static final Performance PERFORMANCE = new Performance(2, 0, 0, 2, 2);
+    private static final Performance PERFORMANCE = new Performance(5, 0, 0, 3, 2, 1, 2.5);
 
     @Override
     public int mavType() {
@@ -87,9 +89,16 @@ final class RoverFirmware implements Firmware {
         return false;
     }
 
+    /** AP_Arming_Rover::disarm resets the mission unless in AUTO. */
     @Override
-    public boolean restartsMissionOnDisarm() {
-        return false;
+    public boolean resetsMissionOnDisarm(boolean inAuto) {
+        return !inAuto;
+    }
+
+    /** ModeAuto::do_nav_wp: on to whatever nav item comes next. */
+    @Override
+    public boolean passesOn(MissionItem next) {
+        return true;
     }
 
     /** AR_WPNav takes WP_RADIUS whatever the item's param2 says (a plane's acceptance radius, 50 m in our waypoints). */
@@ -99,9 +108,9 @@ final class RoverFirmware implements Firmware {
     }
 
     @Override
-    public boolean reach(Craft craft, Position target, double radius, double dt) {
-        craft.drive(target, dt);
-        return craft.distanceTo(target) <= radius;
+    public boolean reach(Craft craft, Position target, double radius, double endSpeed, double dt) {
+        craft.drive(target, endSpeed, radius, dt);
+        return craft.distanceTo(target) <= radius && (endSpeed > 0 || craft.stopped());
     }
 
     @Override
@@ -109,15 +118,19 @@ final class RoverFirmware implements Firmware {
         return Manoeuvre.DONE;
     }
 
+    /** Stands at the point, braking to it if it came in moving. */
     @Override
     public Manoeuvre holdAt(Craft craft, Position at) {
-        return Manoeuvre.STAY;
+        return dt -> {
+            craft.drive(at, dt);
+            return false;
+        };
     }
 
     /** A landing point is driven to like a waypoint; LAND without a position is done where it is. */
     @Override
     public Manoeuvre landing(Craft craft, Position over) {
-        return over == null ? Manoeuvre.DONE : dt -> reach(craft, over, PERFORMANCE.waypointRadius(), dt);
+        return over == null ? Manoeuvre.DONE : dt -> reach(craft, over, PERFORMANCE.waypointRadius(), 0, dt);
     }
 
     @Override

@@ -3,7 +3,8 @@ package dolphin.sim;
 /**
  * Behaviour knobs of simulated vehicles.
  *
- * @param warmupSeconds arming is refused ("PreArm: ...") until this long after boot (ArduCopter SITL: about 42 s)
+ * @param warmupSeconds the vehicle has no position estimate, so refuses a home and arming ("PreArm: ..."), until
+ *        this long after boot (ArduCopter SITL: 41 s, when its EKF starts to use GPS; docs/mavlink.md)
  * @param drainPercentPerMinute battery use while armed (ArduCopter SITL: about 14 %/min)
  * @param messageIntervalSupported false makes MAV_CMD_SET_MESSAGE_INTERVAL UNSUPPORTED (older firmware)
  * @param refuseModeChanges true makes every mode change fail

@@ -185,7 +185,7 @@ public final class SimVehicle {
         return flight.current();
     }
 
-    /** MISSION_STATE: NO_MISSION, NOT_STARTED, ACTIVE, PAUSED or COMPLETE. */
+    /** MISSION_STATE: NO_MISSION, NOT_STARTED, ACTIVE or COMPLETE (ArduPilot never reports PAUSED). */
     public synchronized int missionState() {
         return flight.state();
     }
@@ -282,7 +282,7 @@ public final class SimVehicle {
         } else if (lists.handle(m, sysid, now)) {
             // a mission, fence or rally transfer
         } else if (m instanceof msg_mission_set_current s && s.target_system == sysid) {
-            flight.setCurrent(s.seq);
+            flight.setCurrentMessage(s.seq);
         }
         if (modeToAnnounce) {
             announceMode();
@@ -324,8 +324,7 @@ public final class SimVehicle {
                 fenceGuard.enable(c.param1 == 1);
                 yield MAV_RESULT.MAV_RESULT_ACCEPTED;
             }
-            case MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT -> flight.setCurrent((int) c.param1) ? MAV_RESULT.MAV_RESULT_ACCEPTED
-                    : MAV_RESULT.MAV_RESULT_FAILED;
+            case MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT -> flight.setCurrentCommand((int) c.param1, c.param2 == 1);
             case MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH -> setModeIfValid(firmware.rtlMode()) ? MAV_RESULT.MAV_RESULT_ACCEPTED
                     : MAV_RESULT.MAV_RESULT_FAILED;
             case MAV_CMD.MAV_CMD_NAV_LAND -> firmware.landMode().isPresent() && setModeIfValid(firmware.landMode().getAsInt())

@@ -181,10 +181,11 @@ class MissionFlightSpec extends Specification {
         long t0 = gcs.clock.nanoTime()
         gcs.waitFor(5, '3 s of clock time') { gcs.clock.nanoTime() - t0 > 3e9 }
 
-        then: 'still on the ground, armed'
+        then: 'still on the ground, armed; its mission already runs (ModeAuto::run starts it on entering AUTO), at the take-off'
         sim.armed()
         Math.abs(sim.position().hae() - HOME.hae()) < 0.01
-        sim.missionState() == MISSION_STATE.MISSION_STATE_NOT_STARTED
+        sim.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE
+        sim.missionCurrent() == 1
 
         and:
         gcs.command(MAV_CMD.MAV_CMD_MISSION_START, [1, 0]).result == MAV_RESULT.MAV_RESULT_DENIED

@@ -9,7 +9,9 @@ import java.nio.file.Path
 /**
  * A recorded session between our ground station and one real ArduPilot SITL vehicle (system 1),
  * on the vehicle's clock: each frame the ground station sent is placed at the vehicle's boot time
- * (time_boot_ms) last seen before it, or, before the vehicle sent any, at the first it sends.
+ * (time_boot_ms) last seen before it, or, before the vehicle sent any, at the first it sends. The
+ * vehicle's heartbeat comes once a second at a phase of its own (SITL's differs from run to run), taken
+ * from the boot time before its first heartbeat that follows one.
  */
 class Recording {
 
@@ -31,6 +33,8 @@ class Recording {
     final List<Sent> groundStation = []
     /** The vehicle's boot time at its last frame. */
     long endNanos
+    /** When in each second of the vehicle's clock its heartbeat comes, in nanoseconds (0 to 1 s). */
+    long heartbeatPhaseNanos
 
     private static final Map<Class, Field> BOOT_TIME = [:]
 
@@ -38,12 +42,16 @@ class Recording {
         def recording = new Recording()
         List<MAVLinkMessage> untimed = []
         Long boot = null
+        Long phase = null
         TlogFile.read(tlog).each { record ->
             MAVLinkMessage m = record.frame.message()
             if (m == null) {
                 return
             }
             if (record.frame.sysid() == VEHICLE) {
+                if (m instanceof msg_heartbeat && boot != null && phase == null) {
+                    phase = Math.floorMod(boot, 1000L) * 1_000_000L
+                }
                 recording.vehicle << m
                 Long t = bootMillis(m)
                 if (t != null) {
@@ -60,6 +68,7 @@ class Recording {
             }
         }
         recording.endNanos = (boot ?: 0L) * 1_000_000L
+        recording.heartbeatPhaseNanos = phase ?: 0L
         recording
     }
 
@@ -70,10 +79,13 @@ class Recording {
 
     /**
      * What a simulated vehicle of {@code kind}, booted when the recorded one was, sends when the
-     * ground station's frames reach it at the recorded times, until the recording ends.
+     * ground station's frames reach it at the recorded times, until the recording ends. The simulator
+     * sends its heartbeat on the second of its boot, so it is booted up to a second earlier, at the
+     * recorded heartbeat's phase: a heartbeat between two of the ground station's commands shows the
+     * vehicle's state only if SITL's did.
      */
     List<MAVLinkMessage> replay(VehicleKind kind, SimOptions options) {
-        def driver = new SimDriver(kind, options)
+        def driver = new SimDriver(kind, options, SimDriver.HOME, heartbeatPhaseNanos - 1_000_000_000L)
         groundStation.each { sent ->
             driver.runTo(sent.bootNanos)
             driver.handle(sent.message, sent.message.sysid, sent.message.compid)

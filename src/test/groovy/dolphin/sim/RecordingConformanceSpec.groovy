@@ -8,11 +8,15 @@ import spock.lang.Specification
 /**
  * The simulated fleet against real ArduPilot: each recording of a SITL session (the project's
  * src/test/resources/sitl-recordings, or -Ddolphin.recordings) is replayed into a simulated vehicle of the
- * same kind, booted when the recorded one was, with the ground station's frames at the recorded
- * times. What the simulator sends must show the same frames that matter (KeyFrames: modes and arming,
- * MISSION_CURRENT, MISSION_ITEM_REACHED, landed state, ACKs, ground contact, disarm, the plane's
- * RTL) in the same order for each kind, and each recording's ending in the order SITL sent it
- * (docs/mavlink.md, "The simulated fleet and real ArduPilot").
+ * same kind, booted when the recorded one was (its heartbeat on the recorded one's phase), with the
+ * ground station's frames at the recorded times. What the simulator sends must show the same frames
+ * that matter (KeyFrames: modes and arming, MISSION_CURRENT, MISSION_ITEM_REACHED, landed state,
+ * ACKs, ground contact, disarm, the plane's RTL) in the same order for each kind, and each
+ * recording's ending in the order SITL sent it: the copter's first flight started 41 s after boot
+ * and after 15 s, both ending in a landing, a disarm and the mission started over; a fence breach
+ * ending in RTL, the mission stopped, the copter still descending; a rover's square ending COMPLETE; a
+ * plane's circuit ending in its own RTL; every mission command, then a second mission uploaded over
+ * the first, which keeps its current item (docs/mavlink.md, "The simulated fleet and real ArduPilot").
  */
 class RecordingConformanceSpec extends Specification {
 
@@ -20,9 +24,12 @@ class RecordingConformanceSpec extends Specification {
     static final List<String> KINDS = ['HEARTBEAT', 'MISSION_CURRENT', 'MISSION_ITEM_REACHED', 'EXTENDED_SYS_STATE',
                                        'COMMAND_ACK', 'MISSION_ACK', 'STATUSTEXT']
 
-    /** ArduCopter's EKF has a position about 42 s after boot (SITL at any speed-up, on its own clock). */
+    /**
+     * ArduCopter SITL's EKF uses GPS, so the copter has a position estimate, 41 s after boot (on its
+     * own clock, at any speed-up): EKF_STATUS_REPORT's flags in copter-first-flight-at-boot.
+     */
     @Shared
-    SimOptions sitl = SimOptions.DEFAULT.withWarmup(42)
+    SimOptions sitl = SimOptions.DEFAULT.withWarmup(41)
 
     def setupSpec() {
         assert Files.isDirectory(DIRECTORY): "the SITL recordings are not at ${DIRECTORY.toAbsolutePath().normalize()}" 
@@ -47,16 +54,28 @@ class RecordingConformanceSpec extends Specification {
 
         where:
         recording                     | kind               || ending
-        'copter-first-flight-at-boot' | VehicleKind.COPTER || ['COMMAND_ACK command=179 result=4']
-        'copter-first-flight'         | VehicleKind.COPTER || ['MISSION_ITEM_REACHED seq=2', 'MISSION_CURRENT seq=3 total=4 state=3',
-                                                               'STATUSTEXT SIM Hit ground']
-        'copter-every-command'        | VehicleKind.COPTER || ['MISSION_CURRENT seq=22 total=22 state=3', 'EXTENDED_SYS_STATE landed_state=4',
+        'copter-first-flight-at-boot' | VehicleKind.COPTER || ['COMMAND_ACK command=179 result=0', 'COMMAND_ACK command=400 result=0',
+                                                               'MISSION_CURRENT seq=4 total=4 state=3', 'EXTENDED_SYS_STATE landed_state=4',
                                                                'STATUSTEXT SIM Hit ground', 'STATUSTEXT Disarming motors',
-                                                               'MISSION_ITEM_REACHED seq=1', 'MISSION_CURRENT seq=2 total=22 state=3',
+                                                               'MISSION_CURRENT seq=1 total=4 state=3', 'EXTENDED_SYS_STATE landed_state=1']
+        'copter-first-flight'         | VehicleKind.COPTER || ['MISSION_ITEM_REACHED seq=3', 'MISSION_CURRENT seq=4 total=4 state=3',
+                                                               'EXTENDED_SYS_STATE landed_state=4', 'STATUSTEXT SIM Hit ground',
+                                                               'STATUSTEXT Disarming motors', 'MISSION_CURRENT seq=1 total=4 state=3',
                                                                'HEARTBEAT armed=0 mode=3']
+        'copter-fence-breach'         | VehicleKind.COPTER || ['MISSION_CURRENT seq=3 total=4 state=3', 'HEARTBEAT armed=1 mode=6',
+                                                               'MISSION_CURRENT seq=3 total=4 state=2', 'EXTENDED_SYS_STATE landed_state=4']
+        'rover-square'                | VehicleKind.ROVER  || ['MISSION_ITEM_REACHED seq=3', 'MISSION_CURRENT seq=4 total=4 state=3',
+                                                               'MISSION_ITEM_REACHED seq=4', 'MISSION_CURRENT seq=4 total=4 state=5']
         'plane-circuit'               | VehicleKind.PLANE  || ['MISSION_CURRENT seq=5 total=5 state=3', 'HEARTBEAT armed=1 mode=11',
                                                                'MISSION_ITEM_REACHED seq=5', 'STATUSTEXT Mission complete, changing mode to RTL',
                                                                'MISSION_CURRENT seq=5 total=5 state=5']
+        'copter-every-command'        | VehicleKind.COPTER || ['MISSION_CURRENT seq=22 total=22 state=3', 'EXTENDED_SYS_STATE landed_state=4',
+                                                               'STATUSTEXT SIM Hit ground', 'STATUSTEXT Disarming motors',
+                                                               'MISSION_ITEM_REACHED seq=1', 'MISSION_CURRENT seq=2 total=22 state=3',
+                                                               'HEARTBEAT armed=0 mode=3', 'MISSION_CURRENT seq=2 total=7 state=3',
+                                                               'COMMAND_ACK command=224 result=0', 'MISSION_CURRENT seq=1 total=7 state=3',
+                                                               'EXTENDED_SYS_STATE landed_state=3', 'MISSION_CURRENT seq=2 total=7 state=3',
+                                                               'HEARTBEAT armed=1 mode=6']
     }
 
     /** Whether {@code expected} occur in {@code lines} in this order, others between them allowed. */
