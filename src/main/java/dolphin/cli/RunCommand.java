@@ -186,7 +186,7 @@ final class RunCommand implements Callable<Integer> {
             return () -> { };
         }
         try {
-            WebView view = WebView.start(new WebView.Config(web, webTiles), comms, engine, SystemClock.REAL);
+            WebView view = WebView.start(new WebView.Settings(web, webTiles), comms, engine, SystemClock.REAL);
             out.println("web view: " + view.address());
             out.flush();
             return view;
@@ -273,7 +273,7 @@ final class RunCommand implements Callable<Integer> {
 
     /** The simulated fleet sends to every listening link, split over them in blocks. */
     private SimFleet startFleet(MAVLinkCommunications comms, Clock clock, FaultModel faultModel) throws IOException {
-        List<InetSocketAddress> ports = comms.links().stream().filter(l -> l.url().kind() == LinkUrl.Kind.UDPIN)
+        List<InetSocketAddress> ports = comms.links().stream().filter(l -> l.url().kind() == LinkUrl.Transport.UDPIN)
                 .map(l -> new InetSocketAddress("127.0.0.1", l.localPort())).toList();
         if (ports.isEmpty()) {
             throw new ParameterException(spec.commandLine(), "--sim needs a udpin link for the simulated vehicles to send to");

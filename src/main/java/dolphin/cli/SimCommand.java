@@ -102,7 +102,7 @@ final class SimCommand implements Callable<Integer> {
         FaultModel faultModel = faults.model();
         List<InetSocketAddress> gcs = new ArrayList<>();
         for (LinkUrl url : links.isEmpty() ? List.of(LinkUrl.parse("udpout:127.0.0.1:14559")) : links) {
-            if (url.kind() != LinkUrl.Kind.UDPOUT) {
+            if (url.kind() != LinkUrl.Transport.UDPOUT) {
                 throw new ParameterException(spec.commandLine(), "--link for sim must be udpout:HOST:PORT, got " + url);
             }
             gcs.add(url.address());

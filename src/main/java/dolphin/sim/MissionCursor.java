@@ -15,10 +15,10 @@ import java.util.Map;
 final class MissionCursor {
 
     /** AP_Mission's mission_state. */
-    enum Run { STOPPED, RUNNING, COMPLETE }
+    enum MissionRun { STOPPED, RUNNING, COMPLETE }
 
     private final MissionStore store;
-    private Run run = Run.STOPPED;
+    private MissionRun run = MissionRun.STOPPED;
     private int next = 1;
     private int nav;
     /** Jumps made by each DO_JUMP (by seq) since the mission started. */
@@ -28,12 +28,12 @@ final class MissionCursor {
         this.store = store;
     }
 
-    Run run() {
+    MissionRun run() {
         return run;
     }
 
     boolean running() {
-        return run == Run.RUNNING;
+        return run == MissionRun.RUNNING;
     }
 
     /** The next item to run. */
@@ -72,24 +72,24 @@ final class MissionCursor {
     /** AP_Mission::start: from the first item, running. */
     void start() {
         reset();
-        run = Run.RUNNING;
+        run = MissionRun.RUNNING;
     }
 
     /** ModeAuto::exit: leaving AUTO stops a running mission (MISSION_CURRENT says NOT_STARTED, never PAUSED). */
     void stop() {
-        if (run == Run.RUNNING) {
-            run = Run.STOPPED;
+        if (run == MissionRun.RUNNING) {
+            run = MissionRun.STOPPED;
         }
     }
 
     void complete() {
-        run = Run.COMPLETE;
+        run = MissionRun.COMPLETE;
     }
 
     /** AP_Mission::clear: no mission, no place in it. */
     void cleared() {
         reset();
-        run = Run.STOPPED;
+        run = MissionRun.STOPPED;
     }
 
     /**
@@ -97,10 +97,10 @@ final class MissionCursor {
      * past the end of what is stored now, starts from the top; any other runs on from its place.
      */
     void resume() {
-        if (run == Run.COMPLETE || nav == 0 || next >= store.count() || nav >= store.count()) {
+        if (run == MissionRun.COMPLETE || nav == 0 || next >= store.count() || nav >= store.count()) {
             start();
         } else {
-            run = Run.RUNNING;
+            run = MissionRun.RUNNING;
         }
     }
 
@@ -114,19 +114,19 @@ final class MissionCursor {
         if (seq >= store.count() || store.count() <= 1) {
             return false;
         }
-        if (seq == 0 || run == Run.COMPLETE) {
+        if (seq == 0 || run == MissionRun.COMPLETE) {
             jumpsRun.clear();
             seq = Math.max(1, seq);
         }
         int found = navFrom(seq);
         if (found < 0) {
-            if (run != Run.RUNNING) {
+            if (run != MissionRun.RUNNING) {
                 nav = 0;
             }
             return false;
         }
-        if (run != Run.RUNNING) {
-            run = Run.STOPPED;
+        if (run != MissionRun.RUNNING) {
+            run = MissionRun.STOPPED;
         }
         next = seq;
         nav = found;

@@ -10,15 +10,15 @@ import java.time.Duration;
 final class Broadcast {
 
     private final Clock clock;
-    private FleetFeed.Frame latest;
+    private FleetFeed.FeedFrame latest;
     private boolean ended;
 
-    Broadcast(Clock clock, FleetFeed.Frame first) {
+    Broadcast(Clock clock, FleetFeed.FeedFrame first) {
         this.clock = clock;
         latest = first;
     }
 
-    synchronized void publish(FleetFeed.Frame frame) {
+    synchronized void publish(FleetFeed.FeedFrame frame) {
         latest = frame;
         notifyAll();
     }
@@ -29,7 +29,7 @@ final class Broadcast {
         notifyAll();
     }
 
-    synchronized FleetFeed.Frame latest() {
+    synchronized FleetFeed.FeedFrame latest() {
         return latest;
     }
 
@@ -41,7 +41,7 @@ final class Broadcast {
      * A frame newer than {@code number}, waiting up to {@code timeout} of the clock; the latest frame
      * (maybe not newer) when the time is up or the run ended.
      */
-    synchronized FleetFeed.Frame awaitAfter(long number, Duration timeout) throws InterruptedException {
+    synchronized FleetFeed.FeedFrame awaitAfter(long number, Duration timeout) throws InterruptedException {
         long deadline = clock.nanoTime() + timeout.toNanos();
         while (latest.number() <= number && !ended) {
             long left = deadline - clock.nanoTime();

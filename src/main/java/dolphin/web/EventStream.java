@@ -27,12 +27,12 @@ final class EventStream implements HttpHandler {
     private final Broadcast broadcast;
     private final EventLog log;
     /** The snapshot for a new viewer, given the frame it starts from. */
-    private final Function<FleetFeed.Frame, String> snapshot;
+    private final Function<FleetFeed.FeedFrame, String> snapshot;
     /** Members every update carries (the run's script and outcome). */
     private final Supplier<String> always;
     private final AtomicInteger viewers = new AtomicInteger();
 
-    EventStream(Broadcast broadcast, EventLog log, Function<FleetFeed.Frame, String> snapshot, Supplier<String> always) {
+    EventStream(Broadcast broadcast, EventLog log, Function<FleetFeed.FeedFrame, String> snapshot, Supplier<String> always) {
         this.broadcast = broadcast;
         this.log = log;
         this.snapshot = snapshot;
@@ -65,12 +65,12 @@ final class EventStream implements HttpHandler {
     }
 
     private void stream(OutputStream out) throws IOException, InterruptedException {
-        FleetFeed.Frame sent = broadcast.latest();
+        FleetFeed.FeedFrame sent = broadcast.latest();
         long logSeq = log.last();
         send(out, "snapshot", snapshot.apply(sent));
         while (true) {
             boolean ended = broadcast.ended();
-            FleetFeed.Frame next = broadcast.awaitAfter(sent.number(), KEEP_ALIVE);
+            FleetFeed.FeedFrame next = broadcast.awaitAfter(sent.number(), KEEP_ALIVE);
             if (next.number() > sent.number() || log.last() > logSeq) {
                 EventLog.Since since = log.since(logSeq);
                 send(out, "update", FleetFeed.update(next, sent.number(), since, always.get()));

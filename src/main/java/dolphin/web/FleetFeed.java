@@ -21,7 +21,7 @@ final class FleetFeed {
     }
 
     /** What the viewers are sent, as of one sample; immutable. */
-    record Frame(long number, double time, Map<String, Stamped> vehicles, Map<String, Stamped> missions, Stamped executes) {
+    record FeedFrame(long number, double time, Map<String, Stamped> vehicles, Map<String, Stamped> missions, Stamped executes) {
     }
 
     private final Supplier<List<VehicleSample>> fleet;
@@ -34,7 +34,7 @@ final class FleetFeed {
     private long number;
     private long boardVersion = -1;
     private Stamped executes = new Stamped("[]", 0);
-    private volatile Frame latest = new Frame(0, 0, Map.of(), Map.of(), executes);
+    private volatile FeedFrame latest = new FeedFrame(0, 0, Map.of(), Map.of(), executes);
 
     FleetFeed(Supplier<List<VehicleSample>> fleet, TaskBoard board) {
         this.fleet = fleet;
@@ -42,7 +42,7 @@ final class FleetFeed {
     }
 
     /** Samples the fleet and the program into the next frame (sampler thread). */
-    Frame sample(double time) {
+    FeedFrame sample(double time) {
         List<VehicleSample> samples = fleet.get();
         synchronized (this) {
             long n = ++number;
@@ -67,12 +67,12 @@ final class FleetFeed {
                 boardVersion = version;
                 executes = new Stamped(Json.write(board.json()), n);
             }
-            latest = new Frame(n, time, Map.copyOf(vehicles), Map.copyOf(missions), executes);
+            latest = new FeedFrame(n, time, Map.copyOf(vehicles), Map.copyOf(missions), executes);
             return latest;
         }
     }
 
-    Frame latest() {
+    FeedFrame latest() {
         return latest;
     }
 
@@ -87,7 +87,7 @@ final class FleetFeed {
      * The JSON of what changed in {@code frame} after frame {@code after} (0: everything), with the
      * log entries {@code log} and {@code extra} members (raw JSON, each starting with a comma).
      */
-    static String update(Frame frame, long after, EventLog.Since log, String extra) {
+    static String update(FeedFrame frame, long after, EventLog.Since log, String extra) {
         StringBuilder b = new StringBuilder(256);
         b.append("{\"frame\":").append(frame.number()).append(",\"time\":").append(Json.tenths(frame.time()));
         b.append(",\"vehicles\":[");

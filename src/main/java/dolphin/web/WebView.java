@@ -47,7 +47,7 @@ public final class WebView implements EngineListener, AutoCloseable {
      * @param tiles a tile URL template ({@code https://tile.openstreetmap.org/{z}/{x}/{y}.png}), or
      *        null for a plain background
      */
-    public record Config(WebAddress address, String tiles) {
+    public record Settings(WebAddress address, String tiles) {
     }
 
     private final Engine engine;
@@ -68,7 +68,7 @@ public final class WebView implements EngineListener, AutoCloseable {
     private volatile String outcome;
     private volatile boolean running = true;
 
-    private WebView(Config config, MAVLinkCommunications comms, Engine engine, Clock displayClock) throws WebViewException {
+    private WebView(Settings config, MAVLinkCommunications comms, Engine engine, Clock displayClock) throws WebViewException {
         this.engine = engine;
         this.runClock = engine.getEnvironment().getClock();
         this.displayClock = displayClock;
@@ -113,7 +113,7 @@ public final class WebView implements EngineListener, AutoCloseable {
      *
      * @throws WebViewException naming the address and what is wrong with it (in use, unknown host...)
      */
-    public static WebView start(Config config, MAVLinkCommunications comms, Engine engine, Clock displayClock)
+    public static WebView start(Settings config, MAVLinkCommunications comms, Engine engine, Clock displayClock)
             throws WebViewException {
         WebView view = new WebView(config, comms, engine, displayClock);
         engine.addListener(view);
@@ -155,7 +155,7 @@ public final class WebView implements EngineListener, AutoCloseable {
     }
 
     /** The first message of a stream and the answer of /state: everything, tracks and settings included. */
-    private String snapshot(FleetFeed.Frame frame) {
+    private String snapshot(FleetFeed.FeedFrame frame) {
         return FleetFeed.update(frame, 0, log.since(0), run() + ",\"tracks\":" + feed.tracksJson() + ",\"config\":" + configJson);
     }
 

@@ -19,7 +19,7 @@ class LinkSpec extends Specification {
 
     def "connection strings parse, and bad ones say what was expected"() {
         expect:
-        LinkUrl.parse('udpin:0.0.0.0:14559').kind() == LinkUrl.Kind.UDPIN
+        LinkUrl.parse('udpin:0.0.0.0:14559').kind() == LinkUrl.Transport.UDPIN
         LinkUrl.parse('udpout:127.0.0.1:14550').port() == 14550
         LinkUrl.parse('tcp:localhost:5760').host() == 'localhost'
         with(LinkUrl.parse('serial:/dev/ttyUSB0:57600')) { device() == '/dev/ttyUSB0' && baud() == 57600 }

@@ -46,7 +46,7 @@ class WebViewBrowserSpec extends Specification {
                 new InetSocketAddress('127.0.0.1', comms.links()[0].localPort())), clock)
         fleet.start()
         engine = new Engine(new MAVLinkPlatform(comms), clock)
-        view = WebView.start(new WebView.Config(WebAddress.parse('0'), null), comms, engine, SystemClock.REAL)
+        view = WebView.start(new WebView.Settings(WebAddress.parse('0'), null), comms, engine, SystemClock.REAL)
         browser = Chromium.start()
     }
 

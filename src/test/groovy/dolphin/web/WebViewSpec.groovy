@@ -53,7 +53,7 @@ class WebViewSpec extends Specification {
     }
 
     WebView start(String address = '0') {
-        view = WebView.start(new WebView.Config(WebAddress.parse(address), 'https://tiles.example/{z}/{x}/{y}.png'), comms, engine,
+        view = WebView.start(new WebView.Settings(WebAddress.parse(address), 'https://tiles.example/{z}/{x}/{y}.png'), comms, engine,
                 SystemClock.REAL)
         view
     }

@@ -3,14 +3,21 @@ package dolphin.architecture;
 import static com.tngtech.archunit.library.Architectures.layeredArchitecture;
 import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.slices;
 
+import com.tngtech.archunit.core.domain.JavaClass;
+import com.tngtech.archunit.core.domain.JavaClasses;
 import com.tngtech.archunit.core.importer.ImportOption;
 import com.tngtech.archunit.junit.AnalyzeClasses;
 import com.tngtech.archunit.junit.ArchTest;
 import com.tngtech.archunit.lang.ArchRule;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.stream.Collectors;
 
 /**
  * The layers of docs/architecture.md, lowest first: each may use only those below it, never one
- * above or beside it, and no two packages use each other, even through a third.
+ * above or beside it, and no two packages use each other, even through a third. One name, one
+ * class: no two classes, nested ones included, share a simple name.
  */
 @AnalyzeClasses(packages = "dolphin", importOptions = ImportOption.DoNotIncludeTests.class)
 class ArchitectureTest {
@@ -58,4 +65,18 @@ class ArchitectureTest {
 
     @ArchTest
     static final ArchRule noPackageCycles = slices().matching("dolphin.(**)").should().beFreeOfCycles();
+
+    @ArchTest
+    static void oneNameOneClass(JavaClasses classes) {
+        Map<String, List<String>> byName = classes.stream()
+                // Groovy's generated closure classes ($_closure1) and anonymous classes have no name of ours
+                .filter(c -> !c.isAnonymousClass() && !c.getName().contains("$_") && !c.getSimpleName().isEmpty())
+                .collect(Collectors.groupingBy(JavaClass::getSimpleName, TreeMap::new,
+                        Collectors.mapping(JavaClass::getName, Collectors.toList())));
+        Map<String, List<String>> shared = new TreeMap<>(byName);
+        shared.values().removeIf(names -> names.size() < 2);
+        if (!shared.isEmpty()) {
+            throw new AssertionError("classes that share a simple name: " + shared);
+        }
+    }
 }

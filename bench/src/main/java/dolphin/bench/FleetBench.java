@@ -147,7 +147,7 @@ public final class FleetBench {
 
             Engine engine = new Engine(new MAVLinkPlatform(comms), clock);
             if (web) {
-                view = WebView.start(new WebView.Config(WebAddress.parse("0"), null), comms, engine, clock);
+                view = WebView.start(new WebView.Settings(WebAddress.parse("0"), null), comms, engine, clock);
                 browser = openPage(view);
             }
             Cpu idle = Cpu.measure(sim, comms, () -> Thread.sleep(IDLE_WINDOW.toMillis()));

@@ -7,9 +7,9 @@ import java.net.InetSocketAddress;
  * datagrams), {@code udpout:HOST:PORT} (send to a fixed address), {@code tcp:HOST:PORT} (client) or
  * {@code serial:DEVICE:BAUD}.
  */
-public record LinkUrl(Kind kind, String host, int port, String device, int baud, String text) {
+public record LinkUrl(Transport kind, String host, int port, String device, int baud, String text) {
 
-    public enum Kind { UDPIN, UDPOUT, TCP, SERIAL }
+    public enum Transport { UDPIN, UDPOUT, TCP, SERIAL }
 
     public static LinkUrl parse(String text) {
         String t = text == null ? "" : text.strip();
@@ -20,9 +20,9 @@ public record LinkUrl(Kind kind, String host, int port, String device, int baud,
         String scheme = t.substring(0, colon).toLowerCase(java.util.Locale.ROOT);
         String rest = t.substring(colon + 1);
         return switch (scheme) {
-            case "udpin" -> hostPort(Kind.UDPIN, rest, t);
-            case "udpout", "udp" -> hostPort(Kind.UDPOUT, rest, t);
-            case "tcp" -> hostPort(Kind.TCP, rest, t);
+            case "udpin" -> hostPort(Transport.UDPIN, rest, t);
+            case "udpout", "udp" -> hostPort(Transport.UDPOUT, rest, t);
+            case "tcp" -> hostPort(Transport.TCP, rest, t);
             case "serial" -> serial(rest, t);
             default -> throw bad(t, "unknown link kind '" + scheme + "': expected udpin, udpout, tcp or serial");
         };
@@ -32,17 +32,17 @@ public record LinkUrl(Kind kind, String host, int port, String device, int baud,
         return new InetSocketAddress(host, port);
     }
 
-    private static LinkUrl hostPort(Kind kind, String rest, String text) {
+    private static LinkUrl hostPort(Transport kind, String rest, String text) {
         int colon = rest.lastIndexOf(':');
         if (colon <= 0) {
             throw bad(text, "expected HOST:PORT after '" + kind.name().toLowerCase(java.util.Locale.ROOT) + ":'");
         }
         String host = rest.substring(0, colon);
         int port = number(rest.substring(colon + 1), text, "port");
-        int lowest = kind == Kind.UDPIN ? 0 : 1;
+        int lowest = kind == Transport.UDPIN ? 0 : 1;
         if (port < lowest || port > 65535) {
             throw bad(text, "the port must be between " + lowest + " and 65535, got " + port
-                    + (kind == Kind.UDPIN ? " (0 listens on any free port)" : ""));
+                    + (kind == Transport.UDPIN ? " (0 listens on any free port)" : ""));
         }
         return new LinkUrl(kind, host, port, null, 0, text);
     }
@@ -56,7 +56,7 @@ public record LinkUrl(Kind kind, String host, int port, String device, int baud,
         if (baud <= 0) {
             throw bad(text, "the baud rate must be positive, got " + baud);
         }
-        return new LinkUrl(Kind.SERIAL, null, 0, rest.substring(0, colon), baud, text);
+        return new LinkUrl(Transport.SERIAL, null, 0, rest.substring(0, colon), baud, text);
     }
 
     private static int number(String s, String text, String what) {

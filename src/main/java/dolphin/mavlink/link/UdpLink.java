@@ -18,7 +18,7 @@ final class UdpLink extends Link {
 
     UdpLink(LinkUrl url, int index) throws IOException {
         super(url, index);
-        if (url.kind() == LinkUrl.Kind.UDPIN) {
+        if (url.kind() == LinkUrl.Transport.UDPIN) {
             remote = null;
             try {
                 socket = new DatagramSocket(new InetSocketAddress(url.host(), url.port()));

@@ -39,7 +39,7 @@ import java.util.function.Function;
  */
 public final class MissionExecutor extends PlatformTaskExecutor {
 
-    public enum State { PREPARE, UPLOAD, VERIFY, ARM, START, RUNNING, DONE, ERROR }
+    public enum FlightState { PREPARE, UPLOAD, VERIFY, ARM, START, RUNNING, DONE, ERROR }
 
     private static final Duration JUMP_RESEND = Duration.ofSeconds(1);
 
@@ -51,7 +51,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     private MissionExecutorConfig config;
     private FlightRules rules;
     private Stage stage;
-    private volatile State state = State.PREPARE;
+    private volatile FlightState state = FlightState.PREPARE;
     private String failure;
 
     /** @param vehicles the mission side of the vehicle the executor is given; null when it has none */
@@ -61,7 +61,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         this.vehicles = vehicles;
     }
 
-    public State state() {
+    public FlightState state() {
         return state;
     }
 
@@ -93,11 +93,11 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         if (failure != null) {
             return fail(failure);
         }
-        if (state == State.DONE) {
+        if (state == FlightState.DONE) {
             return CompletionState.DONE;
         }
         long now = clock().nanoTime();
-        if (state != State.RUNNING && now > stage.deadline) {
+        if (state != FlightState.RUNNING && now > stage.deadline) {
             return fail(stage.overdue());
         }
         return stage.step(now);
@@ -106,7 +106,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     /** Cut short (a condition, a stopped sequence): the vehicle is sent home if it may be flying. */
     @Override
     protected void onStop() {
-        if (vehicle != null && (state == State.ARM || state == State.START || state == State.RUNNING)) {
+        if (vehicle != null && (state == FlightState.ARM || state == FlightState.START || state == FlightState.RUNNING)) {
             vehicle.command(MAV_CMD.MAV_CMD_DO_SET_MODE, MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED,
                     vehicle.state().family().modeNumber("RTL").orElse(0));
             progress("cut short: RTL");
@@ -132,10 +132,10 @@ public final class MissionExecutor extends PlatformTaskExecutor {
 
     /** One state of the flight: its data and its deadline. */
     private abstract class Stage {
-        final State state;
+        final FlightState state;
         final long deadline;
 
-        Stage(State state, Duration limit) {
+        Stage(FlightState state, Duration limit) {
             this.state = state;
             this.deadline = clock().nanoTime() + limit.toNanos();
         }
@@ -165,7 +165,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         private String waitingFor;
 
         Preparing(long now) {
-            super(State.PREPARE, config.prepare());
+            super(FlightState.PREPARE, config.prepare());
             since = now;
             steps = commandSteps(this::waitFor);
         }
@@ -254,7 +254,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         private final CompletableFuture<TransferResult> pending;
 
         Uploading(Deque<Map.Entry<MissionType, List<MissionItem>>> lists, Plan plan) {
-            super(State.UPLOAD, config.upload());
+            super(FlightState.UPLOAD, config.upload());
             this.lists = lists;
             this.plan = plan;
             var next = lists.peek();
@@ -291,7 +291,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         private final CompletableFuture<TransferResult> pending;
 
         Verifying(Deque<Map.Entry<MissionType, List<MissionItem>>> lists, Plan plan, String uploadError) {
-            super(State.VERIFY, config.upload());
+            super(FlightState.VERIFY, config.upload());
             this.lists = lists;
             this.plan = plan;
             this.uploadError = uploadError;
@@ -335,7 +335,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         private long nextAttempt;
 
         Arming(Plan plan) {
-            super(State.ARM, config.arm());
+            super(FlightState.ARM, config.arm());
             this.plan = plan;
             nextAttempt = clock().nanoTime();
         }
@@ -411,7 +411,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         private final CommandSteps steps = commandSteps(what -> { });
 
         Starting(Plan plan) {
-            super(State.START, config.start());
+            super(FlightState.START, config.start());
             this.plan = plan;
             if (mission.fenceEnabled()) {
                 steps.add(new CommandSteps.Step("MAV_CMD_DO_FENCE_ENABLE 1", () -> vehicle.command(
@@ -447,7 +447,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         private long resendJump;
 
         Following(Plan plan) {
-            super(State.RUNNING, Duration.ZERO);
+            super(FlightState.RUNNING, Duration.ZERO);
             this.plan = plan;
             plan.keyed().values().forEach(cmds -> cmds.stream().filter(c -> c instanceof JumpToItem)
                     .forEach(c -> jumpsLeft.put((JumpToItem) c, ((JumpToItem) c).repetitions())));
@@ -477,7 +477,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             }
             MissionEnd.Verdict verdict = plan.end().judge(s, r, isMode(s, "AUTO"), now);
             if (verdict.done()) {
-                MissionExecutor.this.state = State.DONE;
+                MissionExecutor.this.state = FlightState.DONE;
                 progress("done");
                 return CompletionState.DONE;
             }
@@ -595,7 +595,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
 
     private CompletionState fail(String why) {
         failure = why;
-        state = State.ERROR;
+        state = FlightState.ERROR;
         return CompletionState.error("mission " + mission.getId() + (vehicle != null ? " on vehicle " + vehicle.vehicleId() : "") + ": " + why);
     }
 

@@ -10,7 +10,7 @@ import dolphin.core.TaskContext
 import dolphin.mavlink.CommandResult
 import dolphin.mavlink.VehicleFamily
 import dolphin.mission.dsl.MissionDsl
-import dolphin.mission.flight.MissionExecutor.State
+import dolphin.mission.flight.MissionExecutor.FlightState
 import dolphin.mission.model.MissionItem
 import dolphin.mission.model.MissionType
 import java.time.Duration
@@ -62,7 +62,7 @@ class MissionExecutorFaultsSpec extends MissionFlights {
 
         then:
         at40 == CompletionState.IN_PROGRESS
-        executor.state() == State.PREPARE
+        executor.state() == FlightState.PREPARE
         messages == ['waiting for vehicle 1: no position estimate yet', 'waiting for vehicle 1: PreArm: Need Position Estimate']
 
         when:
@@ -72,7 +72,7 @@ class MissionExecutorFaultsSpec extends MissionFlights {
         after.error
         now() == 40.1d
         failure() == 'mission hop on vehicle 1: vehicle 1 was not ready within 40 s: PreArm: Need Position Estimate'
-        executor.state() == State.ERROR
+        executor.state() == FlightState.ERROR
         vehicle.log.empty
         vehicle.executors == ['flying hop', 'landed hop']
     }
@@ -145,7 +145,7 @@ class MissionExecutorFaultsSpec extends MissionFlights {
 
         expect:
         e.step().message == 'mission hop: vehicle 1 is not a MAVLink vehicle'
-        e.state() == State.ERROR
+        e.state() == FlightState.ERROR
         vehicle.executors.empty
     }
 
@@ -170,7 +170,7 @@ class MissionExecutorFaultsSpec extends MissionFlights {
 
         then:
         vehicle.commands*.text == sent
-        (error == null) ? executor.state() == State.UPLOAD : failure() == "mission hop on vehicle 1: ${error}".toString()
+        (error == null) ? executor.state() == FlightState.UPLOAD : failure() == "mission hop on vehicle 1: ${error}".toString()
 
         where:
         command                                 | answer                     | result                       || sent                                                            | error
@@ -211,7 +211,7 @@ class MissionExecutorFaultsSpec extends MissionFlights {
         step(allowed)
 
         then:
-        allowed.state() == State.UPLOAD
+        allowed.state() == FlightState.UPLOAD
     }
 
     // ---- UPLOAD and VERIFY
@@ -227,14 +227,14 @@ class MissionExecutorFaultsSpec extends MissionFlights {
 
         when:
         launch(hop())
-        driveTo(State.UPLOAD)
-        for (int i = 0; i < 3 && !executor.completed && executor.state() != State.ARM; i++) {
+        driveTo(FlightState.UPLOAD)
+        for (int i = 0; i < 3 && !executor.completed && executor.state() != FlightState.ARM; i++) {
             step()
         }
 
         then:
         vehicle.transfers*.toString() == transfers
-        error == null ? executor.state() == State.ARM : failure() == "mission hop on vehicle 1: ${error}".toString()
+        error == null ? executor.state() == FlightState.ARM : failure() == "mission hop on vehicle 1: ${error}".toString()
         messages.drop(1) == said(progress)
 
         where:
@@ -294,7 +294,7 @@ class MissionExecutorFaultsSpec extends MissionFlights {
 
         when:
         launch(task)
-        driveTo(State.VERIFY)
+        driveTo(FlightState.VERIFY)
         step()
 
         then:
@@ -329,9 +329,9 @@ class MissionExecutorFaultsSpec extends MissionFlights {
 
         where:
         stage        | waitFor            || limit
-        State.UPLOAD | 'upload mission'   || 120
-        State.VERIFY | 'download mission' || 120
-        State.START  | 'DO_SET_MODE AUTO' || 30
+        FlightState.UPLOAD | 'upload mission'   || 120
+        FlightState.VERIFY | 'download mission' || 120
+        FlightState.START  | 'DO_SET_MODE AUTO' || 30
     }
 
     // ---- ARM
@@ -345,12 +345,12 @@ class MissionExecutorFaultsSpec extends MissionFlights {
 
         when:
         launch(hop())
-        driveTo(State.ARM)
+        driveTo(FlightState.ARM)
         step()
 
         then:
         vehicle.commands*.text == sent
-        (error == null) ? executor.state() == State.START : failure() == "mission hop on vehicle 1: ${error}".toString()
+        (error == null) ? executor.state() == FlightState.START : failure() == "mission hop on vehicle 1: ${error}".toString()
 
         where:
         answer                     | result                       || sent                          | error
@@ -371,7 +371,7 @@ class MissionExecutorFaultsSpec extends MissionFlights {
 
         when:
         launch(hop())
-        driveTo(State.ARM)
+        driveTo(FlightState.ARM)
         step()
         runTo(9.9)
 
@@ -410,14 +410,14 @@ class MissionExecutorFaultsSpec extends MissionFlights {
 
         when:
         launch(hop())
-        driveTo(State.ARM)
+        driveTo(FlightState.ARM)
         step()
         runTo(5)
 
         then:
         vehicle.commands.findAll { it.text == 'ARM' }*.time == [0.0d, 2.0d, 4.0d]
         messages.contains('mission hop on vehicle 1: armed')
-        executor.state() == State.RUNNING
+        executor.state() == FlightState.RUNNING
         vehicle.commands.find { it.text == 'DO_SET_MISSION_CURRENT 1' }.time == 4.1d
     }
 
@@ -440,12 +440,12 @@ class MissionExecutorFaultsSpec extends MissionFlights {
 
         when:
         launch(task)
-        driveTo(State.START)
+        driveTo(FlightState.START)
         step()
 
         then:
         vehicle.commands*.text.drop(2) == sent
-        (error == null) ? executor.state() == State.RUNNING : failure() == "mission hop on vehicle 1: ${error}".toString()
+        (error == null) ? executor.state() == FlightState.RUNNING : failure() == "mission hop on vehicle 1: ${error}".toString()
 
         where:
         command                    | answer                         | result                       || sent                                                                                   | error
@@ -467,7 +467,7 @@ class MissionExecutorFaultsSpec extends MissionFlights {
         vehicle.ready()
         vehicle.autopilot = true
         launch(hop5())
-        stepUntil(State.RUNNING)
+        stepUntil(FlightState.RUNNING)
         vehicle.landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR)
         vehicle.at(0, 20)
         vehicle.next(2)
@@ -484,7 +484,7 @@ class MissionExecutorFaultsSpec extends MissionFlights {
         cs.error
         now() == 5.1d
         failure() == "mission hop on vehicle 1: ${text}".toString()
-        executor.state() == State.ERROR
+        executor.state() == FlightState.ERROR
         vehicle.commands.size() == sent
         vehicle.executors == ['flying hop', 'landed hop']
 
@@ -501,7 +501,7 @@ class MissionExecutorFaultsSpec extends MissionFlights {
         vehicle.autopilot = true
         vehicle.node.connectionTimeout = 5
         launch(hop5())
-        stepUntil(State.RUNNING)
+        stepUntil(FlightState.RUNNING)
         vehicle.next(2)
         runTo(5)
         int sent = vehicle.commands.size()
@@ -529,7 +529,7 @@ class MissionExecutorFaultsSpec extends MissionFlights {
             goPos 40.4455, -7.375234, 870
             goPos 40.4455, -7.3737, 870
         })
-        stepUntil(State.RUNNING)
+        stepUntil(FlightState.RUNNING)
         vehicle.landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR)
         vehicle.at(0, 50)
         vehicle.next(2)
@@ -555,7 +555,7 @@ class MissionExecutorFaultsSpec extends MissionFlights {
         vehicle.ready()
         vehicle.autopilot = true
         launch(hop5())
-        stepUntil(State.RUNNING)
+        stepUntil(FlightState.RUNNING)
         vehicle.landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR)
         vehicle.at(0, 20)
 

@@ -7,7 +7,7 @@ import dolphin.core.CompletionState
 import dolphin.core.Position
 import dolphin.mavlink.VehicleFamily
 import dolphin.mission.dsl.MissionDsl
-import dolphin.mission.flight.MissionExecutor.State
+import dolphin.mission.flight.MissionExecutor.FlightState
 import dolphin.mission.model.MissionType
 import spock.lang.Unroll
 
@@ -32,7 +32,7 @@ class MissionExecutorSpec extends MissionFlights {
         step()
 
         then:
-        executor.state() == State.UPLOAD
+        executor.state() == FlightState.UPLOAD
         vehicle.log == ['0.0 upload mission: 4 items']
         vehicle.transfers[0].type == MissionType.MISSION
         vehicle.transfers[0].items == items
@@ -43,7 +43,7 @@ class MissionExecutorSpec extends MissionFlights {
         runTo(0.5)
 
         then:
-        executor.state() == State.UPLOAD
+        executor.state() == FlightState.UPLOAD
         vehicle.log.size() == 1
 
         when: 'it ends (waking the script): VERIFY downloads the mission back'
@@ -52,7 +52,7 @@ class MissionExecutorSpec extends MissionFlights {
 
         then:
         vehicle.wakes == 1
-        executor.state() == State.VERIFY
+        executor.state() == FlightState.VERIFY
         vehicle.log == ['0.0 upload mission: 4 items', '0.5 download mission']
 
         when: 'the vehicle holds the mission, its own home as item 0'
@@ -61,7 +61,7 @@ class MissionExecutorSpec extends MissionFlights {
 
         then:
         vehicle.wakes == 2
-        executor.state() == State.ARM
+        executor.state() == FlightState.ARM
         messages == said(['uploading 4 items', 'upload verified'])
 
         when: 'ARM: GUIDED first (ArduCopter refuses to arm in AUTO)'
@@ -78,7 +78,7 @@ class MissionExecutorSpec extends MissionFlights {
         then:
         vehicle.commandLines() == ['0.5 DO_SET_MODE GUIDED', '0.5 ARM']
         vehicle.commands[1].params as List == [1f]
-        executor.state() == State.ARM
+        executor.state() == FlightState.ARM
 
         when:
         vehicle.accept()
@@ -86,7 +86,7 @@ class MissionExecutorSpec extends MissionFlights {
 
         then:
         messages.last() == 'mission hop on vehicle 1: armed'
-        executor.state() == State.START
+        executor.state() == FlightState.START
 
         when: 'START: the first item current, AUTO, MISSION_START, one at a time'
         step()
@@ -108,7 +108,7 @@ class MissionExecutorSpec extends MissionFlights {
 
         then:
         vehicle.commandLines().drop(2) == ['0.5 DO_SET_MISSION_CURRENT 1', '0.5 DO_SET_MODE AUTO', '0.5 MISSION_START']
-        executor.state() == State.START
+        executor.state() == FlightState.START
 
         when:
         vehicle.accept()
@@ -116,7 +116,7 @@ class MissionExecutorSpec extends MissionFlights {
 
         then:
         messages.last() == 'mission hop on vehicle 1: started'
-        executor.state() == State.RUNNING
+        executor.state() == FlightState.RUNNING
 
         when: 'RUNNING: the take-off reached, the waypoint reached'
         vehicle.landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR)
@@ -145,7 +145,7 @@ class MissionExecutorSpec extends MissionFlights {
         then:
         end == CompletionState.DONE
         now() == 30.1d
-        executor.state() == State.DONE
+        executor.state() == FlightState.DONE
         messages == said(['uploading 4 items', 'upload verified', 'armed', 'started', 'item 1 of 3 reached', 'item 2 of 3 reached', 'done'])
         vehicle.executors == ['flying hop', 'landed hop']
         vehicle.commands.size() == 5
@@ -172,7 +172,7 @@ class MissionExecutorSpec extends MissionFlights {
 
         when:
         launch(task)
-        stepUntil(State.RUNNING)
+        stepUntil(FlightState.RUNNING)
 
         then: 'the commands of ARM and START, in order'
         vehicle.commands*.text == commands
@@ -245,7 +245,7 @@ class MissionExecutorSpec extends MissionFlights {
         step()
 
         then:
-        executor.state() == State.ARM
+        executor.state() == FlightState.ARM
         vehicle.transfers*.toString() == ['0.0 upload fence: 3 items', '0.0 download fence', '0.0 upload rally points: 2 items',
                                           '0.0 download rally points', '0.0 upload mission: 4 items', '0.0 download mission']
         messages == said(['uploading the fence: 3 items', 'fence verified', 'uploading the rally points: 2 items', 'rally points verified',
@@ -253,7 +253,7 @@ class MissionExecutorSpec extends MissionFlights {
 
         when: 'started: the fence is not switched on, the script did not ask'
         vehicle.autopilot = true
-        stepUntil(State.RUNNING)
+        stepUntil(FlightState.RUNNING)
 
         then:
         !vehicle.commands*.text.contains('DO_FENCE_ENABLE 1')
@@ -363,7 +363,7 @@ class MissionExecutorSpec extends MissionFlights {
             goPos 40.4448, -7.375234, 840
         }
         launch(task)
-        stepUntil(State.RUNNING)
+        stepUntil(FlightState.RUNNING)
         messages.clear()
 
         when: 'MISSION_CURRENT 1: nothing reached yet'
@@ -412,7 +412,7 @@ class MissionExecutorSpec extends MissionFlights {
             goPos 40.4455, -7.3737, 870
         }
         launch(task)
-        stepUntil(State.RUNNING)
+        stepUntil(FlightState.RUNNING)
 
         when:
         vehicle.landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR)
@@ -450,7 +450,7 @@ class MissionExecutorSpec extends MissionFlights {
             landingPoint 40.4444, -7.37500, 820
         }
         launch(task)
-        stepUntil(State.RUNNING)
+        stepUntil(FlightState.RUNNING)
         vehicle.landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR)
         vehicle.at(0, 20)
         vehicle.next(2)
@@ -520,7 +520,7 @@ class MissionExecutorSpec extends MissionFlights {
             jumpToItem 2, 1
         }
         launch(task)
-        stepUntil(State.RUNNING)
+        stepUntil(FlightState.RUNNING)
         vehicle.landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR)
         vehicle.at(0, 20)
         vehicle.next(2)
@@ -561,7 +561,7 @@ class MissionExecutorSpec extends MissionFlights {
             loiterPos 40.4444, -7.375234, 840
         }
         launch(task)
-        stepUntil(State.RUNNING)
+        stepUntil(FlightState.RUNNING)
         vehicle.landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR)
         vehicle.at(0, 20)
 
@@ -592,7 +592,7 @@ class MissionExecutorSpec extends MissionFlights {
     @Unroll
     def "stop() in #state: #outcome"() {
         given: 'a vehicle ready for all but PREPARE, answering what the executor waits for until it is in the state'
-        if (state != State.PREPARE) {
+        if (state != FlightState.PREPARE) {
             vehicle.ready()
         }
         launch(hop())
@@ -620,12 +620,12 @@ class MissionExecutorSpec extends MissionFlights {
 
         where:
         state         || rtl
-        State.PREPARE || false
-        State.UPLOAD  || false
-        State.VERIFY  || false
-        State.ARM     || true
-        State.START   || true
-        State.RUNNING || true
+        FlightState.PREPARE || false
+        FlightState.UPLOAD  || false
+        FlightState.VERIFY  || false
+        FlightState.ARM     || true
+        FlightState.START   || true
+        FlightState.RUNNING || true
         outcome = rtl ? 'the vehicle may be flying: RTL' : 'nothing is sent'
     }
 
@@ -634,7 +634,7 @@ class MissionExecutorSpec extends MissionFlights {
         vehicle.ready()
         vehicle.autopilot = true
         def first = launch(hop())
-        stepUntil(State.RUNNING)
+        stepUntil(FlightState.RUNNING)
         vehicle.landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR)
         vehicle.at(0, 20)
         vehicle.next(2)
@@ -652,7 +652,7 @@ class MissionExecutorSpec extends MissionFlights {
             home Position.fromDegrees(40.444233, -7.375234, 820)
             returnHomeAndLand()
         })
-        stepUntil(State.RUNNING, back)
+        stepUntil(FlightState.RUNNING, back)
 
         then: 'armed and in RTL: not held (not AUTO); its home set; armed again in GUIDED (already armed: accepted), started'
         vehicle.commands.drop(before)*.text == ['DO_SET_HOME 40.444233 -7.375234 820.0', 'DO_SET_MODE GUIDED', 'ARM',
@@ -682,8 +682,8 @@ class MissionExecutorSpec extends MissionFlights {
         when:
         def e1 = launch(task, v1)
         def e2 = launch(task, v2)
-        stepUntil(State.RUNNING, e1)
-        stepUntil(State.RUNNING, e2)
+        stepUntil(FlightState.RUNNING, e1)
+        stepUntil(FlightState.RUNNING, e2)
         [v1, v2].each { it.landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR); it.at(0, 20); it.next(2) }
         runTo(5, e1)
         e2.step()
@@ -718,8 +718,8 @@ class MissionExecutorSpec extends MissionFlights {
         [v1, v2].each { it.ready(); it.autopilot = true }
         def e1 = launch(hop(), v1)
         def e2 = launch(hop(), v2)
-        stepUntil(State.RUNNING, e1)
-        stepUntil(State.RUNNING, e2)
+        stepUntil(FlightState.RUNNING, e1)
+        stepUntil(FlightState.RUNNING, e2)
         [v1, v2].each { it.landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR); it.at(0, 20); it.next(2) }
         e1.step()
         e2.step()

@@ -9,7 +9,7 @@ import dolphin.core.Position
 import dolphin.core.RuntimeListener
 import dolphin.core.TaskContext
 import dolphin.mission.dsl.MissionDsl
-import dolphin.mission.flight.MissionExecutor.State
+import dolphin.mission.flight.MissionExecutor.FlightState
 import spock.lang.Specification
 
 /**
@@ -70,7 +70,7 @@ abstract class MissionFlights extends Specification {
     }
 
     /** Steps at once until the executor reaches {@code state} (a willing vehicle gets there without time passing). */
-    void stepUntil(State state, MissionExecutor e = executor) {
+    void stepUntil(FlightState state, MissionExecutor e = executor) {
         for (int i = 0; i < 20 && e.state() != state; i++) {
             assert !e.completed: "${e.mission().id} ended before ${state}: ${e.completionState}; messages ${messages}"
             e.step()
@@ -79,7 +79,7 @@ abstract class MissionFlights extends Specification {
     }
 
     /** As a willing vehicle: ends the transfer or accepts the command the executor waits for, then steps; until it is in {@code state}. */
-    void driveTo(State state, MissionExecutor e = executor, FakeFlightVehicle v = vehicle) {
+    void driveTo(FlightState state, MissionExecutor e = executor, FakeFlightVehicle v = vehicle) {
         for (int i = 0; i < 30 && e.state() != state; i++) {
             def t = v.transfers.find { !it.result.done }
             def c = v.commands.find { !it.answer.done }
