@@ -40,7 +40,7 @@ final class MavlinkFleet implements Supplier<List<VehicleSample>> {
         for (MAVLinkNode n : nodes.get()) {
             VehicleView view = VehicleView.of(n.getId(), n.getType(), n.isConnected(), bound.contains(n.getId()), n.state(),
                     tasks.getOrDefault(n.getId(), ""));
-            MissionExecutor executor = MissionService.of(n.communications()).vehicle(n).executor();
+            MissionExecutor executor = MissionService.of(n.communications()).executorOn(n);
             samples.add(new VehicleSample(view, executor, () -> draw(executor.mission(), n)));
         }
         return samples;

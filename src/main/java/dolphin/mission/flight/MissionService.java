@@ -1,17 +1,12 @@
 package dolphin.mission.flight;
 
-import com.MAVLink.common.msg_mission_ack;
-import com.MAVLink.common.msg_mission_count;
-import com.MAVLink.common.msg_mission_item;
-import com.MAVLink.common.msg_mission_item_int;
 import com.MAVLink.common.msg_mission_item_reached;
-import com.MAVLink.common.msg_mission_request;
-import com.MAVLink.common.msg_mission_request_int;
 import dolphin.core.Node;
 import dolphin.mavlink.MAVLinkCommunications;
 import dolphin.mavlink.MAVLinkNode;
 import dolphin.mavlink.MessageHandler;
 import dolphin.mission.transfer.MissionTransferConfig;
+import dolphin.mission.transfer.MissionTransfers;
 import dolphin.mission.transfer.ProtocolTimers;
 import java.time.Duration;
 import java.util.Map;
@@ -62,6 +57,12 @@ public final class MissionService {
         return vehicles.computeIfAbsent(node, n -> new VehicleMissions(n, this));
     }
 
+    /** The executor flying a mission on the vehicle, or null; a vehicle never given a mission gets nothing made for it. */
+    public MissionExecutor executorOn(MAVLinkNode node) {
+        VehicleMissions v = vehicles.get(node);
+        return v == null ? null : v.executor();
+    }
+
     /** Timeout and tries of mission uploads and downloads started from now on. */
     public MissionTransferConfig transferConfig() {
         return transferConfig;
@@ -85,14 +86,15 @@ public final class MissionService {
     }
 
     private void route(MessageHandler handler) {
-        handler.on(msg_mission_request.class, (n, m) -> vehicle(n).transfers().handle(m));
-        handler.on(msg_mission_request_int.class, (n, m) -> vehicle(n).transfers().handle(m));
-        handler.on(msg_mission_ack.class, (n, m) -> vehicle(n).transfers().handle(m));
-        handler.on(msg_mission_count.class, (n, m) -> vehicle(n).transfers().handle(m));
-        handler.on(msg_mission_item_int.class, (n, m) -> vehicle(n).transfers().handle(m));
-        handler.on(msg_mission_item.class, (n, m) -> vehicle(n).transfers().handle(m));
+        // a vehicle we never gave a transfer or a mission has nothing of ours to hear them
+        MissionTransfers.MESSAGES.forEach(type -> handler.on(type, (n, m) -> {
+            VehicleMissions v = vehicles.get(n);
+            if (v != null) {
+                v.transfers().handle(m);
+            }
+        }));
         handler.on(msg_mission_item_reached.class, (n, m) -> {
-            MissionExecutor executor = vehicle(n).executor();
+            MissionExecutor executor = executorOn(n);
             if (executor != null) {
                 executor.consume(m);
                 comms.wakeScript();

@@ -29,10 +29,6 @@ public final class VehicleMissions implements MissionVehicle {
         this.transfers = new MissionTransfers(this, service.timers(), service::transferConfig);
     }
 
-    public MAVLinkNode node() {
-        return node;
-    }
-
     /** The vehicle's uploads and downloads, one at a time. */
     public MissionTransfers transfers() {
         return transfers;

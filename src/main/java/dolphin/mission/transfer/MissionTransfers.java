@@ -9,6 +9,7 @@ import com.MAVLink.common.msg_mission_request;
 import com.MAVLink.common.msg_mission_request_int;
 import java.util.ArrayDeque;
 import java.util.Deque;
+import java.util.List;
 import java.util.function.Supplier;
 
 /**
@@ -19,6 +20,11 @@ import java.util.function.Supplier;
  * messages through {@link #handle}.
  */
 public final class MissionTransfers {
+
+    /** The vehicle's messages of the mission protocol, the ones {@link #handle} takes. */
+    public static final List<Class<? extends MAVLinkMessage>> MESSAGES = List.of(msg_mission_request.class,
+            msg_mission_request_int.class, msg_mission_ack.class, msg_mission_count.class, msg_mission_item_int.class,
+            msg_mission_item.class);
 
     private final VehicleChannel vehicle;
     private final ProtocolTimers timers;
@@ -63,11 +69,6 @@ public final class MissionTransfers {
             waiting.add(transfer);
             pump();
         });
-    }
-
-    /** True while a transfer runs or waits; communications thread only. */
-    boolean busy() {
-        return active != null || !waiting.isEmpty();
     }
 
     private void pump() {

@@ -189,35 +189,23 @@ class ScriptedMissionVehicle {
     // ---- the vehicle's messages, to our ground station unless told otherwise
 
     static MAVLinkMessage request(int seq, MissionType type = MissionType.MISSION, int target = RecordingChannel.GROUND_SYSTEM) {
-        def m = new msg_mission_request()
-        m.seq = seq
-        m.mission_type = (short) type.wire()
-        m.target_system = (short) target
-        m.target_component = (short) RecordingChannel.GROUND_COMPONENT
-        m
+        addressed(new msg_mission_request(seq: seq), type, target)
     }
 
     static MAVLinkMessage requestInt(int seq, MissionType type = MissionType.MISSION, int target = RecordingChannel.GROUND_SYSTEM) {
-        def m = new msg_mission_request_int()
-        m.seq = seq
-        m.mission_type = (short) type.wire()
-        m.target_system = (short) target
-        m.target_component = (short) RecordingChannel.GROUND_COMPONENT
-        m
+        addressed(new msg_mission_request_int(seq: seq), type, target)
     }
 
     static MAVLinkMessage ack(int result, MissionType type = MissionType.MISSION, int target = RecordingChannel.GROUND_SYSTEM) {
-        def m = new msg_mission_ack()
-        m.type = (short) result
-        m.mission_type = (short) type.wire()
-        m.target_system = (short) target
-        m.target_component = (short) RecordingChannel.GROUND_COMPONENT
-        m
+        addressed(new msg_mission_ack(type: result as short), type, target)
     }
 
     static MAVLinkMessage count(int count, MissionType type = MissionType.MISSION, int target = RecordingChannel.GROUND_SYSTEM) {
-        def m = new msg_mission_count()
-        m.count = count
+        addressed(new msg_mission_count(count: count), type, target)
+    }
+
+    /** The message of the list {@code type}, to the ground station {@code target}. */
+    private static MAVLinkMessage addressed(MAVLinkMessage m, MissionType type, int target) {
         m.mission_type = (short) type.wire()
         m.target_system = (short) target
         m.target_component = (short) RecordingChannel.GROUND_COMPONENT
