@@ -18,6 +18,7 @@ import dolphin.core.Task
 import dolphin.core.TaskGuard
 import dolphin.core.TimeConstrainedTask
 import dolphin.core.WatcherTask
+import dolphin.dsl.vocabulary.Word
 import org.codehaus.groovy.runtime.InvokerHelper
 
 /**
@@ -49,6 +50,7 @@ abstract class DolphinScript extends Script implements DslScript {
     // ---- vehicles
 
     /** {@code pick { count 2; type 'UAV'; ... }}: binds free vehicles, waiting up to the timeout. */
+    @Word('Binds free vehicles that match the clauses, waiting up to the timeout: v = pick { type \'UAV\'; count 2 }')
     NodeSet pick(@DelegatesTo(value = Picker, strategy = Closure.DELEGATE_FIRST) Closure clauses) {
         Picker picker = new Picker()
         Blocks.run(clauses, picker)
@@ -60,21 +62,25 @@ abstract class DolphinScript extends Script implements DslScript {
         chosen
     }
 
+    @Word('Frees vehicles picked earlier, for other picks')
     void release(NodeSet vehicles) {
         env().release(vehicles)
     }
 
+    @Word('How long a picked vehicle may be silent before its tasks fail (seconds): connectionTimeout = 30')
     void setConnectionTimeout(Number seconds) {
         env().defaultConnectionTimeout = seconds.doubleValue()
     }
 
     /** {@code setConnectionTimeout v1: 30, v2: 60}: keys name vehicle-set variables. */
+    @Word('How long a picked vehicle may be silent before its tasks fail (seconds): connectionTimeout = 30')
     void setConnectionTimeout(Map<String, Number> timeouts) {
         timeouts.each { String key, Number secs ->
             vehicleSet('setConnectionTimeout', key).each { it.connectionTimeout = secs.doubleValue() }
         }
     }
 
+    @Word('Where the vehicle is now (waits for its first report): a position in degrees and metres above mean sea level')
     Position position(NodeSet vehicle) {
         def node = vehicle.single('position')
         Position p = node instanceof AbstractNode ? ((AbstractNode) node).awaitPosition() : node.position
@@ -84,6 +90,7 @@ abstract class DolphinScript extends Script implements DslScript {
         p
     }
 
+    @Word('The vehicle\'s remaining battery, 0 to 1 (waits for its first report)')
     double battery(NodeSet vehicle) {
         def node = vehicle.single('battery')
         node instanceof AbstractNode ? ((AbstractNode) node).batteryRemaining() : 1.0d
@@ -101,21 +108,22 @@ abstract class DolphinScript extends Script implements DslScript {
      * {@code then}/{@code run}/{@code onError} completes it and runs everything (the report's examples
      * are written this way).
      */
-    Object execute(Object what) {
+    @Word('Runs a task, or tasks on vehicle sets at once (execute v1: t1, v2: t2), and waits for the end')
+    Object execute(Object task) {
         if (pendingExecute != null) {
             throw pendingExecute.unfinished
         }
-        if (what instanceof Task) {
-            return executeTask((Task) what)
+        if (task instanceof Task) {
+            return executeTask((Task) task)
         }
-        if (what instanceof Map) {
-            return executeEntries((Map<String, Object>) what)
+        if (task instanceof Map) {
+            return executeEntries((Map<String, Object>) task)
         }
-        if (what instanceof Half) {
-            return executeEntries(['_': what])
+        if (task instanceof Half) {
+            return executeEntries(['_': task])
         }
-        throw new DslException(what == null ? 'execute: the task is null (a variable that holds no task?)'
-                : "execute: expected a task or 'v1: task1, v2: task2' entries, but got ${what.getClass().simpleName}")
+        throw new DslException(task == null ? 'execute: the task is null (a variable that holds no task?)'
+                : "execute: expected a task or 'v1: task1, v2: task2' entries, but got ${task.getClass().simpleName}")
     }
 
     protected CompletionState executeTask(Task task) {
@@ -174,66 +182,81 @@ abstract class DolphinScript extends Script implements DslScript {
 
     // ---- task constructors
 
+    @Word('A task that waits until the condition holds, then runs the task after \'then\': waitFor { c } then t')
     Then waitFor(Closure condition) {
         new Then({ Task t -> new ChoiceTask([new TaskGuard(new ClosureCondition(condition), t)]) })
     }
 
+    @Word('Runs the task after \'run\' until the condition holds, then stops it: until { c } run t (or t / { c })')
     Run until(Closure condition) {
         new Run('until { ... }', { Task t -> new ConstrainedTask(t, new ClosureCondition(condition)) })
     }
 
     /** {@code during { secs } run task}: the closure is evaluated once, now. */
+    @Word('Runs the task after \'run\' for at most this many seconds: during 30 run t')
     Run during(Closure seconds) {
         during((Number) seconds.call())
     }
 
+    @Word('Runs the task after \'run\' for at most this many seconds: during 30 run t')
     Run during(Number seconds) {
         new Run("during ${seconds}", { Task t -> new TimeConstrainedTask(t, seconds.doubleValue()) })
     }
 
+    @Word('A task that does nothing for this many seconds')
     Task idle(Number seconds) {
         new IdleTask(seconds.doubleValue())
     }
 
+    @Word('A task that runs the code once, at once')
     Task action(Closure code) {
         new ActionTask({ code.call() } as Runnable)
     }
 
+    @Word('A task that ends when the condition holds')
     Task condition(Closure condition) {
         new ConditionTask(new ClosureCondition(condition))
     }
 
+    @Word('Runs the task and handles its errors with the block after \'onError\': watch t onError { ignore() }')
     OnError watch(Task task) {
         new OnError(task)
     }
 
+    @Word('A task that runs every branch whose condition holds: allOf { when { c } then t; ... }')
     Task allOf(@DelegatesTo(value = GuardedTaskSetBuilder, strategy = Closure.DELEGATE_FIRST) Closure branches) {
         new AllOfTask(GuardedTaskSetBuilder.build('allOf', branches))
     }
 
+    @Word('A task that runs the first branch whose condition holds: oneOf { when { c } then t; ... }')
     Task oneOf(@DelegatesTo(value = GuardedTaskSetBuilder, strategy = Closure.DELEGATE_FIRST) Closure branches) {
         new ChoiceTask(GuardedTaskSetBuilder.build('oneOf', branches))
     }
 
+    @Word('Another name for oneOf: runs the first branch whose condition holds')
     Task choose(@DelegatesTo(value = GuardedTaskSetBuilder, strategy = Closure.DELEGATE_FIRST) Closure branches) {
         new ChoiceTask(GuardedTaskSetBuilder.build('choose', branches))
     }
 
+    @Word('The platform task with this id')
     Task task(String id) {
         env().platform.getPlatformTask(id)
     }
 
     // ---- program-level words
 
+    @Word('Prints a message on the console (and the web view)')
     void message(Object text) {
         context.listener().message(String.valueOf(text))
     }
 
+    @Word('Posts signals other branches can consume or poll: post ready: true')
     void post(Map<String, Object> signals) {
         context.signals().post(signals)
         message("posted ${signals}")
     }
 
+    @Word('Takes posted signals if they are all there: true when it did')
     boolean consume(Map<String, Object> signals) {
         boolean ok = context.signals().consume(signals)
         if (ok) {
@@ -242,33 +265,40 @@ abstract class DolphinScript extends Script implements DslScript {
         ok
     }
 
+    @Word('Whether a signal is posted (without taking it)')
     boolean poll(String key) {
         context.signals().poll(key)
     }
 
+    @Word('Whether a signal is posted (without taking it)')
     boolean poll(Map<String, Closure> tests) {
         context.signals().poll(tests.collectEntries { k, c -> [k, { v -> c.call(v) as boolean } as java.util.function.Predicate] })
     }
 
     /** Asks for one line of input and evaluates it as script code, with this script's variables and words. */
+    @Word('Asks the user for a line of input and evaluates it as script code')
     Object ask(String prompt) {
         String line = context.readInput(prompt)
         line == null ? null : context.evaluate(line)
     }
 
+    @Word('Ends the script at once, with the reason')
     void halt(String why = 'halt') {
         throw new Halt(why)
     }
 
+    @Word('Pauses the script for this many seconds')
     void pause(Number seconds) {
         env().pause(seconds.doubleValue())
     }
 
     /** Groovy's sleep, on the runtime's clock. */
+    @Word('Pauses the script for this many milliseconds (Groovy\'s sleep, on the runtime\'s clock)')
     void sleep(long millis) {
         env().pause(millis / 1000d)
     }
 
+    @Word('A position: latitude and longitude in degrees, height in metres above mean sea level')
     Position location(Number lat, Number lon, Number height = 0) {
         double la = lat.doubleValue()
         double lo = lon.doubleValue()
@@ -281,6 +311,7 @@ abstract class DolphinScript extends Script implements DslScript {
         Position.fromDegrees(la, lo, height.doubleValue())
     }
 
+    @Word('A circular area: a centre and a radius in metres')
     Area area(Position center, Number radius) {
         new Area(center, radius.doubleValue())
     }
@@ -315,6 +346,7 @@ abstract class DolphinScript extends Script implements DslScript {
 
         Then(Closure<Task> make) { this.make = make }
 
+        @Word('The task that runs when the first half\'s condition holds')
         Task then(Task task) { make.call(task) }
 
         String getOpening() { 'waitFor { ... }' }
@@ -334,6 +366,7 @@ abstract class DolphinScript extends Script implements DslScript {
             this.make = make
         }
 
+        @Word('The task the first half runs, bounded by its condition or time')
         Task run(Task task) { make.call(task) }
 
         String getOpening() { opening }
@@ -349,6 +382,7 @@ abstract class DolphinScript extends Script implements DslScript {
 
         OnError(Task task) { this.task = task }
 
+        @Word('How watch handles the task\'s errors: ignore() or propagate() (the default)')
         Task onError(@DelegatesTo(value = ErrorDecision, strategy = Closure.DELEGATE_FIRST) Closure handler) {
             new WatcherTask(task, { String message ->
                 ErrorDecision decision = new ErrorDecision()
@@ -417,8 +451,10 @@ abstract class DolphinScript extends Script implements DslScript {
     static final class ErrorDecision {
         ErrorHandler.Decision decision = ErrorHandler.Decision.PROPAGATE
 
+        @Word('The watched task\'s error is ignored: the task counts as done')
         void ignore() { decision = ErrorHandler.Decision.IGNORE }
 
+        @Word('The watched task\'s error goes on to the enclosing task (the default)')
         void propagate() { decision = ErrorHandler.Decision.PROPAGATE }
     }
 }

@@ -2,6 +2,7 @@ package dolphin.dsl
 
 import dolphin.core.Task
 import dolphin.core.TaskGuard
+import dolphin.dsl.vocabulary.Word
 
 /** The {@code when { cond } then task} branches of allOf, oneOf and choose. */
 class GuardedTaskSetBuilder {
@@ -16,6 +17,7 @@ class GuardedTaskSetBuilder {
         b.guards
     }
 
+    @Word('A branch: when { condition } then task')
     DolphinScript.Then when(Closure condition) {
         new DolphinScript.Then({ Task t ->
             guards << new TaskGuard(new ClosureCondition(condition), t)

@@ -3,6 +3,7 @@ package dolphin.dsl
 import dolphin.core.Area
 import dolphin.core.NodeFilter
 import dolphin.core.Position
+import dolphin.dsl.vocabulary.Word
 
 /** The clauses of {@code pick { ... }}; a repeated clause replaces the earlier one. */
 class Picker {
@@ -15,6 +16,7 @@ class Picker {
     private List<String> payload = []
     private Area area
 
+    @Word('How many vehicles to pick (1 unless given)')
     void count(int n) {
         if (n <= 0) {
             throw new DslException("pick: count must be positive, got ${n}")
@@ -22,16 +24,22 @@ class Picker {
         requestedCount = n
     }
 
-    void type(String t) { type = t }
+    @Word('The vehicles\' Dolphin type: \'UAV\', \'UGV\', \'USV\', \'UUV\'')
+    void type(String name) { type = name }
 
-    void id(Object i) { id = String.valueOf(i) }
+    @Word('The vehicle with this id (its MAVLink system id)')
+    void id(Object systemId) { id = String.valueOf(systemId) }
 
+    @Word('Vehicles that carry all these payloads')
     void payload(String... names) { payload = names as List }
 
-    void region(Area a) { area = a }
+    @Word('Vehicles inside this area')
+    void region(Area area) { this.area = area }
 
+    @Word('Vehicles inside this area')
     void region(Position center, Number radius) { area = new Area(center, radius.doubleValue()) }
 
+    @Word('How long to wait for such vehicles, in seconds (0: only those there now)')
     void timeout(Number seconds) {
         if (seconds.doubleValue() < 0) {
             throw new DslException("pick: timeout must not be negative, got ${seconds}")

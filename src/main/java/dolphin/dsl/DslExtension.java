@@ -26,6 +26,14 @@ public interface DslExtension {
         return List.of();
     }
 
+    /**
+     * The classes of the objects {@link #words} makes and those whose static methods
+     * {@link #addImports} imports, read for the language's {@link dolphin.dsl.vocabulary.Vocabulary}.
+     */
+    default List<Class<?>> wordClasses() {
+        return List.of();
+    }
+
     /** Groovy category classes (e.g. extra units) active while a script runs. */
     default List<Class<?>> categories() {
         return List.of();

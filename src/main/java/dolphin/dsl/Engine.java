@@ -7,6 +7,7 @@ import dolphin.core.RuntimeListener;
 import dolphin.core.SystemClock;
 import dolphin.core.TaskEvent;
 import dolphin.core.TaskTree;
+import dolphin.dsl.vocabulary.Vocabulary;
 import groovy.lang.Binding;
 import groovy.lang.Closure;
 import groovy.lang.GroovyClassLoader;
@@ -105,6 +106,13 @@ public final class Engine implements AutoCloseable {
     /** Compiles a script without running it; returns its mistakes, empty when there are none. */
     public List<ScriptError> check(String source, String file) {
         return new ScriptCompiler(extensions).check(source, file);
+    }
+
+    /** The words scripts may write with this engine's extensions (docs/editors.md, "One vocabulary"). */
+    public Vocabulary vocabulary() {
+        List<Class<?>> words = new ArrayList<>();
+        extensions.forEach(e -> words.addAll(e.wordClasses()));
+        return Vocabulary.of(ScriptCompiler.baseClass(), words, categories());
     }
 
     public List<ScriptError> check(Path file) throws IOException {

@@ -1,5 +1,6 @@
 package dolphin.dsl;
 
+import dolphin.dsl.vocabulary.Suggestions;
 import groovy.lang.MissingMethodException;
 import groovy.lang.MissingPropertyException;
 import java.util.Arrays;
@@ -44,7 +45,7 @@ final class RuntimeErrors {
         }
         if (t instanceof MissingMethodException m) {
             return "unknown command '" + m.getMethod() + "'" + arguments(m.getArguments())
-                    + suggestion(m.getMethod(), words) + ". Expected a DSL word, a Groovy method or a closure variable.";
+                    + Suggestions.didYouMean(m.getMethod(), words) + ". Expected a DSL word, a Groovy method or a closure variable.";
         }
         if (t instanceof MissingPropertyException p) {
             if ("execute".equals(p.getProperty())) {
@@ -55,7 +56,7 @@ final class RuntimeErrors {
                         + " its arguments, e.g. '" + p.getProperty() + "()', and in parentheses when it is the argument of"
                         + " another command, e.g. 'execute(during(10) run task)'";
             }
-            return "unknown name '" + p.getProperty() + "'" + suggestion(p.getProperty(), variables)
+            return "unknown name '" + p.getProperty() + "'" + Suggestions.didYouMean(p.getProperty(), variables)
                     + ". Expected a variable assigned earlier in the script (names are case-sensitive)";
         }
         if (t instanceof GroovyCastException c) {
@@ -95,9 +96,4 @@ final class RuntimeErrors {
     private static final java.util.Map<String, String> OPERATORS = java.util.Map.of(
             "rightShift", ">>", "or", "|", "div", "/", "getAt", "[ ]", "plus", "+", "minus", "-", "and", "&", "xor", "^");
 
-    /** ", did you mean 'x'?" for a known name within two edits, or the same but for case. */
-    static String suggestion(String name, Collection<String> known) {
-        List<String> close = Blocks.near(name, known);
-        return close.isEmpty() ? "" : "; did you mean " + close.stream().map(k -> "'" + k + "'").collect(Collectors.joining(" or ")) + "?";
-    }
 }

@@ -29,6 +29,15 @@ final class ScriptCompiler {
         this.extensions = extensions;
     }
 
+    /** The scripts' base class: a Groovy class, compiled after this one, so found by name. */
+    static Class<?> baseClass() {
+        try {
+            return Class.forName(BASE_CLASS);
+        } catch (ClassNotFoundException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
     private CompilerConfiguration configuration() {
         CompilerConfiguration config = new CompilerConfiguration();
         config.setScriptBaseClass(BASE_CLASS);

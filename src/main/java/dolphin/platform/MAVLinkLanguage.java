@@ -7,6 +7,7 @@ import dolphin.core.NodeSet;
 import dolphin.dsl.DslException;
 import dolphin.dsl.DslExtension;
 import dolphin.dsl.ScriptContext;
+import dolphin.dsl.vocabulary.Word;
 import dolphin.mavlink.codec.MessageTable;
 import dolphin.mission.dsl.MissionRecorder;
 import dolphin.mission.dsl.PositionWords;
@@ -45,6 +46,15 @@ public final class MAVLinkLanguage implements DslExtension {
     }
 
     @Override
+    public List<Class<?>> wordClasses() {
+        try {
+            return List.of(Words.class, PositionWords.class, Class.forName("dolphin.mission.dsl.MissionDsl"));
+        } catch (ClassNotFoundException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    @Override
     public List<Object> words(ScriptContext context) {
         return List.of(new Words(context), new PositionWords());
     }
@@ -60,6 +70,7 @@ public final class MAVLinkLanguage implements DslExtension {
         }
 
         /** Sends a raw MAVLink message to every vehicle of the set, at once (not a task). */
+        @Word("Sends a MAVLink message to every vehicle of the set, at once")
         public void sendMessage(NodeSet vehicles, MAVLinkMessage message) {
             for (Node n : vehicles) {
                 if (!(n instanceof MAVLinkNode node)) {
@@ -75,6 +86,7 @@ public final class MAVLinkLanguage implements DslExtension {
          * home is the vehicle's item 0 and whose points are its items 1, 2, ... Blocks the script
          * until the download ends; fails with the download's error.
          */
+        @Word("The vehicle's current mission, downloaded, as a mission task")
         public MissionTask downloadMission(Object vehicle) {
             MAVLinkNode node = single("downloadMission", vehicle);
             TransferResult r;
@@ -99,6 +111,7 @@ public final class MAVLinkLanguage implements DslExtension {
          * false before any, as ArduPilot sends FENCE_STATUS only with its fence on. A condition:
          * {@code waitFor { fenceBreached(v) } then ...}, {@code survey / { fenceBreached(v) }}.
          */
+        @Word("Whether the vehicle is outside its fence now")
         public boolean fenceBreached(Object vehicle) {
             return single("fenceBreached", vehicle).state().fenceBreached();
         }
@@ -111,10 +124,12 @@ public final class MAVLinkLanguage implements DslExtension {
          * stays as the vehicle has it unless {@code enableFence: true}; items lower than home plus the
          * clearance are refused at the flight unless {@code allowBelowHome: true}.
          */
+        @Word("A mission task from a mission file (QGroundControl .plan, .waypoints, ...); options enableFence, allowBelowHome, name")
         public MissionTask missionFromFile(String path) {
             return missionFromFile(Map.of(), path);
         }
 
+        @Word("A mission task from a mission file (QGroundControl .plan, .waypoints, ...); options enableFence, allowBelowHome, name")
         public MissionTask missionFromFile(Map<String, Object> options, String path) {
             for (String key : options.keySet()) {
                 if (!List.of("enableFence", "name", "allowBelowHome").contains(key)) {

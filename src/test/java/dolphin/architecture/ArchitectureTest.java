@@ -33,6 +33,7 @@ class ArchitectureTest {
     private static final String PLATFORM = "MAVLink platform";
     private static final String SIMULATOR = "simulator";
     private static final String WEB = "web view";
+    private static final String EDITOR = "editor support";
     private static final String CLI = "command line";
 
     @ArchTest
@@ -48,6 +49,7 @@ class ArchitectureTest {
             .layer(PLATFORM).definedBy("dolphin.platform..")
             .layer(SIMULATOR).definedBy("dolphin.sim..")
             .layer(WEB).definedBy("dolphin.web..")
+            .layer(EDITOR).definedBy("dolphin.editor..")
             .layer(CLI).definedBy("dolphin.cli..")
             .whereLayer(CORE).mayNotAccessAnyLayer()
             .whereLayer(DSL).mayOnlyAccessLayers(CORE)
@@ -60,8 +62,9 @@ class ArchitectureTest {
             .whereLayer(PLATFORM).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE)
             .whereLayer(SIMULATOR).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, PLATFORM)
             .whereLayer(WEB).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, PLATFORM)
+            .whereLayer(EDITOR).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, PLATFORM)
             .whereLayer(CLI).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, PLATFORM,
-                    SIMULATOR, WEB);
+                    SIMULATOR, WEB, EDITOR);
 
     @ArchTest
     static final ArchRule noPackageCycles = slices().matching("dolphin.(**)").should().beFreeOfCycles();

@@ -22,6 +22,10 @@ import dolphin.mission.model.RallyPoints
 import dolphin.mission.model.SurveyArea
 import dolphin.mission.model.SurveyDirection
 import dolphin.mission.model.TakeOffPoint
+import dolphin.dsl.vocabulary.Suggestions
+import dolphin.dsl.vocabulary.Vocabulary
+import dolphin.dsl.vocabulary.Word
+import dolphin.dsl.vocabulary.WordEntry
 import groovy.transform.CompileStatic
 import groovy.transform.PackageScope
 import org.codehaus.groovy.runtime.InvokerHelper
@@ -48,42 +52,9 @@ import org.codehaus.groovy.runtime.InvokerHelper
 @CompileStatic
 class MissionBuilder {
 
-    /** The accepted forms of every command, for error messages; also the list of command names. */
+    /** The commands, read from this class's {@link Word} methods: their names and forms for error messages. */
     @PackageScope
-    static final Map<String, List<String>> FORMS = [
-            name                      : ['(name)'],
-            allowBelowHome            : ['(true or false)'],
-            home                      : ['(lat, lon[, hae])', '(position)'],
-            goPos                     : ['(lat, lon[, hae])', '(position)'],
-            takeOff                   : ['(position[, pitch])'],
-            takeOffWithYaw            : ['(position, pitch[, yaw])'],
-            move                      : ['(north, east[, up])', '(position, { north n; east e; down d })'],
-            moveFromHome              : ['(north, east, up)'],
-            moveAndLoiterPos          : ['(north, east, up[, radius])'],
-            moveAndLoiterTurns        : ['(north, east, up[, turns[, radius]])'],
-            moveAndLoiterTime         : ['(north, east, up, seconds[, radius])'],
-            moveAndLoiterFromHome     : ['(north, east, up[, radius])'],
-            moveAndLoiterTurnsFromHome: ['(north, east, up[, turns[, radius]])'],
-            moveAndLoiterTimeFromHome : ['(north, east, up, seconds[, radius])'],
-            loiterPos                 : ['(position[, radius])', '(lat, lon, hae[, radius])'],
-            loiterTurns               : ['(lat, lon, hae[, turns[, radius]])'],
-            loiterTime                : ['(lat, lon, hae, seconds[, radius])'],
-            landingPoint              : ['(lat, lon[, hae[, yaw[, landMode]]])', '(position[, yaw[, landMode]])'],
-            returnHome                : ['()'],
-            returnHomeAndLoiter       : ['([radius])'],
-            returnHomeAndLand         : ['([yaw[, landMode]])'],
-            speed                     : ['(speed[, speedType])'],
-            altitude                  : ['(height)'],
-            delay                     : ['(seconds)'],
-            surveyArea                : ['(length, width[, spacing][, direction])', '(position, length, width[, spacing][, direction])'],
-            capturePhoto              : ['()'],
-            captureSeveralPhotos      : ['(photos[, interval])'],
-            captureUntilStop          : ['([interval])'],
-            stopCapturing             : ['()'],
-            jumpToItem                : ['(item[, repetitions])'],
-            fence                     : ['{ inclusion polygon(p1, p2, p3, ...); exclusion circle(center, radius); returnPoint p; enable true }'],
-            rally                     : ['(position, ...)'],
-    ].asImmutable() as Map<String, List<String>>
+    static final Map<String, WordEntry> COMMANDS = Vocabulary.wordsOf(MissionBuilder)
 
     /** The most items a MAVLink mission can have (seq and count are 16-bit). */
     @PackageScope
@@ -115,11 +86,13 @@ class MissionBuilder {
     // ---- naming, safety and home
 
     /** Allows items lower than home plus the clearance (HeightCheck): the script's explicit choice. */
+    @Word('Allows items lower than home plus 2 m: the script\'s explicit choice')
     void allowBelowHome(boolean allowed) {
         belowHomeAllowed = allowed
     }
 
     /** The mission's name: its task id in messages and exports. */
+    @Word('The mission\'s name: its task id in messages and exports')
     void name(String name) {
         if (name == null || name.trim().isEmpty()) {
             throw new DslException('name: the mission name must not be empty')
@@ -131,10 +104,12 @@ class MissionBuilder {
      * The mission's home: item 0 (the home placeholder) and, when flown, the vehicle's home
      * (DO_SET_HOME before the upload). Emits no item and registers no position.
      */
+    @Word('The mission\'s home (item 0), set on the vehicle before the upload; adds no item')
     void home(Number lat, Number lon, Number hae = 0) {
         setHome(Args.position('home', lat, lon, hae))
     }
 
+    @Word('The mission\'s home (item 0), set on the vehicle before the upload; adds no item')
     void home(Position position) {
         setHome(Args.position('home', position))
     }
@@ -149,10 +124,12 @@ class MissionBuilder {
     // ---- going somewhere
 
     /** NAV_WAYPOINT at (lat, lon, hae); registers it. */
+    @Word('A waypoint at a position (degrees, metres above mean sea level)')
     void goPos(Number lat, Number lon, Number hae = 0) {
         waypoint('goPos', Args.position('goPos', lat, lon, hae))
     }
 
+    @Word('A waypoint at a position (degrees, metres above mean sea level)')
     void goPos(Position position) {
         waypoint('goPos', Args.position('goPos', position))
     }
@@ -161,40 +138,48 @@ class MissionBuilder {
      * NAV_TAKEOFF at the position, pitch in degrees; registers it, so relative commands after it
      * start at the take-off height (the report: "move the drone relative to its position").
      */
+    @Word('Take-off to the position; pitch in degrees (planes)')
     void takeOff(Position position, Number pitch = TakeOffPoint.DEFAULT_PITCH) {
         addRegistered(new TakeOffPoint('takeOff', Args.position('takeOff', position), (float) Args.number('takeOff', 'pitch', pitch), Float.NaN))
     }
 
+    @Word('Take-off to the position with a pitch and a heading, degrees')
     void takeOffWithYaw(Position position, Number pitch, Number yaw = Float.NaN) {
         addRegistered(new TakeOffPoint('takeOffWithYaw', Args.position('takeOffWithYaw', position),
                 (float) Args.number('takeOffWithYaw', 'pitch', pitch), Args.yaw('takeOffWithYaw', yaw)))
     }
 
     /** NAV_WAYPOINT north/east/up metres from the last registered position (or home); registers it. */
+    @Word('A waypoint north, east and up of the last position, metres; move(p, { north n; east e }) is a position')
     void move(Number north, Number east, Number up = 0) {
         waypoint('move', relative('move', lastPosition('move'), north, east, up))
     }
 
     /** Inside a mission too, move(position, { ... }) is the position word: it returns a position and adds nothing. */
-    Position move(Position from, @DelegatesTo(value = NedBuilder, strategy = Closure.DELEGATE_FIRST) Closure offset) {
-        NedBuilder.build('move', offset).from(Args.position('move', from))
+    @Word('A waypoint north, east and up of the last position, metres; move(p, { north n; east e }) is a position')
+    Position move(Position position, @DelegatesTo(value = NedBuilder, strategy = Closure.DELEGATE_FIRST) Closure offset) {
+        NedBuilder.build('move', offset).from(Args.position('move', position))
     }
 
-    Position move(Position from, NedOffset offset) {
-        new PositionWords().move(from, offset)
+    @Word('A waypoint north, east and up of the last position, metres; move(p, { north n; east e }) is a position')
+    Position move(Position position, NedOffset offset) {
+        new PositionWords().move(position, offset)
     }
 
     /** NAV_WAYPOINT north/east/up metres from home; registers it. */
+    @Word('A waypoint north, east and up of home, metres')
     void moveFromHome(Number north, Number east, Number up) {
         waypoint('moveFromHome', relative('moveFromHome', homeFor('moveFromHome'), north, east, up))
     }
 
+    @Word('Moves north, east and up of the last position (metres) and circles there until the mission goes on')
     void moveAndLoiterPos(Number north, Number east, Number up, Number radius = LoiterPoint.DEFAULT_RADIUS) {
         String w = 'moveAndLoiterPos'
         Position p = relative(w, lastPosition(w), north, east, up)
         addRegistered(new LoiterPoint(w, p, Args.radius(w, radius)))
     }
 
+    @Word('Moves north, east and up of the last position (metres) and circles there a number of turns')
     void moveAndLoiterTurns(Number north, Number east, Number up, Number turns = LoiterTurnsPoint.DEFAULT_TURNS,
                             Number radius = LoiterPoint.DEFAULT_RADIUS) {
         String w = 'moveAndLoiterTurns'
@@ -202,18 +187,21 @@ class MissionBuilder {
         addRegistered(new LoiterTurnsPoint(w, p, turnCount(w, turns), Args.radius(w, radius)))
     }
 
+    @Word('Moves north, east and up of the last position (metres) and circles there for a time, seconds')
     void moveAndLoiterTime(Number north, Number east, Number up, Number seconds, Number radius = LoiterPoint.DEFAULT_RADIUS) {
         String w = 'moveAndLoiterTime'
         Position p = relative(w, lastPosition(w), north, east, up)
         addRegistered(new LoiterTimePoint(w, p, loiterSeconds(w, seconds), Args.radius(w, radius)))
     }
 
+    @Word('Moves north, east and up of home (metres) and circles there until the mission goes on')
     void moveAndLoiterFromHome(Number north, Number east, Number up, Number radius = LoiterPoint.DEFAULT_RADIUS) {
         String w = 'moveAndLoiterFromHome'
         Position p = relative(w, homeFor(w), north, east, up)
         addRegistered(new LoiterPoint(w, p, Args.radius(w, radius)))
     }
 
+    @Word('Moves north, east and up of home (metres) and circles there a number of turns')
     void moveAndLoiterTurnsFromHome(Number north, Number east, Number up, Number turns = LoiterTurnsPoint.DEFAULT_TURNS,
                                     Number radius = LoiterPoint.DEFAULT_RADIUS) {
         String w = 'moveAndLoiterTurnsFromHome'
@@ -221,6 +209,7 @@ class MissionBuilder {
         addRegistered(new LoiterTurnsPoint(w, p, turnCount(w, turns), Args.radius(w, radius)))
     }
 
+    @Word('Moves north, east and up of home (metres) and circles there for a time, seconds')
     void moveAndLoiterTimeFromHome(Number north, Number east, Number up, Number seconds,
                                    Number radius = LoiterPoint.DEFAULT_RADIUS) {
         String w = 'moveAndLoiterTimeFromHome'
@@ -230,31 +219,37 @@ class MissionBuilder {
 
     // ---- loitering and landing at a given position (none of these registers it)
 
+    @Word('Circles a position until the mission goes on; radius in metres')
     void loiterPos(Position position, Number radius = LoiterPoint.DEFAULT_RADIUS) {
         add(new LoiterPoint('loiterPos', Args.position('loiterPos', position), Args.radius('loiterPos', radius)))
     }
 
+    @Word('Circles a position until the mission goes on; radius in metres')
     void loiterPos(Number lat, Number lon, Number hae, Number radius = LoiterPoint.DEFAULT_RADIUS) {
         add(new LoiterPoint('loiterPos', Args.position('loiterPos', lat, lon, hae), Args.radius('loiterPos', radius)))
     }
 
+    @Word('Circles a position a number of turns; radius in metres')
     void loiterTurns(Number lat, Number lon, Number hae, Number turns = LoiterTurnsPoint.DEFAULT_TURNS,
                      Number radius = LoiterPoint.DEFAULT_RADIUS) {
         String w = 'loiterTurns'
         add(new LoiterTurnsPoint(w, Args.position(w, lat, lon, hae), turnCount(w, turns), Args.radius(w, radius)))
     }
 
+    @Word('Circles a position for a time, seconds; radius in metres')
     void loiterTime(Number lat, Number lon, Number hae, Number seconds, Number radius = LoiterPoint.DEFAULT_RADIUS) {
         String w = 'loiterTime'
         add(new LoiterTimePoint(w, Args.position(w, lat, lon, hae), loiterSeconds(w, seconds), Args.radius(w, radius)))
     }
 
     /** NAV_LAND; yaw NaN lets the vehicle choose; landMode is PRECISION_LAND_MODE (0 disabled). */
+    @Word('Lands at a position; yaw in degrees, landMode 0 (plain) or a precision-landing mode')
     void landingPoint(Number lat, Number lon, Number hae = 0, Number yaw = Float.NaN, Number landMode = 0) {
         String w = 'landingPoint'
         add(new LandingPoint(w, Args.position(w, lat, lon, hae), Args.yaw(w, yaw), Args.landMode(w, landMode)))
     }
 
+    @Word('Lands at a position; yaw in degrees, landMode 0 (plain) or a precision-landing mode')
     void landingPoint(Position position, Number yaw = Float.NaN, Number landMode = 0) {
         String w = 'landingPoint'
         add(new LandingPoint(w, Args.position(w, position), Args.yaw(w, yaw), Args.landMode(w, landMode)))
@@ -263,17 +258,20 @@ class MissionBuilder {
     // ---- home again (each registers where it ends)
 
     /** NAV_WAYPOINT over home at the last registered height; registers it. */
+    @Word('A waypoint over home at the last height')
     void returnHome() {
         waypoint('returnHome', overHome('returnHome'))
     }
 
     /** NAV_LOITER_UNLIM over home at the last registered height; registers it. */
+    @Word('Flies over home at the last height and circles there; radius in metres')
     void returnHomeAndLoiter(Number radius = LoiterPoint.DEFAULT_RADIUS) {
         String w = 'returnHomeAndLoiter'
         addRegistered(new LoiterPoint(w, overHome(w), Args.radius(w, radius)))
     }
 
     /** NAV_LAND at home: the vehicle flies there at the height it has, then lands; registers home. */
+    @Word('Flies to home and lands there')
     void returnHomeAndLand(Number yaw = Float.NaN, Number landMode = 0) {
         String w = 'returnHomeAndLand'
         Position h = homeFor(w)
@@ -284,6 +282,7 @@ class MissionBuilder {
     // ---- speed, height, time
 
     /** DO_CHANGE_SPEED: m/s; speedType 0 airspeed (default), 1 ground speed, 2 climb, 3 descent. */
+    @Word('Changes speed, m/s; speedType 0 airspeed, 1 ground speed, 2 climb, 3 descent')
     void speed(Number newSpeed, Number speedType = ChangeSpeed.DEFAULT_TYPE) {
         add(new ChangeSpeed((float) Args.positive('speed', 'speed', newSpeed), Args.speedType('speed', speedType)))
     }
@@ -292,12 +291,14 @@ class MissionBuilder {
      * A NAV_WAYPOINT at the last registered position (or home) at the new height, metres above mean
      * sea level (ArduPilot rejects DO_CHANGE_ALTITUDE items: docs/decisions.md, "Missions"); registers that position.
      */
+    @Word('A waypoint at the last position at a new height, metres above mean sea level')
     void altitude(Number height) {
         Position from = lastPosition('altitude')
         waypoint('altitude', from.atHeight(Args.number('altitude', 'height', height)))
     }
 
     /** NAV_DELAY: wait this many seconds before the next navigation command. */
+    @Word('Waits this many seconds before the next navigation item')
     void delay(Number seconds) {
         add(new DelayCommand((float) Args.notNegative('delay', 'time', seconds)))
     }
@@ -305,20 +306,24 @@ class MissionBuilder {
     // ---- survey
 
     /** The survey pattern of SurveyArea from the last registered position (or home); registers that base. */
+    @Word('A lawnmower survey of a length by width rectangle, lines spacing metres apart')
     void surveyArea(Number length, Number width, Number spacing = SurveyArea.DEFAULT_SPACING,
                     String direction = SurveyArea.DEFAULT_DIRECTION.name()) {
         survey(lastPosition('surveyArea'), length, width, spacing, direction)
     }
 
+    @Word('A lawnmower survey of a length by width rectangle, lines spacing metres apart')
     void surveyArea(Number length, Number width, String direction) {
         survey(lastPosition('surveyArea'), length, width, SurveyArea.DEFAULT_SPACING, direction)
     }
 
+    @Word('A lawnmower survey of a length by width rectangle, lines spacing metres apart')
     void surveyArea(Position base, Number length, Number width, Number spacing = SurveyArea.DEFAULT_SPACING,
                     String direction = SurveyArea.DEFAULT_DIRECTION.name()) {
         survey(Args.position('surveyArea', base), length, width, spacing, direction)
     }
 
+    @Word('A lawnmower survey of a length by width rectangle, lines spacing metres apart')
     void surveyArea(Position base, Number length, Number width, String direction) {
         survey(Args.position('surveyArea', base), length, width, SurveyArea.DEFAULT_SPACING, direction)
     }
@@ -347,11 +352,13 @@ class MissionBuilder {
     // ---- camera
 
     /** IMAGE_START_CAPTURE for one picture. */
+    @Word('Takes one photo')
     void capturePhoto() {
         add(new CameraPoint('capturePhoto', 0f, 1))
     }
 
     /** IMAGE_START_CAPTURE for {@code photos} pictures, {@code timeBetween} seconds apart. */
+    @Word('Takes photos, timeBetween seconds apart')
     void captureSeveralPhotos(Number photos, Number timeBetween = CameraPoint.DEFAULT_INTERVAL) {
         String w = 'captureSeveralPhotos'
         int n = Args.whole(w, 'number of photos', photos, 1, Integer.MAX_VALUE)
@@ -359,11 +366,13 @@ class MissionBuilder {
     }
 
     /** IMAGE_START_CAPTURE every {@code timeBetween} seconds until stopCapturing. */
+    @Word('Takes a photo every timeBetween seconds until stopCapturing')
     void captureUntilStop(Number timeBetween = CameraPoint.DEFAULT_INTERVAL) {
         add(new CameraPoint('captureUntilStop', (float) Args.positive('captureUntilStop', 'interval', timeBetween), 0))
     }
 
     /** IMAGE_STOP_CAPTURE. */
+    @Word('Stops taking photos')
     void stopCapturing() {
         add(new CameraStopPoint())
     }
@@ -375,6 +384,7 @@ class MissionBuilder {
      * station sends it to item {@code item} (the uploaded seq, home = 0), at most {@code repetitions}
      * times. Emits no item.
      */
+    @Word('When the item before it is reached, goes back to item number item, at most repetitions times')
     void jumpToItem(Number item, Number repetitions = 1) {
         String w = 'jumpToItem'
         int target = Args.whole(w, 'item', item, 0, MAX_ITEMS - 1)
@@ -390,16 +400,18 @@ class MissionBuilder {
     // ---- airspace (docs/airspace.md)
 
     /** The mission's geofence, uploaded before it; {@code enable true} switches it on at the start. */
-    void fence(@DelegatesTo(value = FenceBuilder, strategy = Closure.DELEGATE_FIRST) Closure body) {
+    @Word('The mission\'s geofence: inclusion and exclusion polygons and circles, a return point')
+    void fence(@DelegatesTo(value = FenceBuilder, strategy = Closure.DELEGATE_FIRST) Closure regions) {
         if (!missionFence.isEmpty()) {
             throw new DslException('fence: the mission has a fence already: one fence { } block a mission')
         }
-        FenceBuilder b = FenceBuilder.build(body)
+        FenceBuilder b = FenceBuilder.build(regions)
         missionFence = b.fence()
         fenceEnabled = b.enabled()
     }
 
     /** Rally points, uploaded before the mission: where the vehicle may return instead of home. */
+    @Word('Rally points: where the vehicle may return instead of home')
     void rally(Position... points) {
         if (points == null || points.length == 0) {
             throw new DslException('rally: expected one or more positions')
@@ -523,10 +535,10 @@ class MissionBuilder {
      */
     def methodMissing(String name, Object args) {
         Object[] argv = args instanceof Object[] ? (Object[]) args : [args] as Object[]
-        if (FORMS.containsKey(name)) {
-            throw new DslException("${name}: expected ${FORMS[name].join(' or ')}, got ${types(argv)}")
+        if (COMMANDS.containsKey(name)) {
+            throw new DslException("${name}: expected ${COMMANDS[name].formsText()}, got ${types(argv)}")
         }
-        List<String> close = Blocks.near(name, FORMS.keySet())
+        List<String> close = Suggestions.near(name, COMMANDS.keySet())
         if (!close.isEmpty()) {
             try {
                 return InvokerHelper.invokeMethod(body.owner, name, argv)
@@ -543,7 +555,7 @@ class MissionBuilder {
     /** No properties: names go on to the script, except that a command without its () gets a hint. */
     @Override
     Object getProperty(String name) {
-        if (FORMS.containsKey(name)) {
+        if (COMMANDS.containsKey(name)) {
             try {
                 return InvokerHelper.getProperty(body.owner, name)
             } catch (GroovyRuntimeException ignored) {

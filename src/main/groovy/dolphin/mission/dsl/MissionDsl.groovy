@@ -5,6 +5,7 @@ import dolphin.core.Position
 import dolphin.dsl.DolphinScript
 import dolphin.mission.flight.MissionTask
 import dolphin.mission.model.Mission
+import dolphin.dsl.vocabulary.Word
 import groovy.transform.CompileStatic
 
 import java.util.concurrent.atomic.AtomicInteger
@@ -30,14 +31,15 @@ final class MissionDsl {
      * mission commands come first; script variables and words stay visible. The default name is
      * {@code MissionPlan_line<N>}, N being the script line of the {@code mission} word.
      */
-    static MissionTask mission(@DelegatesTo(value = MissionBuilder, strategy = Closure.DELEGATE_FIRST) Closure body) {
-        if (body == null) {
+    @Word('A mission: the block\'s commands as one task, flown by the vehicles it runs on')
+    static MissionTask mission(@DelegatesTo(value = MissionBuilder, strategy = Closure.DELEGATE_FIRST) Closure commands) {
+        if (commands == null) {
             throw new dolphin.dsl.DslException('mission: expected a block of mission commands, mission { ... }')
         }
-        MissionBuilder builder = new MissionBuilder(defaultName(), body)
-        Blocks.run(body, builder)
+        MissionBuilder builder = new MissionBuilder(defaultName(), commands)
+        Blocks.run(commands, builder)
         Mission m = builder.build()
-        recorded(body.thisObject, m)
+        recorded(commands.thisObject, m)
         new MissionTask(m)
     }
 
@@ -51,13 +53,15 @@ final class MissionDsl {
     }
 
     /** {@code pos { lat x; lon y; hae h }}: a position in degrees and metres above mean sea level; each defaults to 0. */
-    static Position pos(@DelegatesTo(value = PositionBuilder, strategy = Closure.DELEGATE_FIRST) Closure body) {
-        PositionBuilder.build(body)
+    @Word('A position: pos { lat 40.1; lon -8.6; hae 120 }, degrees and metres above mean sea level')
+    static Position pos(@DelegatesTo(value = PositionBuilder, strategy = Closure.DELEGATE_FIRST) Closure coordinates) {
+        PositionBuilder.build(coordinates)
     }
 
     /** {@code moveDistance { north n; east e; down d }}: an offset in metres for {@code move(position, offset)}. */
-    static NedOffset moveDistance(@DelegatesTo(value = NedBuilder, strategy = Closure.DELEGATE_FIRST) Closure body) {
-        NedBuilder.build('moveDistance', body)
+    @Word('An offset for move(position, offset): moveDistance { north 10; east 5; down -3 }, metres')
+    static NedOffset moveDistance(@DelegatesTo(value = NedBuilder, strategy = Closure.DELEGATE_FIRST) Closure offset) {
+        NedBuilder.build('moveDistance', offset)
     }
 
     /** "MissionPlan_line" + the line of the code that called mission, else a running number. */

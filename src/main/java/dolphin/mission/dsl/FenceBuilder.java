@@ -2,6 +2,7 @@ package dolphin.mission.dsl;
 
 import dolphin.core.Position;
 import dolphin.dsl.DslException;
+import dolphin.dsl.vocabulary.Word;
 import dolphin.mission.model.Fence;
 import dolphin.mission.model.FenceRegion;
 import dolphin.mission.model.MissionItem;
@@ -37,6 +38,7 @@ public final class FenceBuilder extends ClosureDelegate {
     }
 
     /** A polygon of at least 3 positions (heights ignored), not closed: the last vertex joins the first. */
+    @Word("A polygon of three or more positions, for inclusion or exclusion")
     public Shape polygon(Position... vertices) {
         if (vertices == null || vertices.length < 3) {
             throw new DslException("fence: polygon needs at least 3 positions, got " + (vertices == null ? 0 : vertices.length));
@@ -49,6 +51,7 @@ public final class FenceBuilder extends ClosureDelegate {
     }
 
     /** A circle of {@code radius} metres around a position. */
+    @Word("A circle: a centre and a radius in metres, for inclusion or exclusion")
     public Shape circle(Position center, Number radius) {
         double r = Args.number("fence: circle", "radius", radius);
         if (!(r > 0)) {
@@ -58,21 +61,25 @@ public final class FenceBuilder extends ClosureDelegate {
     }
 
     /** The vehicle must stay inside. */
+    @Word("The vehicle must stay inside this polygon or circle")
     public void inclusion(Shape shape) {
         regions.add(require("inclusion", shape).region(true));
     }
 
     /** The vehicle must stay outside. */
+    @Word("The vehicle must stay outside this polygon or circle")
     public void exclusion(Shape shape) {
         regions.add(require("exclusion", shape).region(false));
     }
 
     /** Where the vehicle goes on a breach when the fence action is to go there. */
-    public void returnPoint(Position p) {
-        returnPoint = Args.position("fence: returnPoint", p);
+    @Word("Where the vehicle goes on a breach, when the fence action says to")
+    public void returnPoint(Position position) {
+        returnPoint = Args.position("fence: returnPoint", position);
     }
 
     /** Switches the fence on when the mission starts (MAV_CMD_DO_FENCE_ENABLE); off by default. */
+    @Word("Switches the fence on when the mission starts (off unless said)")
     public void enable(boolean on) {
         enabled = on;
     }

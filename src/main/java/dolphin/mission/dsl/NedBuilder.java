@@ -1,6 +1,7 @@
 package dolphin.mission.dsl;
 
 import groovy.lang.Closure;
+import dolphin.dsl.vocabulary.Word;
 import groovy.lang.DelegatesTo;
 import java.util.Set;
 
@@ -20,14 +21,17 @@ public final class NedBuilder extends ClosureDelegate {
         this.word = word;
     }
 
+    @Word("Metres north")
     public void north(Number metres) {
         north = Args.number(word, "north offset", metres);
     }
 
+    @Word("Metres east")
     public void east(Number metres) {
         east = Args.number(word, "east offset", metres);
     }
 
+    @Word("Metres down (negative: up)")
     public void down(Number metres) {
         down = Args.number(word, "down offset", metres);
     }

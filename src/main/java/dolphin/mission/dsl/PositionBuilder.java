@@ -1,6 +1,7 @@
 package dolphin.mission.dsl;
 
 import dolphin.core.Position;
+import dolphin.dsl.vocabulary.Word;
 import groovy.lang.Closure;
 import groovy.lang.DelegatesTo;
 import java.util.Set;
@@ -20,18 +21,22 @@ public final class PositionBuilder extends ClosureDelegate {
         super("pos", Set.of("lat", "lon", "hae", "height"));
     }
 
+    @Word("Latitude, degrees")
     public void lat(Number degrees) {
         lat = degrees;
     }
 
+    @Word("Longitude, degrees")
     public void lon(Number degrees) {
         lon = degrees;
     }
 
+    @Word("Height above the WGS-84 ellipsoid (mean sea level), metres")
     public void hae(Number metres) {
         hae = metres;
     }
 
+    @Word("Another name for hae: metres above mean sea level")
     public void height(Number metres) {
         hae = metres;
     }

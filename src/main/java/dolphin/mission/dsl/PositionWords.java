@@ -2,6 +2,7 @@ package dolphin.mission.dsl;
 
 import dolphin.core.Position;
 import dolphin.dsl.DslException;
+import dolphin.dsl.vocabulary.Word;
 import groovy.lang.Closure;
 import groovy.lang.DelegatesTo;
 import java.util.Arrays;
@@ -18,15 +19,17 @@ import java.util.stream.Collectors;
  */
 public final class PositionWords {
 
-    public Position move(Position from, @DelegatesTo(value = NedBuilder.class, strategy = Closure.DELEGATE_FIRST) Closure<?> offset) {
-        return NedBuilder.build("move", offset).from(Args.position("move", from));
+    @Word("A position north, east and down of another: move(p, { north 10; east 5 })")
+    public Position move(Position position, @DelegatesTo(value = NedBuilder.class, strategy = Closure.DELEGATE_FIRST) Closure<?> offset) {
+        return NedBuilder.build("move", offset).from(Args.position("move", position));
     }
 
-    public Position move(Position from, NedOffset offset) {
+    @Word("A position north, east and down of another: move(p, { north 10; east 5 })")
+    public Position move(Position position, NedOffset offset) {
         if (offset == null) {
             throw new DslException("move: the offset is null: expected moveDistance { north n; east e; down d }");
         }
-        return offset.from(Args.position("move", from));
+        return offset.from(Args.position("move", position));
     }
 
     /** Any other arguments: say what move expects here, and that the mission command lives in mission { }. */
