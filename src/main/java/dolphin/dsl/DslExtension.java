@@ -1,5 +1,6 @@
 package dolphin.dsl;
 
+import dolphin.dsl.check.CallCheck;
 import java.util.List;
 import org.codehaus.groovy.control.customizers.ImportCustomizer;
 
@@ -29,8 +30,15 @@ public interface DslExtension {
     /**
      * The classes of the objects {@link #words} makes and those whose static methods
      * {@link #addImports} imports, read for the language's {@link dolphin.dsl.vocabulary.Vocabulary}.
+     * An extension that makes words but does not name their classes here leaves the check unable to
+     * tell an unknown word from one of its own, so it reports none.
      */
     default List<Class<?>> wordClasses() {
+        return List.of();
+    }
+
+    /** Checks of calls to this extension's words whose arguments are constants, made before the script runs. */
+    default List<CallCheck> callChecks() {
         return List.of();
     }
 

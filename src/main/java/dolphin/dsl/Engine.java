@@ -105,14 +105,19 @@ public final class Engine implements AutoCloseable {
 
     /** Compiles a script without running it; returns its mistakes, empty when there are none. */
     public List<ScriptError> check(String source, String file) {
-        return new ScriptCompiler(extensions).check(source, file);
+        return compiler().check(source, file);
     }
 
     /** The words scripts may write with this engine's extensions (docs/editors.md, "One vocabulary"). */
     public Vocabulary vocabulary() {
-        List<Class<?>> words = new ArrayList<>();
-        extensions.forEach(e -> words.addAll(e.wordClasses()));
-        return Vocabulary.of(ScriptCompiler.baseClass(), words, categories());
+        return compiler().language().vocabulary();
+    }
+
+    /** A compiler for this engine's extensions and bound variables ({@code _}, the execute key, among them). */
+    private synchronized ScriptCompiler compiler() {
+        Set<String> preset = new LinkedHashSet<>(presets.keySet());
+        preset.add("_");
+        return new ScriptCompiler(List.copyOf(extensions), preset);
     }
 
     public List<ScriptError> check(Path file) throws IOException {
@@ -165,19 +170,19 @@ public final class Engine implements AutoCloseable {
 
     private void execute(String source, String file, Binding binding, ScriptRun run) {
         ScriptContext context = new ScriptContext(environment, prompt -> input.apply(prompt));
-        ScriptCompiler compiler = new ScriptCompiler(List.copyOf(extensions));
+        ScriptCompiler compiler = compiler();
         Fanout out = (Fanout) environment.getListener();
         out.scriptStarted(file);
         ScriptResult result;
         Script script = null;
-        try (GroovyClassLoader loader = compiler.newLoader()) {
+        try (GroovyClassLoader loader = compiler.newLoader(); GroovyClassLoader answers = compiler.answerLoader(loader)) {
             script = compiler.parse(source, file, binding, loader);
             List<Object> words = new ArrayList<>();
             for (DslExtension e : extensions) {
                 words.addAll(e.words(context));
             }
             context.setWords(words);
-            context.setEvaluator(code -> evaluate(compiler, loader, binding, context, code));
+            context.setEvaluator(code -> evaluate(compiler, answers, binding, context, code));
             ((DslScript) script).attach(context);
             Script toRun = script;
             runWithCategories(categories(), () -> {

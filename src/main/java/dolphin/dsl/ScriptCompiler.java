@@ -4,9 +4,14 @@ import groovy.lang.Binding;
 import groovy.lang.GroovyClassLoader;
 import groovy.lang.GroovyCodeSource;
 import groovy.lang.Script;
+import dolphin.dsl.check.CallCheck;
+import dolphin.dsl.check.ScriptLanguage;
+import dolphin.dsl.check.WordCheck;
+import dolphin.dsl.vocabulary.Vocabulary;
 import groovy.transform.ThreadInterrupt;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
 import org.codehaus.groovy.control.CompilationFailedException;
 import org.codehaus.groovy.control.CompilerConfiguration;
 import org.codehaus.groovy.control.MultipleCompilationErrorsException;
@@ -18,15 +23,50 @@ import org.codehaus.groovy.control.messages.SyntaxErrorMessage;
 import org.codehaus.groovy.runtime.InvokerHelper;
 import org.codehaus.groovy.syntax.SyntaxException;
 
-/** Compiles Dolphin scripts: imports, base class, the layout check and the execute-key check. */
+/**
+ * Compiles Dolphin scripts: imports, base class, the layout and execute checks, and the check of
+ * every name against the language ({@link WordCheck}), so a script with a mistake is refused
+ * before it runs, with all its mistakes.
+ */
 final class ScriptCompiler {
 
     static final String BASE_CLASS = "dolphin.dsl.DolphinScript";
 
     private final List<DslExtension> extensions;
+    private final Set<String> presetVariables;
 
-    ScriptCompiler(List<DslExtension> extensions) {
+    /**
+     * @param presetVariables the variables every run starts with, which scripts use without assigning
+     */
+    ScriptCompiler(List<DslExtension> extensions, Set<String> presetVariables) {
         this.extensions = extensions;
+        this.presetVariables = presetVariables;
+    }
+
+    /** The language the scripts are checked against: the vocabulary and the platform's checks. */
+    ScriptLanguage language() {
+        List<Class<?>> wordClasses = new ArrayList<>();
+        List<Class<?>> categories = new ArrayList<>(List.of(Units.class));
+        List<CallCheck> callChecks = new ArrayList<>();
+        for (DslExtension e : extensions) {
+            wordClasses.addAll(e.wordClasses());
+            categories.addAll(e.categories());
+            callChecks.addAll(e.callChecks());
+        }
+        Class<?> base = baseClass();
+        boolean wordsKnown = extensions.stream().allMatch(e -> !declares(e, "words", ScriptContext.class) || declares(e, "wordClasses"));
+        return new ScriptLanguage(Vocabulary.of(base, wordClasses, categories), base, wordClasses, categories, presetVariables,
+                callChecks,
+                wordsKnown);
+    }
+
+    /** Whether the extension's class overrides the interface's default method. */
+    private static boolean declares(DslExtension e, String method, Class<?>... parameters) {
+        try {
+            return e.getClass().getMethod(method, parameters).getDeclaringClass() != DslExtension.class;
+        } catch (NoSuchMethodException x) {
+            return false;
+        }
     }
 
     /** The scripts' base class: a Groovy class, compiled after this one, so found by name. */
@@ -38,7 +78,7 @@ final class ScriptCompiler {
         }
     }
 
-    private CompilerConfiguration configuration() {
+    private CompilerConfiguration configuration(boolean checked) {
         CompilerConfiguration config = new CompilerConfiguration();
         config.setScriptBaseClass(BASE_CLASS);
         ImportCustomizer imports = new ImportCustomizer();
@@ -48,6 +88,9 @@ final class ScriptCompiler {
         // ThreadInterrupt makes loops and closures check for interrupts, so stop() ends any script.
         config.addCompilationCustomizers(imports, new ASTTransformationCustomizer(ThreadInterrupt.class),
                 new ExecuteKeyCheck(), new SplitInstructionCheck(), new ExecuteOperandCheck());
+        if (checked) {
+            config.addCompilationCustomizers(new WordCheck(language()));
+        }
         return config;
     }
 
@@ -81,8 +124,17 @@ final class ScriptCompiler {
         }
     }
 
+    /** The loader scripts are compiled, checked, in. */
     GroovyClassLoader newLoader() {
-        return new GroovyClassLoader(getClass().getClassLoader(), configuration());
+        return new GroovyClassLoader(getClass().getClassLoader(), configuration(true));
+    }
+
+    /**
+     * The loader an {@code ask} answer is compiled in: beside the script's classes, with the same
+     * imports, but not checked, since it uses variables that exist only while the script runs.
+     */
+    GroovyClassLoader answerLoader(GroovyClassLoader scriptLoader) {
+        return new GroovyClassLoader(scriptLoader, configuration(false));
     }
 
     /**
@@ -108,7 +160,7 @@ final class ScriptCompiler {
             return List.of(brackets.get());
         }
         List<ScriptError> out = new ArrayList<>();
-        if (e instanceof MultipleCompilationErrorsException m) {
+        if (e instanceof MultipleCompilationErrorsException m && m.getErrorCollector().getErrors() != null) {
             for (Message msg : m.getErrorCollector().getErrors()) {
                 if (msg instanceof SyntaxErrorMessage s) {
                     SyntaxException se = s.getCause();

@@ -7,6 +7,7 @@ import dolphin.core.NodeSet;
 import dolphin.dsl.DslException;
 import dolphin.dsl.DslExtension;
 import dolphin.dsl.ScriptContext;
+import dolphin.dsl.check.CallCheck;
 import dolphin.dsl.vocabulary.Word;
 import dolphin.mavlink.codec.MessageTable;
 import dolphin.mission.dsl.MissionRecorder;
@@ -19,6 +20,7 @@ import dolphin.mission.file.MissionFile;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.RawItemPoint;
 import dolphin.mission.transfer.TransferResult;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
@@ -52,6 +54,18 @@ public final class MAVLinkLanguage implements DslExtension {
         } catch (ClassNotFoundException e) {
             throw new IllegalStateException(e);
         }
+    }
+
+    /** A mission file that {@code missionFromFile 'path'} names must exist (relative to the current directory). */
+    @Override
+    public List<CallCheck> callChecks() {
+        return List.of((word, constants) -> {
+            if (!"missionFromFile".equals(word) || constants.isEmpty()
+                    || !(constants.get(constants.size() - 1) instanceof String path) || Files.exists(Path.of(path))) {
+                return null;
+            }
+            return "missionFromFile: no file " + path + " (paths are relative to " + Path.of("").toAbsolutePath() + ")";
+        });
     }
 
     @Override

@@ -6,6 +6,7 @@ import dolphin.core.NodeSet;
 import dolphin.core.Platform;
 import dolphin.dsl.DslExtension;
 import dolphin.dsl.ScriptContext;
+import dolphin.dsl.check.CallCheck;
 import java.util.List;
 import org.codehaus.groovy.control.customizers.ImportCustomizer;
 
@@ -47,6 +48,16 @@ public final class MAVLinkPlatform implements Platform, DslExtension {
     @Override
     public List<Object> words(ScriptContext context) {
         return language.words(context);
+    }
+
+    @Override
+    public List<Class<?>> wordClasses() {
+        return language.wordClasses();
+    }
+
+    @Override
+    public List<CallCheck> callChecks() {
+        return language.callChecks();
     }
 
     @Override

@@ -149,7 +149,7 @@ class RunCommandSpec extends Specification {
         r.out.contains("${EXAMPLE}: completed")
     }
 
-    def "a script error is reported with file:line and exit 1"() {
+    def "a script with a mistake is refused before it picks a vehicle: file:line:column and exit 1"() {
         given:
         def script = File.createTempFile('bad', '.dolphin')
         script.text = 'v = pick { timeout 5 }\ntakeoff v\n'
@@ -159,7 +159,8 @@ class RunCommandSpec extends Specification {
 
         then:
         r.code == 1
-        r.err.contains("${script.path}:2: unknown command 'takeoff'")
+        r.err.contains("${script.path}:2:1: unknown command 'takeoff'; did you mean 'takeOff'? It can only be used inside mission { }")
+        !r.out.contains('picked')
 
         cleanup:
         script?.delete()

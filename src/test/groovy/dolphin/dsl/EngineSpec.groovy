@@ -205,9 +205,10 @@ class EngineSpec extends Specification {
         h.platform.node('1').releases.isEmpty()
     }
 
-    def "check cannot see mistakes that only show at run time"() {
+    def "check finds a variable the script never assigns, and run refuses the script"() {
         expect:
-        h.engine.check('execute nosuch', 'late.dolphin').isEmpty()
+        h.engine.check('execute nosuch', 'late.dolphin')*.toString() ==
+                ["late.dolphin:1:9: unknown name 'nosuch'. Expected a variable assigned in the script (names are case-sensitive)"]
         h.run('execute nosuch', 'late.dolphin').outcome == SCRIPT_ERROR
     }
 
@@ -221,7 +222,7 @@ class EngineSpec extends Specification {
         def r = h.engine.run(file).await(Duration.ofSeconds(20))
 
         then:
-        checked.isEmpty()
+        checked*.toString() == ["${file}:2:18: unknown name 'nosuch'. Expected a variable assigned in the script (names are case-sensitive)".toString()]
         r.outcome == SCRIPT_ERROR
         r.error.file == file.toString()
         r.error.line == 2

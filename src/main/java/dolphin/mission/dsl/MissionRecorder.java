@@ -35,6 +35,12 @@ public final class MissionRecorder implements DslExtension {
         return List.of(new Hook(consumer));
     }
 
+    /** None: the hook is no word. */
+    @Override
+    public List<Class<?>> wordClasses() {
+        return List.of();
+    }
+
     /**
      * Called by {@code mission { }} for each platform word object of the run, with the mission it
      * built: hands the mission over when the object is a recorder's.

@@ -279,7 +279,7 @@ class MissionScriptSpec extends Specification {
         String doc = new File('docs/mission-commands.md').text
 
         expect:
-        methods == MissionBuilder.FORMS.keySet()
+        methods == MissionBuilder.COMMANDS.keySet()
         methods == ['name', 'home', 'goPos', 'takeOff', 'takeOffWithYaw', 'move', 'moveFromHome', 'moveAndLoiterPos',
                     'moveAndLoiterTurns', 'moveAndLoiterTime', 'moveAndLoiterFromHome', 'moveAndLoiterTurnsFromHome',
                     'moveAndLoiterTimeFromHome', 'loiterPos', 'loiterTurns', 'loiterTime', 'landingPoint', 'returnHome',
@@ -299,13 +299,13 @@ class MissionScriptSpec extends Specification {
         error.file == FILE
         error.line == source.readLines().findIndexOf { it.contains('<<') } + 1
         error.message == message
-        h.messages.contains("${FILE}:${error.line}: ${message}".toString())
+        h.messages.any { it.startsWith("${FILE}:${error.line}:") && it.endsWith(": ${message}") }
 
         where:
         kind                          | source                                                                                          || message
         'wrong argument type'         | "m = mission {\n  goPos 'Porto' // <<\n}"                                                       || "goPos: expected (lat, lon[, hae]) or (position), got (String)"
         'too few arguments'           | "m = mission {\n  goPos 41 // <<\n}"                                                            || "goPos: expected (lat, lon[, hae]) or (position), got (Integer)"
-        'too many arguments'          | "m = mission {\n  home 41, -8\n  move 1, 2, 3, 4 // <<\n}"                                      || "move: expected (north, east[, up]) or (position, { north n; east e; down d }), got (Integer, Integer, Integer, Integer)"
+        'too many arguments'          | "m = mission {\n  home 41, -8\n  move 1, 2, 3, 4 // <<\n}"                                      || "move: expected (north, east[, up]) or (position, { offset }) or (position, offset), got (Integer, Integer, Integer, Integer)"
         'no-argument command'         | "m = mission {\n  home 41, -8\n  returnHome 5 // <<\n}"                                         || "returnHome: expected (), got (Integer)"
         'unknown survey direction'    | "m = mission {\n  home 41, -8\n  surveyArea 1000, 500, 50, 'EAST' // <<\n}"                     || "surveyArea: unknown direction 'EAST': expected NORTH_EAST, NORTH_WEST, SOUTH_EAST or SOUTH_WEST"
         'direction without spacing'   | "m = mission {\n  home 41, -8\n  surveyArea 1000, 500, 'north_east' // <<\n}"                   || "surveyArea: unknown direction 'north_east': expected NORTH_EAST, NORTH_WEST, SOUTH_EAST or SOUTH_WEST"
@@ -339,8 +339,8 @@ class MissionScriptSpec extends Specification {
         'jump past the end'           | "m = mission {\n  goPos 41, -8, 100\n  jumpToItem 2 // <<\n}"                                   || "jumpToItem: there is no item 2: mission 'MissionPlan_line1' has items 0 to 1 (0 is home)"
         'jump negative'               | "m = mission {\n  goPos 41, -8, 100\n  jumpToItem(-1) // <<\n}"                                 || "jumpToItem: the item must not be negative, got -1"
         'jump repetitions'            | "m = mission {\n  goPos 41, -8, 100\n  jumpToItem 1, 0 // <<\n}"                                || "jumpToItem: the number of repetitions must be at least 1, got 0"
-        'typo'                        | "m = mission {\n  takeoff location(41, -8, 100) // <<\n}"                                        || "unknown mission command 'takeoff'; did you mean 'takeOff'?"
-        'command without ()'          | "m = mission {\n  home 41, -8\n  returnHome // <<\n}"                                           || "'returnHome' is a mission command, but Groovy read it as a variable here: write 'returnHome()' or 'returnHome arguments'; a negative first argument needs parentheses, e.g. 'returnHome(-10, ...)' (Groovy reads 'returnHome -10' as 'returnHome minus 10')"
+        'typo'                        | "m = mission {\n  takeoff location(41, -8, 100) // <<\n}"                                        || "unknown mission command 'takeoff'; did you mean 'takeOff' or 'takeOffWithYaw'?"
+        'command without ()'          | "m = mission {\n  home 41, -8\n  returnHome // <<\n}"                                           || "'returnHome' is a command of mission { }, but Groovy read it as a variable here: write it with its arguments, as in returnHome()"
         'mission move outside'        | "move 100, 200 // <<"                                                                            || "move: expected (position, { north n; east e; down d }) or (position, moveDistance { ... }), got (Integer, Integer); move(north, east[, up]) is a mission command, for use inside mission { }"
         'pos latitude'                | "p = pos { lat 95 } // <<"                                                                       || "pos: the latitude must be between -90 and 90 degrees, got 95"
         'negative without ()'         | "d = moveDistance { down -3 } // <<"                                                             || "moveDistance: 'down' needs its value, e.g. 'down 10'; a negative value needs parentheses, e.g. 'down(-10)' (Groovy reads 'down -10' as 'down minus 10')"

@@ -1,0 +1,395 @@
+package dolphin.dsl.check;
+
+import dolphin.dsl.vocabulary.Suggestions;
+import dolphin.dsl.vocabulary.Vocabulary;
+import dolphin.dsl.vocabulary.WordEntry;
+import dolphin.dsl.vocabulary.WordScope;
+import groovy.lang.Closure;
+import groovy.lang.DelegatesTo;
+import groovy.lang.MetaMethod;
+import groovy.lang.MetaProperty;
+import java.lang.reflect.Method;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.stream.Collectors;
+import org.codehaus.groovy.ast.ASTNode;
+import org.codehaus.groovy.ast.ClassCodeVisitorSupport;
+import org.codehaus.groovy.ast.ClassNode;
+import org.codehaus.groovy.ast.DynamicVariable;
+import org.codehaus.groovy.ast.expr.ClosureExpression;
+import org.codehaus.groovy.ast.expr.ConstantExpression;
+import org.codehaus.groovy.ast.expr.Expression;
+import org.codehaus.groovy.ast.expr.MethodCallExpression;
+import org.codehaus.groovy.ast.expr.PropertyExpression;
+import org.codehaus.groovy.ast.expr.StaticMethodCallExpression;
+import org.codehaus.groovy.ast.expr.VariableExpression;
+import org.codehaus.groovy.control.SourceUnit;
+import org.codehaus.groovy.runtime.InvokerHelper;
+
+/**
+ * Walks a compiled script and reports every name that will fail when the script runs: a word that
+ * does not exist (with "did you mean"), a word called with arguments none of its forms takes, a
+ * block's word used outside its block, a unit that does not exist, a variable never assigned. Only
+ * what is certain is reported (docs/editors.md, "What the check knows").
+ */
+final class ScriptWalker extends ClassCodeVisitorSupport {
+
+    /** Groovy's methods that call their closure with its delegate left as it is, the enclosing code's. */
+    private static final Set<String> KEEPS_DELEGATE = Set.of("each", "eachWithIndex", "reverseEach", "collect",
+            "collectMany", "collectEntries", "find", "findAll", "findResult", "findResults", "findIndexOf", "any",
+            "every", "inject", "sum", "count", "groupBy", "countBy", "sort", "toSorted", "unique", "min", "max",
+            "times", "upto", "downto", "step", "takeWhile", "dropWhile", "split", "forEach", "removeIf", "call",
+            "eachLine", "withIndex", "collectNested", "eachPermutation", "eachCombination", "retainAll", "removeAll");
+
+    private final SourceUnit source;
+    private final ClassNode script;
+    private final ScriptLanguage language;
+    private final Vocabulary vocabulary;
+    private final Assignments assignments;
+    private final Set<String> variables;
+    private final ExpressionTypes types;
+    private final Resolver resolver;
+    private final List<Finding> findings = new ArrayList<>();
+    private LookupFrame frame = LookupFrame.SCRIPT;
+
+    private ScriptWalker(SourceUnit source, ClassNode script, ScriptLanguage language) {
+        this.source = source;
+        this.script = script;
+        this.language = language;
+        this.vocabulary = language.vocabulary();
+        this.assignments = Assignments.of(source, script);
+        this.variables = assignments.scriptVariableNames();
+        variables.addAll(language.presetVariables());
+        this.resolver = new Resolver(language, script, variables);
+        this.types = new ExpressionTypes(language, assignments, resolver);
+    }
+
+    static List<Finding> check(SourceUnit source, ClassNode script, ScriptLanguage language) {
+        ScriptWalker w = new ScriptWalker(source, script, language);
+        w.visitClass(script);
+        return w.findings;
+    }
+
+    @Override
+    protected SourceUnit getSourceUnit() {
+        return source;
+    }
+
+    // ---- calls
+
+    @Override
+    public void visitMethodCallExpression(MethodCallExpression call) {
+        String name = call.getMethodAsString();
+        if (name == null || call.getLineNumber() < 1) {
+            super.visitMethodCallExpression(call);
+            return;
+        }
+        List<Expression> args = ExpressionTypes.arguments(call.getArguments());
+        boolean onThis = call.isImplicitThis()
+                || call.getObjectExpression() instanceof VariableExpression v && v.isThisExpression();
+        if (onThis) {
+            Class<?>[] argTypes = types.of(args, frame);
+            Resolution r = resolver.call(name, argTypes, frame);
+            report(r, name, argTypes, call.getMethod(), args);
+            visitArguments(args, r.reach() == Resolution.Reach.METHOD ? Candidates.method(r.method()) : null,
+                    r.reach() == Resolution.Reach.METHOD || r.reach() == Resolution.Reach.VARIABLE);
+            return;
+        }
+        call.getObjectExpression().visit(this);
+        Class<?> receiver = types.of(call.getObjectExpression(), frame);
+        if (receiver != null && types.isChain(receiver)) {
+            Class<?>[] argTypes = types.of(args, frame);
+            List<MetaMethod> named = Candidates.all(receiver, name);
+            MetaMethod m = Candidates.accepting(named, argTypes);
+            if (m == null) {
+                chainMistake(receiver, name, named, argTypes, call.getMethod());
+            }
+            visitArguments(args, m == null ? null : Candidates.method(m), m != null);
+            return;
+        }
+        visitArguments(args, null, KEEPS_DELEGATE.contains(name));
+    }
+
+    @Override
+    public void visitStaticMethodCallExpression(StaticMethodCallExpression call) {
+        List<Expression> args = ExpressionTypes.arguments(call.getArguments());
+        Class<?> owner = ownerClass(call);
+        if (owner == null || call.getLineNumber() < 1) {
+            super.visitStaticMethodCallExpression(call);
+            return;
+        }
+        Class<?>[] argTypes = types.of(args, frame);
+        List<MetaMethod> named = Candidates.statics(owner, call.getMethod());
+        MetaMethod m = Candidates.accepting(named, argTypes);
+        if (m == null && !named.isEmpty()) {
+            add(call, wrongArguments(call.getMethod(), owner, named, argTypes));
+        }
+        visitArguments(args, m == null ? null : Candidates.method(m), m != null);
+    }
+
+    private static Class<?> ownerClass(StaticMethodCallExpression call) {
+        try {
+            return call.getOwnerType().redirect().getTypeClass();
+        } catch (RuntimeException | LinkageError e) {
+            return null;
+        }
+    }
+
+    /**
+     * Visits a call's arguments; a closure given to a parameter that names its builder
+     * ({@code @DelegatesTo}) is a block of that builder's words, one given to a known method a plain
+     * closure, any other one unknowable.
+     */
+    private void visitArguments(List<Expression> args, Method method, boolean known) {
+        for (int i = 0; i < args.size(); i++) {
+            Expression a = args.get(i);
+            if (a instanceof ClosureExpression c) {
+                Class<?> builder = method == null ? null : builder(method, i);
+                LookupFrame inner = builder != null ? frame.block(builder) : known ? frame.plain() : frame.unknowable();
+                within(inner, () -> c.getCode().visit(this));
+            } else {
+                a.visit(this);
+            }
+        }
+    }
+
+    private static Class<?> builder(Method method, int index) {
+        if (index >= method.getParameterCount()) {
+            return null;
+        }
+        DelegatesTo d = method.getParameters()[index].getAnnotation(DelegatesTo.class);
+        return d == null || d.value() == DelegatesTo.Target.class ? null : d.value();
+    }
+
+    @Override
+    public void visitClosureExpression(ClosureExpression c) {
+        within(frame.plain(), () -> c.getCode().visit(this));
+    }
+
+    private void within(LookupFrame inner, Runnable body) {
+        LookupFrame outer = frame;
+        frame = inner;
+        try {
+            body.run();
+        } finally {
+            frame = outer;
+        }
+    }
+
+    // ---- names read as values
+
+    @Override
+    public void visitVariableExpression(VariableExpression v) {
+        if (v.getLineNumber() < 1 || !(v.getAccessedVariable() instanceof DynamicVariable) || v.isThisExpression()
+                || v.isSuperExpression() || variables.contains(v.getName()) || assignments.usesBinding) {
+            return;
+        }
+        String name = v.getName();
+        for (LookupFrame f = frame; f != null; f = f.outer()) {
+            if (f.unknown()) {
+                return;
+            }
+            if (f.block() != null && hasProperty(f.block(), name)) {
+                return;
+            }
+        }
+        if (hasProperty(language.scriptClass(), name) || frame.outer() != null && hasProperty(Closure.class, name)) {
+            return;
+        }
+        add(v, unknownName(name));
+    }
+
+    private static boolean hasProperty(Class<?> type, String name) {
+        MetaProperty p = InvokerHelper.getMetaClass(type).getMetaProperty(name);
+        return p != null;
+    }
+
+    @Override
+    public void visitPropertyExpression(PropertyExpression p) {
+        super.visitPropertyExpression(p);
+        String name = p.getPropertyAsString();
+        if (name == null || p.getLineNumber() < 1 || p.isSpreadSafe()) {
+            return;
+        }
+        Class<?> receiver = types.of(p.getObjectExpression(), frame);
+        if (ExpressionTypes.isNumber(receiver) && !vocabulary.units().words().containsKey(name)
+                && !hasProperty(receiver, name) && !isCategoryProperty(name)) {
+            add(p.getProperty(), "unknown unit '" + name + "'" + Suggestions.didYouMean(name, vocabulary.units().words().keySet())
+                    + " Units: " + String.join(", ", vocabulary.units().words().keySet()));
+        }
+    }
+
+    /** A getter of a category: a unit an extension adds without describing it. */
+    private boolean isCategoryProperty(String name) {
+        String getter = "get" + Character.toUpperCase(name.charAt(0)) + name.substring(1);
+        return language.categories().stream().flatMap(c -> Arrays.stream(c.getMethods()))
+                .anyMatch(m -> m.getName().equals(getter) && m.getParameterCount() == 1
+                        && java.lang.reflect.Modifier.isStatic(m.getModifiers()));
+    }
+
+    // ---- messages
+
+    private void report(Resolution r, String name, Class<?>[] argTypes, ASTNode at, List<Expression> args) {
+        switch (r.reach()) {
+            case WRONG_ARGUMENTS -> add(at, wrongArguments(name, r.owner(), r.named(), argTypes));
+            case MISSING -> add(at, missing(name));
+            case METHOD -> callChecks(name, r, at, args);
+            default -> {
+            }
+        }
+    }
+
+    private void callChecks(String name, Resolution r, ASTNode at, List<Expression> args) {
+        if (!language.wordClasses().contains(r.owner())) {
+            return;
+        }
+        List<Object> constants = args.stream()
+                .map(a -> a instanceof ConstantExpression c && c.getValue() != null ? c.getValue() : CallCheck.UNKNOWN)
+                .toList();
+        for (CallCheck check : language.callChecks()) {
+            String mistake = check.mistake(name, constants);
+            if (mistake != null) {
+                add(at, mistake);
+            }
+        }
+    }
+
+    /** "goPos: expected (lat, lon[, hae]) or (position), got (String)", with a hint for a position. */
+    private String wrongArguments(String name, Class<?> owner, List<MetaMethod> named, Class<?>[] argTypes) {
+        WordEntry word = vocabulary.scopeOf(owner).map(s -> s.words().get(name))
+                .orElseGet(() -> vocabulary.script().words().get(name));
+        String forms = word != null ? word.formsText() : named.stream()
+                .map(m -> Arrays.stream(m.getNativeParameterTypes()).map(Class::getSimpleName).collect(Collectors.joining(", ", "(", ")")))
+                .distinct().collect(Collectors.joining(" or "));
+        String got = Arrays.stream(argTypes).map(t -> t == null ? "?" : t == java.util.LinkedHashMap.class ? "Map"
+                : t == java.util.ArrayList.class ? "List" : groovy.lang.GString.class.isAssignableFrom(t) ? "String"
+                : Closure.class.isAssignableFrom(t) ? "{ block }" : t.getSimpleName()).collect(Collectors.joining(", ", "(", ")"));
+        boolean positionWanted = named.stream().anyMatch(m -> Arrays.stream(m.getNativeParameterTypes())
+                .anyMatch(t -> t.getSimpleName().equals("Position")));
+        boolean numberGiven = Arrays.stream(argTypes).anyMatch(ExpressionTypes::isNumber);
+        String hint = positionWanted && numberGiven && argTypes.length <= 2
+                ? "; a position is pos { lat ...; lon ...; hae ... } or location(lat, lon, hae)" : "";
+        return name + ": expected " + forms + ", got " + got + hint + elsewhereForm(name, argTypes.length);
+    }
+
+    /** "; move(north, east[, up]) can only be used inside mission { }": the word of a block not open here that takes as many arguments. */
+    private String elsewhereForm(String name, int arguments) {
+        List<WordScope> visible = visibleScopes();
+        for (WordScope s : vocabulary.scopesWith(name)) {
+            WordEntry w = s.words().get(name);
+            if (!visible.contains(s) && w.takes(arguments)) {
+                return "; " + String.join(" or ", w.usages()) + " can only be used " + s.where();
+            }
+        }
+        return "";
+    }
+
+    private void chainMistake(Class<?> receiver, String name, List<MetaMethod> named, Class<?>[] argTypes, ASTNode at) {
+        WordScope chain = vocabulary.scopeOf(receiver).orElseThrow();
+        if (!named.isEmpty()) {
+            add(at, wrongArguments(name, receiver, named, argTypes));
+            return;
+        }
+        String expected = String.join(" or ", chain.words().keySet());
+        add(at, "'" + name + "' cannot follow " + String.join(" or ", chain.openers()) + ": expected '" + expected + "'"
+                + (Suggestions.near(name, chain.words().keySet()).isEmpty() ? "" : ", did you mean it?"));
+    }
+
+    /** A name nothing answers: where it belongs if it is a word elsewhere, else what it may have meant. */
+    private String missing(String name) {
+        List<WordScope> visible = visibleScopes();
+        List<WordScope> elsewhere = vocabulary.scopesWith(name).stream().filter(s -> !visible.contains(s)).toList();
+        if (!elsewhere.isEmpty()) {
+            return belongsElsewhere(name, elsewhere.get(0));
+        }
+        WordScope innermost = visible.get(0);
+        String kind = innermost.kind() == WordScope.Kind.BLOCK ? " in " + String.join(" / ",
+                innermost.openers().stream().map(o -> o + " { }").toList()) : "";
+        String near = Suggestions.didYouMean(name, innermost.words().keySet());
+        if (near.isEmpty()) {
+            near = Suggestions.didYouMean(name, visibleNames(visible));
+        }
+        if (near.isEmpty()) {
+            near = elsewhereNear(name, visible);
+        }
+        return "unknown command '" + name + "'" + kind + near;
+    }
+
+    /** "; did you mean 'takeOff'? It can only be used inside mission { }": a word of a block not open here. */
+    private String elsewhereNear(String name, List<WordScope> visible) {
+        for (WordScope s : vocabulary.scopes()) {
+            if (visible.contains(s)) {
+                continue;
+            }
+            List<String> close = Suggestions.near(name, s.words().keySet());
+            if (!close.isEmpty()) {
+                return "; did you mean '" + close.get(0) + "'? It " + belongsElsewhere(close.get(0), s)
+                        .replaceFirst("^'[^']*' (is|can)", "$1");
+            }
+        }
+        return "";
+    }
+
+    private static String belongsElsewhere(String name, WordScope scope) {
+        return switch (scope.kind()) {
+            case UNITS -> "'" + name + "' is a unit: write it after a number, as in 10." + name;
+            case CHAIN -> "'" + name + "' can only follow " + String.join(" or ", scope.openers());
+            default -> "'" + name + "' can only be used " + scope.where();
+        };
+    }
+
+    private String unknownName(String name) {
+        List<WordScope> visible = visibleScopes();
+        for (WordScope s : visible) {
+            if (s.words().containsKey(name)) {
+                return s.kind() == WordScope.Kind.SCRIPT
+                        ? "'" + name + "' is a command, but Groovy read it as a variable here. Expected it with its arguments,"
+                        + " e.g. '" + name + "()', and in parentheses when it is the argument of another command,"
+                        + " e.g. 'execute(during(10) run task)'"
+                        : "'" + name + "' is a command of " + s.where().replaceFirst("^inside ", "") + ", but Groovy read it as a"
+                        + " variable here: write it with its arguments, as in " + String.join(" or ", s.words().get(name).usages())
+                        + (s.words().get(name).takes(0) ? "" : "; a negative value needs parentheses, '" + name + "(-2)' (Groovy reads '"
+                        + name + " -2' as '" + name + " minus 2')");
+            }
+        }
+        List<WordScope> elsewhere = vocabulary.scopesWith(name);
+        if (!elsewhere.isEmpty()) {
+            return belongsElsewhere(name, elsewhere.get(0));
+        }
+        Integer local = assignments.localLines.get(name);
+        String hint = local != null
+                ? ": it is declared with 'def' on line " + local + ", which a method or another script cannot see;"
+                + " assign it without 'def' to make it a script variable"
+                : ". Expected a variable assigned in the script (names are case-sensitive)";
+        Set<String> known = new LinkedHashSet<>(variables);
+        known.addAll(assignments.localLines.keySet());
+        return "unknown name '" + name + "'" + Suggestions.didYouMean(name, known) + hint;
+    }
+
+    /** The scopes whose words a name here reaches: the enclosing blocks, innermost first, then the script. */
+    private List<WordScope> visibleScopes() {
+        List<WordScope> scopes = new ArrayList<>();
+        for (LookupFrame f = frame; f != null; f = f.outer()) {
+            if (f.block() != null) {
+                vocabulary.scopeOf(f.block()).ifPresent(scopes::add);
+            }
+        }
+        scopes.add(vocabulary.script());
+        return scopes;
+    }
+
+    private Set<String> visibleNames(List<WordScope> visible) {
+        Set<String> names = new LinkedHashSet<>();
+        visible.forEach(s -> names.addAll(s.words().keySet()));
+        script.getMethods().stream().filter(m -> m.getLineNumber() > 0 && m.getDeclaringClass().equals(script)).forEach(m -> names.add(m.getName()));
+        names.addAll(variables);
+        return names;
+    }
+
+    private void add(ASTNode at, String message) {
+        findings.add(new Finding(at.getLineNumber(), at.getColumnNumber(), message));
+    }
+}
