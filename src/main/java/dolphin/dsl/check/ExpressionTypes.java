@@ -117,13 +117,36 @@ final class ExpressionTypes {
         Class<?>[] args = of(arguments(m.getArguments()), frame);
         if (m.isImplicitThis()) {
             Resolution r = resolver.call(m.getMethodAsString(), args, frame);
-            return r.reach() == Resolution.Reach.METHOD ? result(r.method()) : null;
+            if (r.reach() != Resolution.Reach.METHOD) {
+                return null;
+            }
+            Class<?> type = result(r.method());
+            return type != null ? type : pendingHalf(arguments(m.getArguments()), frame);
         }
         Class<?> receiver = of(m.getObjectExpression(), frame);
         if (receiver != null && isChain(receiver)) {
             return result(Candidates.accepting(Candidates.all(receiver, m.getMethodAsString()), args));
         }
         return null;
+    }
+
+    /**
+     * The first half of a two-word instruction given to a word that returns no type of its own:
+     * {@code execute v: waitFor { c } then t} reads as {@code execute(v: waitFor { c }).then(t)}, and
+     * what follows execute is waitFor's second word. Null when no argument (or named argument) is one.
+     */
+    private Class<?> pendingHalf(List<Expression> args, LookupFrame frame) {
+        List<Expression> values = new ArrayList<>();
+        for (Expression a : args) {
+            if (a instanceof MapExpression map) {
+                map.getMapEntryExpressions().forEach(e -> values.add(e.getValueExpression()));
+            } else {
+                values.add(a);
+            }
+        }
+        List<Class<?>> halves = new ArrayList<>();
+        values.stream().map(v -> of(v, frame)).filter(t -> t != null && isChain(t)).distinct().forEach(halves::add);
+        return halves.size() == 1 ? halves.get(0) : null;
     }
 
     /** Whether the class holds the second words of two-word instructions ({@code then} after {@code waitFor}). */

@@ -104,6 +104,10 @@ final class ScriptWalker extends ClassCodeVisitorSupport {
             Class<?>[] argTypes = types.of(args, frame);
             List<MetaMethod> named = Candidates.all(receiver, name);
             MetaMethod m = Candidates.accepting(named, argTypes);
+            if (m == null && argTypes.length > 0 && argTypes[0] == java.util.LinkedHashMap.class) {
+                // execute v1: waitFor { c } then t1, v2: t2: the entries after the second word come first
+                m = Candidates.accepting(named, Arrays.copyOfRange(argTypes, 1, argTypes.length));
+            }
             if (m == null) {
                 chainMistake(receiver, name, named, argTypes, call.getMethod());
             }
