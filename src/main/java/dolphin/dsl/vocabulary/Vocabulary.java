@@ -48,27 +48,27 @@ public final class Vocabulary {
         for (Class<?> c : wordClasses) {
             wordsOf(c).forEach(top::putIfAbsent);
         }
-        WordScope script = new WordScope(WordScope.Kind.SCRIPT, scriptClass, List.of(), top);
+        WordScope script = new WordScope(WordScope.ScopeKind.SCRIPT, scriptClass, List.of(), top);
         Map<String, WordEntry> unitWords = new LinkedHashMap<>();
         for (Class<?> c : categories) {
             unitWords.putAll(unitsOf(c));
         }
-        WordScope units = new WordScope(WordScope.Kind.UNITS, Number.class, List.of(), unitWords);
+        WordScope units = new WordScope(WordScope.ScopeKind.UNITS, Number.class, List.of(), unitWords);
 
         // Blocks and chains, found from the words that open them, breadth first.
         Map<Class<?>, List<String>> openers = new LinkedHashMap<>();
-        Map<Class<?>, WordScope.Kind> kinds = new LinkedHashMap<>();
+        Map<Class<?>, WordScope.ScopeKind> kinds = new LinkedHashMap<>();
         Deque<Map<String, WordEntry>> pending = new ArrayDeque<>(List.of(top));
         while (!pending.isEmpty()) {
             for (WordEntry w : pending.poll().values()) {
                 for (Signature s : w.signatures()) {
                     for (Param p : s.params()) {
                         if (p.block() != null) {
-                            reach(p.block(), WordScope.Kind.BLOCK, w.name(), openers, kinds, pending);
+                            reach(p.block(), WordScope.ScopeKind.BLOCK, w.name(), openers, kinds, pending);
                         }
                     }
                     if (s.returns() != scriptClass && hasWords(s.returns())) {
-                        reach(s.returns(), WordScope.Kind.CHAIN, w.name(), openers, kinds, pending);
+                        reach(s.returns(), WordScope.ScopeKind.CHAIN, w.name(), openers, kinds, pending);
                     }
                 }
             }
@@ -79,8 +79,8 @@ public final class Vocabulary {
         return new Vocabulary(script, units, byType);
     }
 
-    private static void reach(Class<?> type, WordScope.Kind kind, String opener, Map<Class<?>, List<String>> openers,
-                              Map<Class<?>, WordScope.Kind> kinds, Deque<Map<String, WordEntry>> pending) {
+    private static void reach(Class<?> type, WordScope.ScopeKind kind, String opener, Map<Class<?>, List<String>> openers,
+                              Map<Class<?>, WordScope.ScopeKind> kinds, Deque<Map<String, WordEntry>> pending) {
         List<String> names = openers.get(type);
         if (names == null) {
             names = new ArrayList<>();

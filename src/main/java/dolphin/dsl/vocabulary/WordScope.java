@@ -14,7 +14,7 @@ import java.util.TreeMap;
 public final class WordScope {
 
     /** What kind of place the scope is. */
-    public enum Kind {
+    public enum ScopeKind {
         /** The script's top level, and every block that has no words of its own. */
         SCRIPT,
         /** A closure given to a word whose parameter names the class of its words ({@code @DelegatesTo}). */
@@ -25,19 +25,19 @@ public final class WordScope {
         UNITS
     }
 
-    private final Kind kind;
+    private final ScopeKind kind;
     private final Class<?> type;
     private final List<String> openers;
     private final SortedMap<String, WordEntry> words;
 
-    WordScope(Kind kind, Class<?> type, List<String> openers, Map<String, WordEntry> words) {
+    WordScope(ScopeKind kind, Class<?> type, List<String> openers, Map<String, WordEntry> words) {
         this.kind = kind;
         this.type = type;
         this.openers = List.copyOf(openers);
         this.words = Collections.unmodifiableSortedMap(new TreeMap<>(words));
     }
 
-    public Kind kind() {
+    public ScopeKind kind() {
         return kind;
     }
 
