@@ -151,7 +151,7 @@ final class ExpressionTypes {
 
     /** Whether the class holds the second words of two-word instructions ({@code then} after {@code waitFor}). */
     boolean isChain(Class<?> type) {
-        return language.vocabulary().scopeOf(type).map(s -> s.kind() == WordScope.Kind.CHAIN).orElse(false);
+        return language.vocabulary().scopeOf(type).map(s -> s.kind() == WordScope.ScopeKind.CHAIN).orElse(false);
     }
 
     private Class<?> variable(VariableExpression v, LookupFrame frame) {

@@ -310,7 +310,7 @@ final class ScriptWalker extends ClassCodeVisitorSupport {
             return belongsElsewhere(name, elsewhere.get(0));
         }
         WordScope innermost = visible.get(0);
-        String kind = innermost.kind() == WordScope.Kind.BLOCK ? " in " + String.join(" / ",
+        String kind = innermost.kind() == WordScope.ScopeKind.BLOCK ? " in " + String.join(" / ",
                 innermost.openers().stream().map(o -> o + " { }").toList()) : "";
         String near = Suggestions.didYouMean(name, innermost.words().keySet());
         if (near.isEmpty()) {
@@ -349,7 +349,7 @@ final class ScriptWalker extends ClassCodeVisitorSupport {
         List<WordScope> visible = visibleScopes();
         for (WordScope s : visible) {
             if (s.words().containsKey(name)) {
-                return s.kind() == WordScope.Kind.SCRIPT
+                return s.kind() == WordScope.ScopeKind.SCRIPT
                         ? "'" + name + "' is a command, but Groovy read it as a variable here. Expected it with its arguments,"
                         + " e.g. '" + name + "()', and in parentheses when it is the argument of another command,"
                         + " e.g. 'execute(during(10) run task)'"

@@ -195,7 +195,7 @@ class MistakeCorpusSpec extends Specification {
                                     && lines[call.lineNumber - 1].trim() == callText(lines, call).trim())
                 }
                 call.objectExpression.visit(this)
-                boolean opens = call.implicitThis && vocabulary.scopes().any { it.kind() == WordScope.Kind.BLOCK && name in it.openers() }
+                boolean opens = call.implicitThis && vocabulary.scopes().any { it.kind() == WordScope.ScopeKind.BLOCK && name in it.openers() }
                 args.each { a ->
                     if (a instanceof ClosureExpression && opens) {
                         stack << [name, a]
@@ -231,7 +231,7 @@ class MistakeCorpusSpec extends Specification {
     /** The scope whose word the call is: the innermost enclosing block that has it, else the script's. */
     WordEntry word(Site s) {
         for (String opener : s.blocks.reverse()) {
-            WordScope scope = vocabulary.scopes().find { it.kind() == WordScope.Kind.BLOCK && opener in it.openers() }
+            WordScope scope = vocabulary.scopes().find { it.kind() == WordScope.ScopeKind.BLOCK && opener in it.openers() }
             if (scope?.words()?.containsKey(s.call.methodAsString)) {
                 return scope.words()[s.call.methodAsString]
             }
@@ -312,7 +312,7 @@ class MistakeCorpusSpec extends Specification {
         if (s.enclosing == null || !s.wholeLine || lines[s.enclosing.lastLineNumber - 1].trim() != '}') {
             return null
         }
-        WordScope inner = vocabulary.scopes().find { it.kind() == WordScope.Kind.BLOCK && s.blocks[-1] in it.openers() }
+        WordScope inner = vocabulary.scopes().find { it.kind() == WordScope.ScopeKind.BLOCK && s.blocks[-1] in it.openers() }
         if (!inner?.words()?.containsKey(s.call.methodAsString)) {
             return null
         }
