@@ -13,7 +13,9 @@ import dolphin.core.ErrorHandler
 import dolphin.core.IdleTask
 import dolphin.core.NodeSet
 import dolphin.core.Position
+import dolphin.core.NodeFilter
 import dolphin.core.ResourceExplicitTask
+import dolphin.core.StandInNode
 import dolphin.core.Task
 import dolphin.core.TaskGuard
 import dolphin.core.TimeConstrainedTask
@@ -54,6 +56,9 @@ abstract class DolphinScript extends Script implements DslScript {
     NodeSet pick(@DelegatesTo(value = Picker, strategy = Closure.DELEGATE_FIRST) Closure clauses) {
         Picker picker = new Picker()
         Blocks.run(clauses, picker)
+        if (context.rehearsal()) {
+            return standIns(picker)
+        }
         NodeSet chosen = env().select(picker.filter(), picker.requestedCount(), picker.requestedTimeout())
         if (chosen.is(NodeSet.EMPTY)) {
             throw new Halt("pick: could not find ${picker.requestedCount()} free vehicle(s) matching ${picker.filter()}"
@@ -63,6 +68,14 @@ abstract class DolphinScript extends Script implements DslScript {
     }
 
     @Word('Frees vehicles picked earlier, for other picks')
+    /** What a rehearsal picks: as many vehicles as asked, none of them there. */
+    private static NodeSet standIns(Picker picker) {
+        NodeSet set = new NodeSet()
+        NodeFilter f = picker.filter()
+        (1..picker.requestedCount()).each { set.add(new StandInNode("stand-in ${it}", f.type() ?: 'any')) }
+        set
+    }
+
     void release(NodeSet vehicles) {
         env().release(vehicles)
     }
@@ -82,6 +95,7 @@ abstract class DolphinScript extends Script implements DslScript {
 
     @Word('Where the vehicle is now (waits for its first report): a position in degrees and metres above mean sea level')
     Position position(NodeSet vehicle) {
+        context.needsVehicle('position', vehicle)
         def node = vehicle.single('position')
         Position p = node instanceof AbstractNode ? ((AbstractNode) node).awaitPosition() : node.position
         if (p == null) {
@@ -92,6 +106,7 @@ abstract class DolphinScript extends Script implements DslScript {
 
     @Word('The vehicle\'s remaining battery, 0 to 1 (waits for its first report)')
     double battery(NodeSet vehicle) {
+        context.needsVehicle('battery', vehicle)
         def node = vehicle.single('battery')
         node instanceof AbstractNode ? ((AbstractNode) node).batteryRemaining() : 1.0d
     }
@@ -127,6 +142,10 @@ abstract class DolphinScript extends Script implements DslScript {
     }
 
     protected CompletionState executeTask(Task task) {
+        if (context.rehearsal()) {
+            context.rehearsedExecute()
+            return CompletionState.DONE
+        }
         CompletionState cs = env().run(task)
         if (cs.error) {
             context.taskFailed()

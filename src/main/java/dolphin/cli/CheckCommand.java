@@ -17,8 +17,11 @@ import picocli.CommandLine.Spec;
 /** {@code dolphin check SCRIPT...}: compiles scripts and prints their mistakes as file:line:column: message. */
 @Command(name = "check", mixinStandardHelpOptions = true,
         description = {"Compiles scripts and prints their errors as file:line:column: message.",
-                "A script that compiles is then run without vehicles, as dolphin mission does, up to its first pick, "
-                        + "so that mistakes in its missions (an item below home) are found too.",
+                "Every name is looked up as the script will when it runs: unknown words (with did you mean), wrong "
+                        + "arguments, a block's words outside it, unknown units, variables never assigned; all at once.",
+                "A script without such mistakes is then rehearsed without vehicles: its picks give stand-ins, its "
+                        + "executes run nothing, so that its missions are built and their mistakes (an item below home) "
+                        + "found too, up to the first word that needs a vehicle's telemetry.",
                 "Exit 0 when every script is correct, 1 when one has errors, 2 when a script cannot be read."})
 final class CheckCommand implements Callable<Integer> {
 
@@ -47,7 +50,7 @@ final class CheckCommand implements Callable<Integer> {
             if (!errors.isEmpty()) {
                 code = 1;
             } else {
-                String missionError = DryRun.of(source, script.toString(), DRY_RUN_LIMIT).error();
+                String missionError = DryRun.of(source, script.toString(), DRY_RUN_LIMIT, true).error();
                 if (missionError != null) {
                     err.println(missionError);
                     code = 1;

@@ -30,10 +30,20 @@ import java.util.Set;
 record DryRun(ScriptResult result, List<Mission> missions, List<String> messages) {
 
     static DryRun of(String source, String file, Duration timeLimit) throws InterruptedException {
+        return of(source, file, timeLimit, false);
+    }
+
+    /**
+     * As {@link #of(String, String, Duration)}; a rehearsal ({@link Engine#setRehearsal}) goes on past
+     * its picks with stand-in vehicles and runs no execute, so the missions built after a pick are
+     * built too, up to the first word that needs a vehicle's telemetry.
+     */
+    static DryRun of(String source, String file, Duration timeLimit, boolean rehearse) throws InterruptedException {
         Set<Mission> seen = Collections.newSetFromMap(new IdentityHashMap<>());
         List<Mission> missions = Collections.synchronizedList(new ArrayList<>());
         Engine engine = new Engine(new DryRunPlatform(), ManualClock.autoAdvancing());
         engine.addExtension(new MAVLinkLanguage());
+        engine.setRehearsal(rehearse);
         // Nobody answers a dry run: it stops at its first question, as at its first pick.
         engine.setInput(prompt -> {
             throw new Halt("ask: a dry run has nobody to answer '" + prompt + "'");

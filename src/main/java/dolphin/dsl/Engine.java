@@ -43,6 +43,7 @@ public final class Engine implements AutoCloseable {
     private final Map<String, Object> presets = new LinkedHashMap<>();
     private volatile Function<String, String> input;
     private volatile Binding lastBinding = new Binding();
+    private volatile boolean rehearsal;
     private ScriptRun current;
 
     public Engine(Platform platform) {
@@ -81,6 +82,15 @@ public final class Engine implements AutoCloseable {
     /** Where {@code ask} reads its answers; by default the platform's (standard input). */
     public void setInput(Function<String, String> input) {
         this.input = input;
+    }
+
+    /**
+     * Makes later runs rehearsals ({@link ScriptContext#rehearsal()}): the script runs without
+     * vehicles up to its end or to its first word that needs one, so that everything it builds on
+     * the way (its missions) is built and checked.
+     */
+    public void setRehearsal(boolean rehearsal) {
+        this.rehearsal = rehearsal;
     }
 
     /** Sets a variable that every later script run starts with. */
@@ -169,7 +179,7 @@ public final class Engine implements AutoCloseable {
     }
 
     private void execute(String source, String file, Binding binding, ScriptRun run) {
-        ScriptContext context = new ScriptContext(environment, prompt -> input.apply(prompt));
+        ScriptContext context = new ScriptContext(environment, prompt -> input.apply(prompt), rehearsal);
         ScriptCompiler compiler = compiler();
         Fanout out = (Fanout) environment.getListener();
         out.scriptStarted(file);

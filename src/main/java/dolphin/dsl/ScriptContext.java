@@ -16,11 +16,39 @@ public final class ScriptContext {
         throw new IllegalStateException("no script is running");
     };
     private int taskErrors;
+    private final boolean rehearsal;
+    private int rehearsedExecutes;
 
-    ScriptContext(Environment environment, Function<String, String> input) {
+    ScriptContext(Environment environment, Function<String, String> input, boolean rehearsal) {
         this.environment = environment;
         this.input = input;
+        this.rehearsal = rehearsal;
     }
+
+    /**
+     * Whether this run is a rehearsal: {@code pick} gives stand-ins ({@link dolphin.core.StandInNode})
+     * at once, {@code execute} runs nothing, a word that needs telemetry ends the run ({@link Halt}).
+     */
+    public boolean rehearsal() {
+        return rehearsal;
+    }
+
+    /** An execute a rehearsal skips; a script that loops on executes alone ends after {@value #REHEARSED_EXECUTES}. */
+    void rehearsedExecute() {
+        if (++rehearsedExecutes > REHEARSED_EXECUTES) {
+            throw new Halt("the rehearsal ran " + REHEARSED_EXECUTES + " executes: a loop that only ends with vehicles");
+        }
+    }
+
+    /** Ends a rehearsal at a word that needs a vehicle's telemetry. */
+    public void needsVehicle(String word, Object vehicle) {
+        if (vehicle instanceof dolphin.core.StandInNode || vehicle instanceof dolphin.core.NodeSet set
+                && set.stream().anyMatch(dolphin.core.StandInNode.class::isInstance)) {
+            throw new Halt(word + ": a rehearsal has no vehicles to ask");
+        }
+    }
+
+    static final int REHEARSED_EXECUTES = 1000;
 
     public Environment environment() {
         return environment;

@@ -86,6 +86,7 @@ public final class MAVLinkLanguage implements DslExtension {
         /** Sends a raw MAVLink message to every vehicle of the set, at once (not a task). */
         @Word("Sends a MAVLink message to every vehicle of the set, at once")
         public void sendMessage(NodeSet vehicles, MAVLinkMessage message) {
+            context.needsVehicle("sendMessage", vehicles);
             for (Node n : vehicles) {
                 if (!(n instanceof MAVLinkNode node)) {
                     throw new DslException("sendMessage: vehicle " + n.getId() + " is not a MAVLink vehicle");
@@ -178,7 +179,8 @@ public final class MAVLinkLanguage implements DslExtension {
             return new MissionTask(m);
         }
 
-        private static MAVLinkNode single(String word, Object vehicle) {
+        private MAVLinkNode single(String word, Object vehicle) {
+            context.needsVehicle(word, vehicle);
             Object v = vehicle;
             if (v instanceof NodeSet set) {
                 java.util.Iterator<Node> it = set.iterator();

@@ -42,6 +42,37 @@ class CheckCommandSpec extends Specification {
         'below-home.dolphin'   | 9    | "mission hop: item 2 (goPos, NAV_WAYPOINT) is 0.0 m above home (home at 820.0 m): lower than the 2 m clearance"
     }
 
+    def "a new user's first script: every mistake at its line, with what was meant, before any vehicle is picked"() {
+        when:
+        def r = check(script('first-try.dolphin'))
+
+        then:
+        r.code == 1
+        r.err.readLines() == [
+                "${script('first-try.dolphin')}:3:3: takeOff: expected (position[, pitch]), got (Integer); a position is pos { lat ...; lon ...; hae ... } or location(lat, lon, hae)",
+                "${script('first-try.dolphin')}:4:3: unknown command 'mvoe' in mission { }; did you mean 'move'?",
+                "${script('first-try.dolphin')}:5:3: unknown command 'land' in mission { }; did you mean 'landingPoint' or 'returnHomeAndLand'?",
+                "${script('first-try.dolphin')}:7:23: unknown command 'batery'; did you mean 'battery'?"]*.toString()
+    }
+
+    def "missions built after a pick are checked: the rehearsal picks stand-ins and runs no execute, even in a loop"() {
+        when:
+        def r = check(script('below-home-after-pick.dolphin'))
+
+        then:
+        r.code == 1
+        r.err.trim() == "${script('below-home-after-pick.dolphin')}:8: mission MissionPlan_line5: item 2 (goPos, NAV_WAYPOINT) is -10.0 m above home (home at 100.0 m): lower than the 2 m clearance, into the ground or nearly; only landings go lower. Raise it, or write 'allowBelowHome true' in the mission if this is intended"
+    }
+
+    def "what only a vehicle can tell ends the rehearsal quietly: no finding, exit 0"() {
+        when:
+        def r = check(script('mission-after-telemetry.dolphin'))
+
+        then:
+        r.code == 0
+        r.err.isEmpty()
+    }
+
     def "an unreadable script is a usage error, exit 2"() {
         when:
         def r = check('no/such/script.dolphin')

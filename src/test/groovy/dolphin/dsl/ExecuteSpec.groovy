@@ -318,6 +318,6 @@ class ExecuteSpec extends Specification {
         then:
         r.outcome == SCRIPT_ERROR
         r.error.line == 3
-        r.error.message.contains("'waitFor { ... }' is followed by 'run'; expected 'then'")
+        r.error.message.contains("'run' cannot follow waitFor or when: expected 'then'")
     }
 }
