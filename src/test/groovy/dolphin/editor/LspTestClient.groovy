@@ -82,11 +82,11 @@ final class LspTestClient implements LanguageClient, AutoCloseable {
     }
 
     /** The diagnostics published for this version of the document (or, with null, for its closing). */
-    PublishDiagnosticsParams diagnostics(String uri, Integer version) {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(DEADLINE_SECONDS)
+    PublishDiagnosticsParams diagnostics(String uri, Integer version, long seconds = DEADLINE_SECONDS) {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds)
         while (true) {
             def p = published.poll(deadline - System.nanoTime(), TimeUnit.NANOSECONDS)
-            assert p != null: "no diagnostics for ${uri} version ${version} within ${DEADLINE_SECONDS} s"
+            assert p != null: "no diagnostics for ${uri} version ${version} within ${seconds} s"
             if (p.uri == uri && p.version == version) {
                 return p
             }
