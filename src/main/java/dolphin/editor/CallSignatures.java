@@ -32,25 +32,21 @@ final class CallSignatures {
         if (!context.inCode()) {
             return null;
         }
+        List<WordScope> visible = words.at(context);
         List<ScanFrame> frames = context.frames();
         for (int i = frames.size() - 1; i >= 0; i--) {
             ScanFrame f = frames.get(i);
-            switch (f.kind) {
-                case PAREN -> {
-                    Optional<ScopedWord> called = f.opener == null ? Optional.empty() : words.find(f.opener, words.at(context));
-                    if (called.isPresent()) {
-                        return help(called.get().entry(), commas(f.statement(), 0));
-                    }
-                }
-                case BRACKET -> {
-                    // a list argument: the call is around it
-                }
-                case SCRIPT, BRACE -> {
-                    return command(f.statement(), offset, words.at(context));
-                }
-                case INTERPOLATION -> {
-                    return null;
-                }
+            if (f.kind == ScanFrame.FrameKind.INTERPOLATION) {
+                return null;
+            }
+            if (f.kind == ScanFrame.FrameKind.SCRIPT || f.kind == ScanFrame.FrameKind.BRACE) {
+                return command(f.statement(), offset, visible);
+            }
+            // a parenthesis after a word calls it; a list, or a parenthesis after none, is an argument of the call around it
+            Optional<ScopedWord> called = f.kind == ScanFrame.FrameKind.PAREN && f.opener != null
+                    ? words.find(f.opener, visible) : Optional.empty();
+            if (called.isPresent()) {
+                return help(called.get().entry(), commas(f.statement(), 0));
             }
         }
         return null;
@@ -100,14 +96,15 @@ final class CallSignatures {
         return n;
     }
 
+    /** The word's forms; the active one is the first with a parameter at the argument, else the longest. */
     private static SignatureHelp help(WordEntry word, int argument) {
         List<SignatureInformation> forms = new ArrayList<>();
         int active = -1;
-        int widest = 0;
+        int longest = 0;
+        int longestSize = -1;
         for (String usage : word.usages()) {
-            List<int[]> spans = UsageParameters.of(usage, word.name());
             List<ParameterInformation> params = new ArrayList<>();
-            for (int[] s : spans) {
+            for (int[] s : UsageParameters.of(usage, word.name())) {
                 String name = usage.substring(s[0], s[1]).replaceAll("[{}. ]", "");
                 String unit = WordText.unitOf(word, name);
                 ParameterInformation p = new ParameterInformation();
@@ -122,12 +119,12 @@ final class CallSignatures {
             if (active < 0 && params.size() > argument) {
                 active = forms.size();
             }
-            if (params.size() > forms.stream().mapToInt(f -> f.getParameters().size()).max().orElse(-1)) {
-                widest = forms.size();
+            if (params.size() > longestSize) {
+                longest = forms.size();
+                longestSize = params.size();
             }
             forms.add(form);
         }
-        SignatureHelp help = new SignatureHelp(forms, active >= 0 ? active : widest, argument);
-        return forms.isEmpty() ? null : help;
+        return new SignatureHelp(forms, active >= 0 ? active : longest, argument);
     }
 }

@@ -126,8 +126,8 @@ final class CodeScanner {
     }
 
     /**
-     * The word a '{' belongs to: the word just before it ({@code mission {}), the call before its
-     * parentheses ({@code def f(a) {}), or, as an argument in parentheses, the call's word
+     * The word a '{' belongs to: the word just before it ({@code mission { }}), the call before its
+     * parentheses ({@code def f(a) { }}), or, as an argument in parentheses, the call's word
      * ({@code move(p, { north 10 })}).
      */
     private String braceOpener() {

@@ -1,8 +1,8 @@
 package dolphin.editor;
 
 /**
- * Where a script gives a name its first value: {@code surveyNorth = mission {}, {@code def x},
- * {@code def cutAt(v) {}.
+ * Where a script gives a name its first value: {@code surveyNorth = mission { }}, {@code def x},
+ * {@code def cutAt(v) { }}.
  *
  * @param name the name
  * @param offset where the name is written there

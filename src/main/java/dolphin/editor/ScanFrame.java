@@ -16,7 +16,7 @@ final class ScanFrame {
     }
 
     final FrameKind kind;
-    /** The word before a brace ({@code mission} of {@code mission {}) or a parenthesis ({@code goPos(}); null if none. */
+    /** The word before a brace ({@code mission} of {@code mission { }}) or a parenthesis ({@code goPos(}); null if none. */
     final String opener;
     final int start;
     /** For an interpolation, the quotes of the string it is in. */

@@ -12,7 +12,7 @@ import java.util.Optional;
 /**
  * Which words can be written at a place, from the words that opened the blocks around it: inside a
  * block its own words come first, then those of the blocks around it, then the script's (Groovy's
- * DELEGATE_FIRST). A brace whose word opens no block of words ({@code waitFor { }}, {@code if (c) {})
+ * DELEGATE_FIRST). A brace whose word opens no block of words ({@code waitFor { }}, {@code if (c) { }})
  * sees what its surroundings see.
  */
 final class VisibleWords {

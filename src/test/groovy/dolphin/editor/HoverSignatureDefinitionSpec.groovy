@@ -124,6 +124,22 @@ message "goPos"
         help.activeParameter == 2
     }
 
+    def "signature help through a grouping parenthesis and a list: the call around them"() {
+        when:
+        client.change(URI, 2, 'm = mission {\n    surveyArea location(1, 2, 3), 3000, (10 + \n}\n')
+        def survey = client.signatureHelp(URI, new Position(1, '    surveyArea location(1, 2, 3), 3000, (10 + '.length()))
+        client.change(URI, 3, 'm = mission {\n    fence { inclusion polygon(location(1, 2), [')
+        def polygon = client.signatureHelp(URI, new Position(1, '    fence { inclusion polygon(location(1, 2), ['.length()))
+
+        then: 'the third argument of surveyArea, in its form with a base'
+        survey.signatures*.label == ['surveyArea(base, length, width[, spacing][, direction])', 'surveyArea(length, width[, spacing][, direction])']
+        survey.activeParameter == 2
+        survey.activeSignature == 0
+        polygon.signatures*.label == ['polygon(vertices...)']
+        polygon.activeParameter == 1
+        polygon.signatures[0].activeParameter == 0
+    }
+
     def "signature help for the second word of a two-word instruction, and none after a finished word being typed"() {
         when:
         client.change(URI, 2, 'execute v1: waitFor { battery(v1) > 0.9 } then ')
