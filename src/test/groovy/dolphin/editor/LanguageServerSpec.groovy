@@ -65,6 +65,29 @@ class LanguageServerSpec extends Specification {
         client.diagnostics(URI, null).diagnostics == []
     }
 
+    def "every finding of the check is published, as engine.check words it, each underlining the word it names"() {
+        given:
+        String text = """homePos = location(40.4, -7.3, 820)
+m = mission {
+    goPoz 40.1, -7.3, 900
+    takeOff homePos, 1, 2, 3
+}
+fence { }
+v1 = pick { type 'UAV'; timeout 30.secondz }
+"""
+
+        when:
+        client.open(URI, text)
+        def d = client.diagnostics(URI, 1).diagnostics
+
+        then:
+        d*.message*.getLeft() == ScriptChecker.withMavlinkWords().engine().check(text, 'survey.dolphin')*.message()
+        d*.range == [new Range(new Position(2, 4), new Position(2, 9)),
+                     new Range(new Position(3, 4), new Position(3, 11)),
+                     new Range(new Position(5, 0), new Position(5, 5)),
+                     new Range(new Position(6, 35), new Position(6, 42))]
+    }
+
     def "an error with a column underlines the word there: 'execute' alone on its line"() {
         when:
         client.open(URI, 'm = mission { goPos 1, 2 }\nv1 = pick { type "UAV" }\nexecute\nv1: m\n')
@@ -88,6 +111,31 @@ class LanguageServerSpec extends Specification {
         then:
         d.size() == 1
         items*.label == ['goPos']
+    }
+
+    def "bad input never ends the server: ten thousand nested brackets, binary noise, a script too large to check as you type"() {
+        given:
+        String deep = 'x = ' + '(' * 10_000 + '1' + ')' * 10_000 + '\n'
+        String noise = (0..<4096).collect { (char) ((it * 7919) % 0xD7FF) }.join()
+        String huge = 'x = 1\n' * 170_000
+
+        when:
+        client.open('file:///work/deep.dolphin', deep)
+        client.open('file:///work/noise.dolphin', noise)
+        client.open('file:///work/huge.dolphin', huge)
+        def deepResult = client.diagnostics('file:///work/deep.dolphin', 1)
+        def noiseResult = client.diagnostics('file:///work/noise.dolphin', 1)
+        def hugeResult = client.diagnostics('file:///work/huge.dolphin', 1)
+
+        then:
+        deepResult.diagnostics == []
+        !noiseResult.diagnostics.isEmpty()
+        hugeResult.diagnostics*.message*.getLeft() == ["not checked: the script has ${huge.length()} characters, more than the "
+                + "${ScriptChecker.MAX_CHARACTERS} the editor checks as you type; run dolphin check on it".toString()]
+
+        and: 'the server still answers, on the huge script too'
+        client.complete('file:///work/huge.dolphin', new Position(170_000, 0))*.label.containsAll(['mission', 'x'])
+        client.hover('file:///work/deep.dolphin', new Position(0, 0)).contents.getRight().value.contains('Variable assigned at line 1')
     }
 
     def "a client that closes the server's input ends it with exit code 0"() {

@@ -40,7 +40,12 @@ final class LspProcess implements AutoCloseable {
     }
 
     private void send(Map message) {
-        byte[] body = JsonOutput.toJson(message).getBytes(StandardCharsets.UTF_8)
+        sendRaw(JsonOutput.toJson(message))
+    }
+
+    /** A frame with this body, JSON or not. */
+    void sendRaw(String text) {
+        byte[] body = text.getBytes(StandardCharsets.UTF_8)
         process.outputStream.write("Content-Length: ${body.length}\r\n\r\n".getBytes(StandardCharsets.US_ASCII))
         process.outputStream.write(body)
         process.outputStream.flush()

@@ -36,6 +36,21 @@ class LspProcessSpec extends Specification {
         rest.every { it.jsonrpc == '2.0' }
     }
 
+    def "a message that is not JSON, or a request for a method the server does not know, gets an error; the server goes on"() {
+        when:
+        server.initialize()
+        server.sendRaw('{"jsonrpc": "2.0", "id": 99, "method": ')
+        int unknown = server.request('textDocument/frobnicate', [:])
+        Map unknownAnswer = server.next { it.id == unknown }
+        int shutdown = server.request('shutdown', null)
+        server.next { it.id == shutdown }
+        server.notify('exit', null)
+
+        then:
+        unknownAnswer.error.code == -32601
+        server.exitCode() == 0
+    }
+
     def "exit without shutdown: exit code 1, as the protocol says"() {
         when:
         server.initialize()
