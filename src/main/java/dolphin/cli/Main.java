@@ -11,7 +11,7 @@ import picocli.CommandLine.Spec;
 @Command(name = "dolphin", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         description = "Runs Dolphin scripts that orchestrate vehicles.",
         subcommands = {RunCommand.class, SimCommand.class, CheckCommand.class, MissionCommand.class,
-                CommandLine.HelpCommand.class, WordsCommand.class})
+                CommandLine.HelpCommand.class, WordsCommand.class, LspCommand.class})
 public final class Main implements Runnable {
 
     public static final int USAGE = 2;

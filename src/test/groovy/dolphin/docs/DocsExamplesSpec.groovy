@@ -18,7 +18,7 @@ import spock.lang.Timeout
 class DocsExamplesSpec extends Specification {
 
     static final Path DOCS = Path.of('docs')
-    static final Set<String> KINDS = ['groovy', 'sh', 'java', 'text', 'json'] as Set
+    static final Set<String> KINDS = ['groovy', 'sh', 'java', 'text', 'json', 'lua', 'elisp'] as Set
     static final Set<String> DIRECTIVES = ['run', 'mission', 'check', 'exit', 'expect', 'output', 'file'] as Set
 
     /** One fenced block: where it is, its info string, its text and the directives just above it. */
@@ -120,7 +120,8 @@ class DocsExamplesSpec extends Specification {
 
     boolean check(Block b) {
         Map<String, Closure> checks = [groovy: this.&script, sh: this.&commands, java: this.&javaSource,
-                                       text: this.&sample, json: this.&jsonSample]
+                                       text: this.&sample, json: this.&jsonSample, lua: this.&neovimConfig,
+                                       elisp: this.&emacsConfig]
         assert checks.keySet() == KINDS
         assert b.kind in KINDS: "${b}: unknown info string '${b.kind}' (docs/README.md)"
         checks[b.kind].call(b)
@@ -300,6 +301,54 @@ class DocsExamplesSpec extends Specification {
         if (b.has('file')) {
             assert within(sample, new JsonSlurper().parseText(actual(b))): "${b}: the sample is not a part of ${b.one('file')}:\n${actual(b)}"
         }
+    }
+
+    /**
+     * A lua block is the Neovim configuration of docs/editors.md, which NeovimSpec runs in a real
+     * Neovim with the server's command replaced by the test's own: it must hold that command once.
+     */
+    void neovimConfig(Block b) {
+        allow(b)
+        assert b.doc == DOCS.resolve('editors.md').toString(): "${b}: NeovimSpec runs the lua block of docs/editors.md only"
+        assert b.text.count(dolphin.editor.NeovimSpec.DOCUMENTED_COMMAND) == 1:
+                "${b}: the server's command must be written ${dolphin.editor.NeovimSpec.DOCUMENTED_COMMAND}, once: NeovimSpec replaces it"
+    }
+
+    /**
+     * An elisp block is Emacs configuration: whole forms, their brackets balanced outside strings,
+     * comments and character literals (?( is a character, not a bracket).
+     */
+    void emacsConfig(Block b) {
+        allow(b)
+        String text = b.text
+        List<String> closers = []
+        int forms = 0
+        int i = 0
+        while (i < text.length()) {
+            char c = text.charAt(i)
+            boolean tokenStart = i == 0 || Character.isWhitespace(text.charAt(i - 1)) || text.charAt(i - 1) == '(' as char
+            if (c == ';' as char) {
+                i = text.indexOf('\n', i)
+            } else if (c == '"' as char) {
+                i++
+                while (i < text.length() && text.charAt(i) != '"' as char) {
+                    i += text.charAt(i) == '\\' as char ? 2 : 1
+                }
+                assert i < text.length(): "${b}: a string that is never closed"
+            } else if (c == '?' as char && tokenStart) {
+                i += text.charAt(i + 1) == '\\' as char ? 2 : 1
+            } else if (c == '(' as char || c == '[' as char) {
+                forms += closers.isEmpty() ? 1 : 0
+                closers << (c == '(' as char ? ')' : ']')
+            } else if (c == ')' as char || c == ']' as char) {
+                assert closers && closers.removeLast() == String.valueOf(c): "${b}: '${c}' at offset ${i} closes nothing it opened"
+            } else {
+                assert closers || Character.isWhitespace(c): "${b}: '${c}' at offset ${i} is outside any form"
+            }
+            i++
+        }
+        assert closers.isEmpty(): "${b}: ${closers.size()} bracket(s) never closed"
+        assert forms > 0: "${b}: no form"
     }
 
     static boolean within(Object part, Object whole) {

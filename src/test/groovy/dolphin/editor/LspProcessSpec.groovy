@@ -1,0 +1,81 @@
+package dolphin.editor
+
+import spock.lang.AutoCleanup
+import spock.lang.Specification
+import spock.lang.Timeout
+
+/** The server as its own process: the protocol alone on standard output, and how it ends. */
+@Timeout(120)
+class LspProcessSpec extends Specification {
+
+    static final String URI = 'file:///work/broken.dolphin'
+
+    @AutoCleanup
+    LspProcess server = new LspProcess()
+
+    def "shutdown then exit: exit code 0, and standard output held nothing but the protocol's messages"() {
+        when:
+        server.initialize()
+        server.notify('textDocument/didOpen', [textDocument: [uri: URI, languageId: 'dolphin', version: 1,
+                                                              text: 'm = mission {\n    takeOff(\n}\n']])
+        Map published = server.next { it.method == 'textDocument/publishDiagnostics' }
+        int shutdown = server.request('shutdown', null)
+        server.next { it.id == shutdown }
+        server.notify('exit', null)
+
+        then:
+        published.params.diagnostics*.message == ["unbalanced '}': expected ')' to close the '(' of line 2"]
+        published.params.diagnostics[0].range.start == [line: 2, character: 0]
+        server.exitCode() == 0
+
+        and: 'every byte left on its output is a whole message'
+        List<Map> rest = []
+        for (Map m = server.read(); m != null; m = server.read()) {
+            rest << m
+        }
+        rest.every { it.jsonrpc == '2.0' }
+    }
+
+    def "a message that is not JSON, or a request for a method the server does not know, gets an error; the server goes on"() {
+        when:
+        server.initialize()
+        server.sendRaw('{"jsonrpc": "2.0", "id": 99, "method": ')
+        int unknown = server.request('textDocument/frobnicate', [:])
+        Map unknownAnswer = server.next { it.id == unknown }
+        int shutdown = server.request('shutdown', null)
+        server.next { it.id == shutdown }
+        server.notify('exit', null)
+
+        then:
+        unknownAnswer.error.code == -32601
+        server.exitCode() == 0
+    }
+
+    def "exit without shutdown: exit code 1, as the protocol says"() {
+        when:
+        server.initialize()
+        server.notify('exit', null)
+
+        then:
+        server.exitCode() == 1
+    }
+
+    def "a client that goes away (the server's input closed) ends the server cleanly: exit code 0"() {
+        when:
+        server.initialize()
+        server.notify('textDocument/didOpen', [textDocument: [uri: URI, languageId: 'dolphin', version: 1, text: 'message "hi"\n']])
+        server.next { it.method == 'textDocument/publishDiagnostics' }
+        server.closeInput()
+
+        then:
+        server.exitCode() == 0
+    }
+
+    def "a client that goes away before it even initializes: exit code 0"() {
+        when:
+        server.closeInput()
+
+        then:
+        server.exitCode() == 0
+    }
+}

@@ -1,0 +1,130 @@
+package dolphin.editor
+
+import dolphin.docs.DocsExamplesSpec
+import groovy.json.JsonSlurper
+import java.nio.file.Files
+import java.nio.file.Path
+import java.util.concurrent.TimeUnit
+import spock.lang.Requires
+import spock.lang.Specification
+import spock.lang.Timeout
+
+/**
+ * A real editor: Debian's Neovim 0.7.2, headless, configured by the Lua block of docs/editors.md
+ * itself (its server command replaced by this JVM's {@code java -cp ... dolphin.cli.Main lsp}), opens
+ * a script with a mistake, waits for the diagnostic, asks for completion inside the script's
+ * {@code mission { }} and writes what it got as JSON; the spec reads it.
+ */
+@Requires({ Neovim.available() })
+@Timeout(180)
+class NeovimSpec extends Specification {
+
+    /** How docs/editors.md's Lua names the server; replaced here by this JVM's own command. */
+    static final String DOCUMENTED_COMMAND = "'/path/to/dolphin/dolphin', 'lsp'"
+    static final long DEADLINE_SECONDS = 60
+
+    static final String SCRIPT = '''homePos = location(40.444233, -7.375234, 820)
+survey = mission {
+    home homePos
+
+}
+v1 = pick { type 'UAV' }
+execute
+v1: survey
+'''
+
+    /** What the test adds after the documented configuration: once the file is open, ask and write the answers. */
+    static final String PROBE = '''
+local function write(value)
+  local f = assert(io.open(RESULT, 'w'))
+  f:write(vim.fn.json_encode(value))
+  f:close()
+end
+
+vim.api.nvim_create_autocmd('VimEnter', { callback = function()
+  local ok, err = pcall(function()
+    vim.wait(DEADLINE_MS, function() return #vim.diagnostic.get(0) > 0 end, 50)
+    local diagnostics = {}
+    for _, d in ipairs(vim.diagnostic.get(0)) do
+      table.insert(diagnostics, { lnum = d.lnum, col = d.col, message = d.message })
+    end
+    local params = { textDocument = { uri = vim.uri_from_bufnr(0) }, position = { line = 3, character = 4 } }
+    local responses = vim.lsp.buf_request_sync(0, 'textDocument/completion', params, DEADLINE_MS)
+    local items = {}
+    for _, response in pairs(responses or {}) do
+      local result = response.result or {}
+      for _, item in ipairs(result.items or result) do
+        table.insert(items, { label = item.label, sortText = item.sortText })
+      end
+    end
+    write({ filetype = vim.bo.filetype, diagnostics = diagnostics, completion = items })
+  end)
+  if not ok then
+    write({ error = tostring(err) })
+  end
+  vim.cmd('qa!')
+end })
+'''
+
+    Path dir = Files.createTempDirectory('dolphin-nvim-')
+
+    def cleanup() {
+        dir.toFile().deleteDir()
+    }
+
+    /** The Lua block of docs/editors.md, the one a user copies. */
+    static String documentedConfig() {
+        def blocks = DocsExamplesSpec.blocks().findAll { it.kind == 'lua' }
+        assert blocks.size() == 1 && blocks[0].doc.endsWith('editors.md'): 'docs/editors.md holds the one Neovim configuration'
+        blocks[0].text
+    }
+
+    def "Neovim with the documented configuration shows the script's diagnostic and completes the mission commands"() {
+        given: 'the documented configuration, the server started as this JVM starts it'
+        String java = Path.of(System.getProperty('java.home'), 'bin', 'java').toString()
+        String command = ["[[${java}]]", "'-cp'", "[[${System.getProperty('java.class.path')}]]", "'dolphin.cli.Main'", "'lsp'"].join(', ')
+        String config = documentedConfig()
+        assert config.count(DOCUMENTED_COMMAND) == 1
+        Path result = dir.resolve('result.json')
+        Path init = dir.resolve('init.lua')
+        Files.writeString(init, config.replace(DOCUMENTED_COMMAND, command)
+                + PROBE.replace('RESULT', "[[${result}]]").replace('DEADLINE_MS', "${DEADLINE_SECONDS * 1000}"))
+        Path script = dir.resolve('survey.dolphin')
+        Files.writeString(script, SCRIPT)
+
+        when: 'Neovim opens the script, headless, without any user configuration'
+        def nvim = new ProcessBuilder(Neovim.EDITOR.path, '--headless', '--clean', '-u', init.toString(), script.toString())
+                .directory(dir.toFile()).redirectErrorStream(true).redirectOutput(dir.resolve('nvim.log').toFile())
+        ['XDG_CONFIG_HOME', 'XDG_DATA_HOME', 'XDG_STATE_HOME', 'XDG_CACHE_HOME'].each { nvim.environment()[it] = dir.toString() }
+        Process p = nvim.start()
+        boolean ended = p.waitFor(DEADLINE_SECONDS + 30, TimeUnit.SECONDS)
+        if (!ended) {
+            p.destroyForcibly()
+        }
+        String log = Files.readString(dir.resolve('nvim.log'))
+
+        then:
+        ended
+        Files.exists(result)
+        Map got = new JsonSlurper().parse(result.toFile()) as Map
+        got.error == null
+
+        and: 'the file has the dolphin file type, and the diagnostic of dolphin check on line 7 (0-based 6)'
+        got.filetype == 'dolphin'
+        got.diagnostics.size() == 1
+        got.diagnostics[0].lnum == 6
+        got.diagnostics[0].col == 0
+        got.diagnostics[0].message.startsWith("'execute' stands alone on its line")
+
+        and: 'completion inside mission { }: the mission commands, first'
+        List<Map> items = (got.completion as List<Map>).sort { it.sortText }
+        items*.label.containsAll(['goPos', 'takeOff', 'returnHomeAndLand', 'surveyArea'])
+        items*.label.indexOf('goPos') < items*.label.indexOf('pick')
+        items*.label.contains('homePos')
+
+        cleanup:
+        if (log) {
+            println "nvim: ${log}"
+        }
+    }
+}
