@@ -67,7 +67,6 @@ abstract class DolphinScript extends Script implements DslScript {
         chosen
     }
 
-    @Word('Frees vehicles picked earlier, for other picks')
     /** What a rehearsal picks: as many vehicles as asked, none of them there. */
     private static NodeSet standIns(Picker picker) {
         NodeSet set = new NodeSet()
@@ -76,6 +75,7 @@ abstract class DolphinScript extends Script implements DslScript {
         set
     }
 
+    @Word('Frees vehicles picked earlier, for other picks')
     void release(NodeSet vehicles) {
         env().release(vehicles)
     }

@@ -2,8 +2,8 @@ package dolphin.core;
 
 /**
  * A vehicle that is not there: what {@code pick} gives in a rehearsal, the run of a script without
- * vehicles that {@code dolphin check} makes to build its missions (docs/editors.md, "What the check
- * knows"). It has no telemetry; the words that need some end the rehearsal where they stand.
+ * vehicles that {@code dolphin check} makes to build its missions (docs/decisions.md, "Checking
+ * scripts"). It has no telemetry; the words that need some end the rehearsal where they stand.
  */
 public final class StandInNode implements Node {
 

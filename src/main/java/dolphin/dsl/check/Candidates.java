@@ -6,6 +6,8 @@ import java.lang.reflect.Method;
 import java.lang.reflect.Modifier;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 import org.codehaus.groovy.reflection.CachedClass;
 import org.codehaus.groovy.reflection.CachedMethod;
 import org.codehaus.groovy.reflection.ReflectionCache;
@@ -21,17 +23,22 @@ final class Candidates {
     private Candidates() {
     }
 
+    /** Looked up once per class and name: a MetaClass lists all its methods, Groovy's added ones, for each lookup. */
+    private static final Map<Class<?>, Map<String, List<MetaMethod>>> ALL = new ConcurrentHashMap<>();
+    private static final Map<Class<?>, Map<String, List<MetaMethod>>> WORDS = new ConcurrentHashMap<>();
+
     /** Every method of that name a Groovy call on an instance of the class reaches, Groovy's added ones included. */
     static List<MetaMethod> all(Class<?> type, String name) {
-        return List.copyOf(InvokerHelper.getMetaClass(type).respondsTo(null, name));
+        return ALL.computeIfAbsent(type, t -> new ConcurrentHashMap<>()).computeIfAbsent(name,
+                n -> List.copyOf(InvokerHelper.getMetaClass(type).respondsTo(null, n)));
     }
 
     /** The class's {@code @Word} methods of that name: a platform word class's other methods are not words. */
     static List<MetaMethod> words(Class<?> type, String name) {
-        return Arrays.stream(type.getMethods())
-                .filter(m -> m.getName().equals(name) && m.isAnnotationPresent(Word.class) && !m.isBridge())
+        return WORDS.computeIfAbsent(type, t -> new ConcurrentHashMap<>()).computeIfAbsent(name, n -> Arrays.stream(type.getMethods())
+                .filter(m -> m.getName().equals(n) && m.isAnnotationPresent(Word.class) && !m.isBridge())
                 .map(m -> (MetaMethod) CachedMethod.find(m))
-                .toList();
+                .toList());
     }
 
     /** The public static methods of that name: a statically imported word. */

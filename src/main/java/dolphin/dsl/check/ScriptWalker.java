@@ -33,7 +33,7 @@ import org.codehaus.groovy.runtime.InvokerHelper;
  * Walks a compiled script and reports every name that will fail when the script runs: a word that
  * does not exist (with "did you mean"), a word called with arguments none of its forms takes, a
  * block's word used outside its block, a unit that does not exist, a variable never assigned. Only
- * what is certain is reported (docs/editors.md, "What the check knows").
+ * what is certain is reported (docs/decisions.md, "Checking scripts").
  */
 final class ScriptWalker extends ClassCodeVisitorSupport {
 

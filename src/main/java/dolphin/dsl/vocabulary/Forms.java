@@ -16,7 +16,9 @@ final class Forms {
 
     static List<String> of(List<Signature> signatures) {
         List<Signature> longestFirst = new ArrayList<>(signatures);
-        longestFirst.sort(Comparator.comparingInt((Signature s) -> -s.params().size()));
+        // the class file's method order is not fixed: same length, in the order of their parameters' names and types
+        longestFirst.sort(Comparator.comparingInt((Signature s) -> -s.params().size())
+                .thenComparing(s -> s.params().stream().map(p -> p.name() + ":" + p.type().getName()).toList().toString()));
         List<List<Signature>> groups = new ArrayList<>();
         for (Signature s : longestFirst) {
             List<Signature> group = groups.stream().filter(g -> joins(g.get(0), s)).findFirst().orElse(null);
