@@ -5,7 +5,6 @@ import groovy.lang.MissingMethodException;
 import groovy.lang.MissingPropertyException;
 import java.util.Arrays;
 import java.util.Collection;
-import java.util.List;
 import java.util.stream.Collectors;
 import org.codehaus.groovy.runtime.typehandling.GroovyCastException;
 

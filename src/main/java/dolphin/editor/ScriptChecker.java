@@ -13,7 +13,7 @@ import org.slf4j.LoggerFactory;
 
 /**
  * A script's mistakes as editor diagnostics: what {@code dolphin check} finds by compiling it
- * ({@link Engine#check}), without the dry run, which would run the script's code. A script too large
+ * ({@link Engine#check}), without the rehearsal, which would run the script's code. A script too large
  * to check at typing speed, or one the compiler fails on, gets one diagnostic saying so: bad input
  * never ends the server.
  */
@@ -21,7 +21,7 @@ final class ScriptChecker {
 
     private static final Logger LOG = LoggerFactory.getLogger(ScriptChecker.class);
 
-    /** About 30,000 lines; a 10,000-line script takes a few seconds to compile. */
+    /** About 30,000 lines; a 10,000-line script takes about half a second to check. */
     static final int MAX_CHARACTERS = 1_000_000;
 
     private final Engine engine;

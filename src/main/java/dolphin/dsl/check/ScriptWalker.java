@@ -1,8 +1,6 @@
 package dolphin.dsl.check;
 
-import dolphin.dsl.vocabulary.Suggestions;
 import dolphin.dsl.vocabulary.Vocabulary;
-import dolphin.dsl.vocabulary.WordEntry;
 import dolphin.dsl.vocabulary.WordScope;
 import groovy.lang.Closure;
 import groovy.lang.DelegatesTo;
@@ -11,10 +9,8 @@ import groovy.lang.MetaProperty;
 import java.lang.reflect.Method;
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
-import java.util.stream.Collectors;
 import org.codehaus.groovy.ast.ASTNode;
 import org.codehaus.groovy.ast.ClassCodeVisitorSupport;
 import org.codehaus.groovy.ast.ClassNode;
@@ -52,6 +48,7 @@ final class ScriptWalker extends ClassCodeVisitorSupport {
     private final Set<String> variables;
     private final ExpressionTypes types;
     private final Resolver resolver;
+    private final FindingMessages messages;
     private final List<Finding> findings = new ArrayList<>();
     private LookupFrame frame = LookupFrame.SCRIPT;
 
@@ -65,6 +62,7 @@ final class ScriptWalker extends ClassCodeVisitorSupport {
         variables.addAll(language.presetVariables());
         this.resolver = new Resolver(language, script, variables);
         this.types = new ExpressionTypes(language, assignments, resolver);
+        this.messages = new FindingMessages(vocabulary, assignments, variables, script);
     }
 
     static List<Finding> check(SourceUnit source, ClassNode script, ScriptLanguage language) {
@@ -92,7 +90,8 @@ final class ScriptWalker extends ClassCodeVisitorSupport {
                 || call.getObjectExpression() instanceof VariableExpression v && v.isThisExpression();
         if (onThis) {
             Class<?>[] argTypes = types.of(args, frame);
-            Resolution r = resolver.call(name, argTypes, frame);
+            // this.x() is the script's own, even inside a block
+            Resolution r = resolver.call(name, argTypes, call.isImplicitThis() ? frame : LookupFrame.SCRIPT);
             report(r, name, argTypes, call.getMethod(), args);
             visitArguments(args, r.reach() == Resolution.Reach.METHOD ? Candidates.method(r.method()) : null,
                     r.reach() == Resolution.Reach.METHOD || r.reach() == Resolution.Reach.VARIABLE);
@@ -129,7 +128,7 @@ final class ScriptWalker extends ClassCodeVisitorSupport {
         List<MetaMethod> named = Candidates.statics(owner, call.getMethod());
         MetaMethod m = Candidates.accepting(named, argTypes);
         if (m == null && !named.isEmpty()) {
-            add(call, wrongArguments(call.getMethod(), owner, named, argTypes));
+            add(call, messages.wrongArguments(call.getMethod(), owner, named, argTypes, visibleScopes()));
         }
         visitArguments(args, m == null ? null : Candidates.method(m), m != null);
     }
@@ -203,7 +202,7 @@ final class ScriptWalker extends ClassCodeVisitorSupport {
         if (hasProperty(language.scriptClass(), name) || frame.outer() != null && hasProperty(Closure.class, name)) {
             return;
         }
-        add(v, unknownName(name));
+        add(v, messages.unknownName(name, visibleScopes()));
     }
 
     private static boolean hasProperty(Class<?> type, String name) {
@@ -221,8 +220,7 @@ final class ScriptWalker extends ClassCodeVisitorSupport {
         Class<?> receiver = types.of(p.getObjectExpression(), frame);
         if (ExpressionTypes.isNumber(receiver) && !vocabulary.units().words().containsKey(name)
                 && !hasProperty(receiver, name) && !isCategoryProperty(name)) {
-            add(p.getProperty(), "unknown unit '" + name + "'" + Suggestions.didYouMean(name, vocabulary.units().words().keySet())
-                    + " Units: " + String.join(", ", vocabulary.units().words().keySet()));
+            add(p.getProperty(), messages.unknownUnit(name));
         }
     }
 
@@ -238,8 +236,8 @@ final class ScriptWalker extends ClassCodeVisitorSupport {
 
     private void report(Resolution r, String name, Class<?>[] argTypes, ASTNode at, List<Expression> args) {
         switch (r.reach()) {
-            case WRONG_ARGUMENTS -> add(at, wrongArguments(name, r.owner(), r.named(), argTypes));
-            case MISSING -> add(at, missing(name));
+            case WRONG_ARGUMENTS -> add(at, messages.wrongArguments(name, r.owner(), r.named(), argTypes, visibleScopes()));
+            case MISSING -> add(at, messages.missing(name, visibleScopes()));
             case METHOD -> callChecks(name, r, at, args);
             default -> {
             }
@@ -261,116 +259,9 @@ final class ScriptWalker extends ClassCodeVisitorSupport {
         }
     }
 
-    /** "goPos: expected (lat, lon[, hae]) or (position), got (String)", with a hint for a position. */
-    private String wrongArguments(String name, Class<?> owner, List<MetaMethod> named, Class<?>[] argTypes) {
-        WordEntry word = vocabulary.scopeOf(owner).map(s -> s.words().get(name))
-                .orElseGet(() -> vocabulary.script().words().get(name));
-        String forms = word != null ? word.formsText() : named.stream()
-                .map(m -> Arrays.stream(m.getNativeParameterTypes()).map(Class::getSimpleName).collect(Collectors.joining(", ", "(", ")")))
-                .distinct().collect(Collectors.joining(" or "));
-        String got = Arrays.stream(argTypes).map(t -> t == null ? "?" : t == java.util.LinkedHashMap.class ? "Map"
-                : t == java.util.ArrayList.class ? "List" : groovy.lang.GString.class.isAssignableFrom(t) ? "String"
-                : Closure.class.isAssignableFrom(t) ? "{ block }" : t.getSimpleName()).collect(Collectors.joining(", ", "(", ")"));
-        boolean positionWanted = named.stream().anyMatch(m -> Arrays.stream(m.getNativeParameterTypes())
-                .anyMatch(t -> t.getSimpleName().equals("Position")));
-        boolean numberGiven = Arrays.stream(argTypes).anyMatch(ExpressionTypes::isNumber);
-        String hint = positionWanted && numberGiven && argTypes.length <= 2
-                ? "; a position is pos { lat ...; lon ...; hae ... } or location(lat, lon, hae)" : "";
-        return name + ": expected " + forms + ", got " + got + hint + elsewhereForm(name, argTypes.length);
-    }
-
-    /** "; move(north, east[, up]) can only be used inside mission { }": the word of a block not open here that takes as many arguments. */
-    private String elsewhereForm(String name, int arguments) {
-        List<WordScope> visible = visibleScopes();
-        for (WordScope s : vocabulary.scopesWith(name)) {
-            WordEntry w = s.words().get(name);
-            if (!visible.contains(s) && w.takes(arguments)) {
-                return "; " + String.join(" or ", w.usages()) + " can only be used " + s.where();
-            }
-        }
-        return "";
-    }
-
     private void chainMistake(Class<?> receiver, String name, List<MetaMethod> named, Class<?>[] argTypes, ASTNode at) {
-        WordScope chain = vocabulary.scopeOf(receiver).orElseThrow();
-        if (!named.isEmpty()) {
-            add(at, wrongArguments(name, receiver, named, argTypes));
-            return;
-        }
-        String expected = String.join(" or ", chain.words().keySet());
-        add(at, "'" + name + "' cannot follow " + String.join(" or ", chain.openers()) + ": expected '" + expected + "'"
-                + (Suggestions.near(name, chain.words().keySet()).isEmpty() ? "" : ", did you mean it?"));
-    }
-
-    /** A name nothing answers: where it belongs if it is a word elsewhere, else what it may have meant. */
-    private String missing(String name) {
-        List<WordScope> visible = visibleScopes();
-        List<WordScope> elsewhere = vocabulary.scopesWith(name).stream().filter(s -> !visible.contains(s)).toList();
-        if (!elsewhere.isEmpty()) {
-            return belongsElsewhere(name, elsewhere.get(0));
-        }
-        WordScope innermost = visible.get(0);
-        String kind = innermost.kind() == WordScope.ScopeKind.BLOCK ? " in " + String.join(" / ",
-                innermost.openers().stream().map(o -> o + " { }").toList()) : "";
-        String near = Suggestions.didYouMean(name, innermost.words().keySet());
-        if (near.isEmpty()) {
-            near = Suggestions.didYouMean(name, visibleNames(visible));
-        }
-        if (near.isEmpty()) {
-            near = elsewhereNear(name, visible);
-        }
-        return "unknown command '" + name + "'" + kind + near;
-    }
-
-    /** "; did you mean 'takeOff'? It can only be used inside mission { }": a word of a block not open here. */
-    private String elsewhereNear(String name, List<WordScope> visible) {
-        for (WordScope s : vocabulary.scopes()) {
-            if (visible.contains(s)) {
-                continue;
-            }
-            List<String> close = Suggestions.near(name, s.words().keySet());
-            if (!close.isEmpty()) {
-                return "; did you mean '" + close.get(0) + "'? It " + belongsElsewhere(close.get(0), s)
-                        .replaceFirst("^'[^']*' (is|can)", "$1");
-            }
-        }
-        return "";
-    }
-
-    private static String belongsElsewhere(String name, WordScope scope) {
-        return switch (scope.kind()) {
-            case UNITS -> "'" + name + "' is a unit: write it after a number, as in 10." + name;
-            case CHAIN -> "'" + name + "' can only follow " + String.join(" or ", scope.openers());
-            default -> "'" + name + "' can only be used " + scope.where();
-        };
-    }
-
-    private String unknownName(String name) {
-        List<WordScope> visible = visibleScopes();
-        for (WordScope s : visible) {
-            if (s.words().containsKey(name)) {
-                return s.kind() == WordScope.ScopeKind.SCRIPT
-                        ? "'" + name + "' is a command, but Groovy read it as a variable here. Expected it with its arguments,"
-                        + " e.g. '" + name + "()', and in parentheses when it is the argument of another command,"
-                        + " e.g. 'execute(during(10) run task)'"
-                        : "'" + name + "' is a command of " + s.where().replaceFirst("^inside ", "") + ", but Groovy read it as a"
-                        + " variable here: write it with its arguments, as in " + String.join(" or ", s.words().get(name).usages())
-                        + (s.words().get(name).takes(0) ? "" : "; a negative value needs parentheses, '" + name + "(-2)' (Groovy reads '"
-                        + name + " -2' as '" + name + " minus 2')");
-            }
-        }
-        List<WordScope> elsewhere = vocabulary.scopesWith(name);
-        if (!elsewhere.isEmpty()) {
-            return belongsElsewhere(name, elsewhere.get(0));
-        }
-        Integer local = assignments.localLines.get(name);
-        String hint = local != null
-                ? ": it is declared with 'def' on line " + local + ", which a method or another script cannot see;"
-                + " assign it without 'def' to make it a script variable"
-                : ". Expected a variable assigned in the script (names are case-sensitive)";
-        Set<String> known = new LinkedHashSet<>(variables);
-        known.addAll(assignments.localLines.keySet());
-        return "unknown name '" + name + "'" + Suggestions.didYouMean(name, known) + hint;
+        add(at, named.isEmpty() ? messages.wrongFollower(vocabulary.scopeOf(receiver).orElseThrow(), name)
+                : messages.wrongArguments(name, receiver, named, argTypes, visibleScopes()));
     }
 
     /** The scopes whose words a name here reaches: the enclosing blocks, innermost first, then the script. */
@@ -383,14 +274,6 @@ final class ScriptWalker extends ClassCodeVisitorSupport {
         }
         scopes.add(vocabulary.script());
         return scopes;
-    }
-
-    private Set<String> visibleNames(List<WordScope> visible) {
-        Set<String> names = new LinkedHashSet<>();
-        visible.forEach(s -> names.addAll(s.words().keySet()));
-        script.getMethods().stream().filter(m -> m.getLineNumber() > 0 && m.getDeclaringClass().equals(script)).forEach(m -> names.add(m.getName()));
-        names.addAll(variables);
-        return names;
     }
 
     private void add(ASTNode at, String message) {
