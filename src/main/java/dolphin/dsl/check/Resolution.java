@@ -33,6 +33,11 @@ record Resolution(Reach reach, MetaMethod method, Class<?> owner, List<MetaMetho
     static final Resolution UNKNOWABLE = new Resolution(Reach.UNKNOWABLE, null, null, List.of());
     static final Resolution MISSING = new Resolution(Reach.MISSING, null, null, List.of());
 
+    /** Whether the call reaches something that takes it: a method or a variable holding a closure. */
+    boolean answers() {
+        return reach == Reach.METHOD || reach == Reach.SCRIPT_METHOD || reach == Reach.VARIABLE;
+    }
+
     static Resolution method(MetaMethod m, Class<?> owner) {
         return new Resolution(Reach.METHOD, m, owner, List.of(m));
     }

@@ -1,7 +1,9 @@
 package dolphin.dsl.check;
 
 import groovy.lang.MetaMethod;
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.Set;
 import org.codehaus.groovy.ast.ClassNode;
 
@@ -23,49 +25,45 @@ final class Resolver {
     }
 
     Resolution call(String name, Class<?>[] arguments, LookupFrame frame) {
-        Resolution wrong = null;
+        // every place the name may be answered, in the order Groovy asks them
+        List<Resolution> places = new ArrayList<>();
         for (LookupFrame f = frame; f != null; f = f.outer()) {
             if (f.unknown()) {
-                return Resolution.UNKNOWABLE;
+                // a block inside it may still answer; beyond it nothing can be known
+                return firstAnswer(places).orElse(Resolution.UNKNOWABLE);
             }
             if (f.block() != null) {
-                List<MetaMethod> named = Candidates.all(f.block(), name);
-                MetaMethod m = Candidates.accepting(named, arguments);
-                if (m != null) {
-                    return Resolution.method(m, f.block());
-                }
-                if (!named.isEmpty() && wrong == null) {
-                    wrong = Resolution.wrong(f.block(), named);
-                }
+                places.add(fit(f.block(), Candidates.all(f.block(), name), arguments));
             }
         }
         if (script.getDeclaredMethods(name).stream().anyMatch(m -> m.getLineNumber() > 0)) {
-            return Resolution.SCRIPT_METHOD;
+            places.add(Resolution.SCRIPT_METHOD);
         }
-        List<MetaMethod> base = Candidates.all(language.scriptClass(), name);
-        MetaMethod m = Candidates.accepting(base, arguments);
-        if (m != null) {
-            return Resolution.method(m, language.scriptClass());
-        }
-        if (!base.isEmpty() && wrong == null) {
-            wrong = Resolution.wrong(language.scriptClass(), base);
-        }
+        places.add(fit(language.scriptClass(), Candidates.all(language.scriptClass(), name), arguments));
         for (Class<?> words : language.wordClasses()) {
-            List<MetaMethod> named = Candidates.words(words, name);
-            m = Candidates.accepting(named, arguments);
-            if (m != null) {
-                return Resolution.method(m, words);
-            }
-            if (!named.isEmpty() && wrong == null) {
-                wrong = Resolution.wrong(words, named);
-            }
+            places.add(fit(words, Candidates.words(words, name), arguments));
         }
         if (variables.contains(name)) {
-            return Resolution.VARIABLE;
+            places.add(Resolution.VARIABLE);
+        }
+        Optional<Resolution> answer = firstAnswer(places);
+        if (answer.isPresent()) {
+            return answer.get();
         }
         if (!language.wordsKnown()) {
             return Resolution.UNKNOWABLE;
         }
-        return wrong != null ? wrong : Resolution.MISSING;
+        return places.stream().filter(r -> r.reach() == Resolution.Reach.WRONG_ARGUMENTS).findFirst()
+                .orElse(Resolution.MISSING);
+    }
+
+    private static Optional<Resolution> firstAnswer(List<Resolution> places) {
+        return places.stream().filter(Resolution::answers).findFirst();
+    }
+
+    /** The owner's methods of the name: the one that takes these arguments, or those that do not, or none. */
+    private static Resolution fit(Class<?> owner, List<MetaMethod> named, Class<?>[] arguments) {
+        MetaMethod m = Candidates.accepting(named, arguments);
+        return m != null ? Resolution.method(m, owner) : named.isEmpty() ? Resolution.MISSING : Resolution.wrong(owner, named);
     }
 }
