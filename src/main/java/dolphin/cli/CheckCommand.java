@@ -1,5 +1,6 @@
 package dolphin.cli;
 
+import dolphin.core.VehiclelessPlatform;
 import dolphin.dsl.Engine;
 import dolphin.dsl.ScriptError;
 import dolphin.platform.MAVLinkLanguage;
@@ -37,7 +38,7 @@ final class CheckCommand implements Callable<Integer> {
     @Override
     public Integer call() throws InterruptedException {
         PrintWriter err = spec.commandLine().getErr();
-        Engine engine = new Engine(new DryRunPlatform());
+        Engine engine = new Engine(new VehiclelessPlatform("dry run"));
         engine.addExtension(new MAVLinkLanguage());
         int code = 0;
         for (Path script : scripts) {

@@ -1,5 +1,6 @@
 package dolphin.cli;
 
+import dolphin.core.VehiclelessPlatform;
 import dolphin.core.ManualClock;
 import dolphin.dsl.Engine;
 import dolphin.dsl.EngineListener;
@@ -41,7 +42,7 @@ record DryRun(ScriptResult result, List<Mission> missions, List<String> messages
     static DryRun of(String source, String file, Duration timeLimit, boolean rehearse) throws InterruptedException {
         Set<Mission> seen = Collections.newSetFromMap(new IdentityHashMap<>());
         List<Mission> missions = Collections.synchronizedList(new ArrayList<>());
-        Engine engine = new Engine(new DryRunPlatform(), ManualClock.autoAdvancing());
+        Engine engine = new Engine(new VehiclelessPlatform("dry run"), ManualClock.autoAdvancing());
         engine.addExtension(new MAVLinkLanguage());
         engine.setRehearsal(rehearse);
         // Nobody answers a dry run: it stops at its first question, as at its first pick.

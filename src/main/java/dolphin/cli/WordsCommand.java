@@ -1,5 +1,6 @@
 package dolphin.cli;
 
+import dolphin.core.VehiclelessPlatform;
 import dolphin.dsl.Engine;
 import dolphin.dsl.vocabulary.Suggestions;
 import dolphin.dsl.vocabulary.Vocabulary;
@@ -45,7 +46,7 @@ final class WordsCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        Engine engine = new Engine(new DryRunPlatform());
+        Engine engine = new Engine(new VehiclelessPlatform("dry run"));
         engine.addExtension(new MAVLinkLanguage());
         Vocabulary vocabulary = engine.vocabulary();
         if (gdsl) {

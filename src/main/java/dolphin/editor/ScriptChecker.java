@@ -1,5 +1,6 @@
 package dolphin.editor;
 
+import dolphin.core.VehiclelessPlatform;
 import dolphin.dsl.Engine;
 import dolphin.dsl.ScriptError;
 import dolphin.platform.MAVLinkLanguage;
@@ -32,7 +33,7 @@ final class ScriptChecker {
 
     /** An engine with the words of the MAVLink platform, as {@code dolphin check} uses. */
     static ScriptChecker withMavlinkWords() {
-        Engine engine = new Engine(new EditorPlatform());
+        Engine engine = new Engine(new VehiclelessPlatform("editor"));
         engine.addExtension(new MAVLinkLanguage());
         return new ScriptChecker(engine);
     }

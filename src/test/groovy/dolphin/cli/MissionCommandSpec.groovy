@@ -1,5 +1,6 @@
 package dolphin.cli
 
+import dolphin.core.VehiclelessPlatform
 import dolphin.core.ManualClock
 import dolphin.dsl.Engine
 import dolphin.platform.MAVLinkLanguage
@@ -41,7 +42,7 @@ class MissionCommandSpec extends Specification {
     /** The missions a script builds, by name, with their items: built here with the engine, independently of the command. */
     static Map<String, List<MissionItem>> built(String path) {
         List<Mission> missions = []
-        Engine engine = new Engine(new DryRunPlatform(), ManualClock.autoAdvancing())
+        Engine engine = new Engine(new VehiclelessPlatform("dry run"), ManualClock.autoAdvancing())
         engine.addExtension(new MAVLinkLanguage())
         engine.addExtension(new MissionRecorder({ Mission m -> missions << m }))
         engine.run(Path.of(path)).await()
