@@ -1,7 +1,6 @@
 package dolphin.dsl.check
 
-import dolphin.core.NodeSet
-import dolphin.core.Platform
+import dolphin.core.VehiclelessPlatform
 import dolphin.docs.DocsExamplesSpec
 import dolphin.dsl.Engine
 import dolphin.dsl.ScriptError
@@ -58,7 +57,7 @@ class MistakeCorpusSpec extends Specification {
     }
 
     @Shared
-    Engine engine = new Engine([getName: { 'none' }, getConnectedNodes: { new NodeSet() }] as Platform)
+    Engine engine = new Engine(new VehiclelessPlatform('none'))
     @Shared
     Vocabulary vocabulary
 

@@ -1,7 +1,6 @@
 package dolphin.dsl.vocabulary
 
-import dolphin.core.NodeSet
-import dolphin.core.Platform
+import dolphin.core.VehiclelessPlatform
 import dolphin.dsl.Engine
 import dolphin.platform.MAVLinkLanguage
 
@@ -12,8 +11,7 @@ final class LanguageWords {
     }
 
     static Vocabulary vocabulary() {
-        Platform noVehicles = [getName: { 'no vehicles' }, getConnectedNodes: { new NodeSet() }] as Platform
-        Engine engine = new Engine(noVehicles)
+        Engine engine = new Engine(new VehiclelessPlatform('no vehicles'))
         engine.addExtension(new MAVLinkLanguage())
         engine.vocabulary()
     }
