@@ -12,7 +12,7 @@ out="$target/generated-sources/mavlink"
 res="$target/generated-resources/META-INF"
 stamp="$out/.stamp"
 want="$(cat "$root/.venv/.requirements.sha256")"
-if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$want" ] && [ -f "$target/generated-resources/dolphin/mavlink/messages.tsv" ]; then
+if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$want" ] && [ -f "$target/generated-resources/dolphin/mavlink/fields.tsv" ]; then
   exit 0
 fi
 rm -rf "$out" && mkdir -p "$out/com/MAVLink" "$res"
@@ -31,12 +31,21 @@ pathlib.Path(sys.argv[2]).write_text(
     "ardupilotmega dialect). They are covered by this notice from pymavlink's COPYING file:\n\n"
     + text[start:end].strip() + "\n")
 PY
-# CRC_EXTRA and payload sizes of every message, for our own frame reader and writer.
+# CRC_EXTRA and payload sizes of every message, for our own frame reader and writer; the fields of
+# every message with their units, for scripts that read telemetry by message and field name.
 mkdir -p "$target/generated-resources/dolphin/mavlink"
 "$py" - > "$target/generated-resources/dolphin/mavlink/messages.tsv" <<'PY'
 from pymavlink.dialects.v20 import ardupilotmega as dialect
 print("# msgid\tname\tcrc_extra\tpayload_length (pymavlink 2.4.50, ardupilotmega)")
 for msgid, cls in sorted(dialect.mavlink_map.items()):
     print(f"{msgid}\t{cls.msgname}\t{cls.crc_extra}\t{cls.unpacker.size}")
+PY
+"$py" - > "$target/generated-resources/dolphin/mavlink/fields.tsv" <<'PY'
+from pymavlink.dialects.v20 import ardupilotmega as dialect
+print("# message\tfield\ttype\tarray_length\tunit (pymavlink 2.4.50, ardupilotmega)")
+for msgid, cls in sorted(dialect.mavlink_map.items()):
+    lengths = dict(zip(cls.ordered_fieldnames, cls.array_lengths))  # array_lengths follow the wire order
+    for name, ftype in zip(cls.fieldnames, cls.fieldtypes):
+        print(f"{cls.msgname}\t{name}\t{ftype}\t{lengths[name]}\t{cls.fieldunits_by_name.get(name, '')}")
 PY
 echo "$want" > "$stamp"

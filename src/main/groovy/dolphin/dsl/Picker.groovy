@@ -27,7 +27,7 @@ class Picker {
     @Word('The vehicles\' Dolphin type: \'UAV\', \'UGV\', \'USV\', \'UUV\'')
     void type(String name) { type = name }
 
-    @Word('The vehicle with this id (its MAVLink system id)')
+    @Word('The vehicle with this id (its MAVLink system id) or the name a fleet file gives it')
     void id(Object systemId) { id = String.valueOf(systemId) }
 
     @Word('Vehicles that carry all these payloads')

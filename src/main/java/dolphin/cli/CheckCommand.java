@@ -4,6 +4,7 @@ import dolphin.core.VehiclelessPlatform;
 import dolphin.dsl.Engine;
 import dolphin.dsl.ScriptError;
 import dolphin.platform.MAVLinkLanguage;
+import dolphin.sensor.FleetFile;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -12,6 +13,7 @@ import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
@@ -35,11 +37,15 @@ final class CheckCommand implements Callable<Integer> {
     @Parameters(arity = "1..*", paramLabel = "SCRIPT", description = "The .dolphin scripts to check.")
     private List<Path> scripts = new ArrayList<>();
 
+    @Option(names = "--fleet", paramLabel = "FILE", converter = Converters.FleetFileConverter.class,
+            description = "A fleet file: the sensors it lists are the names sensor(v, 'NAME') may read (docs/sensors.md).")
+    private FleetFile fleet = FleetFile.NONE;
+
     @Override
     public Integer call() throws InterruptedException {
         PrintWriter err = spec.commandLine().getErr();
         Engine engine = new Engine(new VehiclelessPlatform("dry run"));
-        engine.addExtension(new MAVLinkLanguage());
+        engine.addExtension(new MAVLinkLanguage(fleet));
         int code = 0;
         for (Path script : scripts) {
             String source = Main.readScript("check", script, err);

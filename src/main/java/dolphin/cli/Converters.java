@@ -4,6 +4,7 @@ import dolphin.core.Position;
 import dolphin.mavlink.codec.SigningKey;
 import dolphin.mavlink.link.LinkUrl;
 import dolphin.mission.file.MissionFormat;
+import dolphin.sensor.FleetFile;
 import dolphin.sim.VehicleKind;
 import dolphin.web.WebAddress;
 import java.io.IOException;
@@ -29,6 +30,18 @@ final class Converters {
     }
 
     /** {@code [HOST:]PORT} of the web view. */
+    /** A fleet file (docs/sensors.md, "Fleet files"), read when the option is parsed so its mistakes stop the command at once. */
+    static final class FleetFileConverter implements ITypeConverter<FleetFile> {
+        @Override
+        public FleetFile convert(String value) {
+            try {
+                return FleetFile.read(Path.of(value));
+            } catch (IllegalArgumentException | IOException e) {
+                throw new TypeConversionException(e.getMessage());
+            }
+        }
+    }
+
     static final class Web implements ITypeConverter<WebAddress> {
         @Override
         public WebAddress convert(String value) {

@@ -13,6 +13,8 @@ import dolphin.mavlink.link.LinkUrl;
 import dolphin.mission.flight.MissionExecutorConfig;
 import dolphin.mission.flight.MissionService;
 import dolphin.mission.transfer.MissionTransferConfig;
+import dolphin.sensor.FleetFile;
+import dolphin.sensor.SensorService;
 import dolphin.sim.FaultModel;
 import dolphin.sim.SimFleet;
 import dolphin.sim.VehicleKind;
@@ -103,6 +105,11 @@ final class RunCommand implements Callable<Integer> {
                     + "checks passing) before it fails quoting the vehicle's PreArm text (default: ${DEFAULT-VALUE}).")
     private long readyTimeoutSeconds;
 
+    @Option(names = "--fleet", paramLabel = "FILE", converter = Converters.FleetFileConverter.class,
+            description = "A fleet file: by system id, the vehicles' names, Dolphin types, payloads and sensors, for vehicles "
+                    + "that do not announce them (docs/sensors.md).")
+    private FleetFile fleetFile = FleetFile.NONE;
+
     @Option(names = "--web", paramLabel = "[HOST:]PORT", converter = Converters.Web.class,
             description = "Serve a live view of the run (map, task trees, event log) at http://HOST:PORT/; HOST defaults "
                     + "to 127.0.0.1 (loopback only); another address needs the token printed at start. Port 0 takes a free port.")
@@ -142,6 +149,7 @@ final class RunCommand implements Callable<Integer> {
         MissionService missions = MissionService.of(comms);
         missions.setTransferConfig(transfers);
         missions.setExecutorConfig(executor);
+        SensorService.of(comms).useFleet(fleetFile);
         Forwarder forwarder = new Forwarder(comms, forwards);
         try {
             comms.start();

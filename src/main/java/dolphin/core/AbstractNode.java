@@ -1,17 +1,20 @@
 package dolphin.core;
 
-/** Base class for platform nodes: identity, payload, connection timeout and battery. */
+/**
+ * Base class for platform nodes: identity, payload, connection timeout and battery. The payload is an
+ * immutable value replaced whole when a node announces a component, so readers never see half of it.
+ */
 public abstract class AbstractNode implements Node {
 
     private final String id;
     private final String type;
-    private final Payload payload;
+    private final java.util.concurrent.atomic.AtomicReference<Payload> payload;
     private volatile double connectionTimeout = DEFAULT_CONNECTION_TIMEOUT;
 
     protected AbstractNode(String id, String type, Payload payload) {
         this.id = id;
         this.type = type;
-        this.payload = payload;
+        this.payload = new java.util.concurrent.atomic.AtomicReference<>(payload);
     }
 
     @Override
@@ -26,7 +29,12 @@ public abstract class AbstractNode implements Node {
 
     @Override
     public Payload getPayload() {
-        return payload;
+        return payload.get();
+    }
+
+    /** Adds a component the node turned out to carry (announced by it, or written in a fleet file). */
+    public void addPayload(Payload.Component component) {
+        payload.updateAndGet(p -> p.with(component));
     }
 
     @Override

@@ -10,6 +10,11 @@ public interface Node {
     /** Unique among the platform's nodes; for MAVLink the decimal system id. */
     String getId();
 
+    /** A name the user gave the node (a fleet file's), else its id; {@code pick { id 'scout' }} matches either. */
+    default String getName() {
+        return getId();
+    }
+
     /** "UAV", "UGV", "USV", "UUV", ... */
     String getType();
 

@@ -12,7 +12,7 @@ public record NodeFilter(String id, String type, List<String> payload, Area area
     }
 
     public boolean matchedBy(Node n) {
-        return (id == null || id.equals(n.getId()))
+        return (id == null || id.equals(n.getId()) || id.equals(n.getName()))
                 && (type == null || type.equals(n.getType()))
                 && (payload.isEmpty() || n.getPayload().compatibleWith(payload))
                 && (area == null || area.contains(n.getPosition()));

@@ -3,7 +3,10 @@ package dolphin.core;
 import java.util.List;
 import java.util.Map;
 
-/** The components a node carries (sensors, actuators); compared by name. */
+/**
+ * The components a node carries (cameras, sensors, actuators); compared by name, ignoring case, so
+ * {@code payload 'camera'} finds a component announced as "Camera".
+ */
 public record Payload(List<Component> components) {
 
     public static final Payload NONE = new Payload(List.of());
@@ -28,6 +31,33 @@ public record Payload(List<Component> components) {
 
     /** True when every required component name is present. */
     public boolean compatibleWith(List<String> required) {
-        return required.stream().allMatch(r -> components.stream().anyMatch(c -> c.name().equals(r)));
+        return required.stream().allMatch(this::has);
+    }
+
+    public boolean has(String name) {
+        return components.stream().anyMatch(c -> c.name().equalsIgnoreCase(name));
+    }
+
+    /**
+     * This payload with the component: added when its name is new, or replacing a component of that
+     * name that had fewer details (a camera first known by its heartbeat, then by its CAMERA_INFORMATION).
+     */
+    public Payload with(Component component) {
+        java.util.ArrayList<Component> list = new java.util.ArrayList<>(components);
+        for (int i = 0; i < list.size(); i++) {
+            if (list.get(i).name().equalsIgnoreCase(component.name())) {
+                if (list.get(i).parameters().size() >= component.parameters().size()) {
+                    return this;
+                }
+                list.set(i, component);
+                return new Payload(list);
+            }
+        }
+        list.add(component);
+        return new Payload(list);
+    }
+
+    public List<String> names() {
+        return components.stream().map(Component::name).toList();
     }
 }

@@ -60,6 +60,14 @@ public final class MAVLinkCommunications implements AutoCloseable {
         void frame(boolean incoming, Link link, Frame frame);
     }
 
+    /**
+     * Sees every decoded message from every component of a discovered vehicle (its autopilot, a
+     * camera, a companion computer), on the communications thread: how sensors and payloads are read.
+     */
+    public interface ComponentListener {
+        void message(MAVLinkNode node, int component, MAVLinkMessage message);
+    }
+
     private final MAVLinkConfig config;
     private final Clock clock;
     private final List<Link> links = new ArrayList<>();
@@ -75,6 +83,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
     private final CommandSender commands;
     private final TelemetryRequests telemetry;
     private final List<FrameObserver> observers = new CopyOnWriteArrayList<>();
+    private final List<ComponentListener> componentListeners = new CopyOnWriteArrayList<>();
     private final AtomicLong framesIn = new AtomicLong();
     private final AtomicLong framesOut = new AtomicLong();
     private final AtomicLong filtered = new AtomicLong();
@@ -190,6 +199,10 @@ public final class MAVLinkCommunications implements AutoCloseable {
 
     public void addObserver(FrameObserver observer) {
         observers.add(observer);
+    }
+
+    public void addComponentListener(ComponentListener listener) {
+        componentListeners.add(listener);
     }
 
     /** Sends a message to a vehicle, from any thread. */
@@ -348,12 +361,27 @@ public final class MAVLinkCommunications implements AutoCloseable {
         if (node == null && message instanceof msg_heartbeat hb) {
             node = discover(link, peer, frame, hb);
         }
-        if (node == null || frame.compid() != node.getAutopilotCompid()) {
+        if (node == null) {
+            return;
+        }
+        tellComponentListeners(node, frame.compid(), message);
+        if (frame.compid() != node.getAutopilotCompid()) {
             return;
         }
         node.heardAt(peer);
         telemetry.seen(node, frame.msgid(), clock.nanoTime());
         handler.dispatch(node, message);
+    }
+
+    private void tellComponentListeners(MAVLinkNode node, int component, MAVLinkMessage message) {
+        for (ComponentListener l : componentListeners) {
+            try {
+                l.message(node, component, message);
+            } catch (RuntimeException e) {
+                LOG.warn("reading {} from component {} of vehicle {} failed", MessageTable.get().name(message.msgid), component,
+                        node.getId(), e);
+            }
+        }
     }
 
     private MAVLinkNode discover(Link link, SocketAddress peer, Frame frame, msg_heartbeat hb) {

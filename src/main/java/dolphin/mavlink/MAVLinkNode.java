@@ -32,6 +32,9 @@ public final class MAVLinkNode extends AbstractNode {
     private final Clock clock;
     private final AtomicReference<VehicleState> state;
     private volatile SocketAddress address;
+    /** What a fleet file says of the vehicle, when it says it (docs/sensors.md, "Fleet files"). */
+    private volatile String name;
+    private volatile String declaredType;
     /** The connection state the communications thread last reported; only it reads and writes this. */
     boolean wasConnected = true;
 
@@ -71,6 +74,30 @@ public final class MAVLinkNode extends AbstractNode {
 
     void heardAt(SocketAddress from) {
         address = from;
+    }
+
+    /** The fleet file's name for the vehicle, else its id. */
+    @Override
+    public String getName() {
+        String n = name;
+        return n == null ? getId() : n;
+    }
+
+    /** The fleet file's Dolphin type for the vehicle, else the one its heartbeat's MAV_TYPE gives. */
+    @Override
+    public String getType() {
+        String t = declaredType;
+        return t == null ? super.getType() : t;
+    }
+
+    /** What a fleet file says of the vehicle: its name and Dolphin type, each null to keep what it is. */
+    public void declare(String fleetName, String fleetType) {
+        if (fleetName != null) {
+            name = fleetName;
+        }
+        if (fleetType != null) {
+            declaredType = fleetType;
+        }
     }
 
     public VehicleFamily getFamily() {

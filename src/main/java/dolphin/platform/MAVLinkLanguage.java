@@ -27,6 +27,12 @@ import java.util.Map;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
+import java.util.function.Consumer;
+import java.util.function.Supplier;
+import dolphin.sensor.DeclaredSensors;
+import dolphin.sensor.FleetFile;
+import dolphin.sensor.Sensor;
+import dolphin.sensor.SensorService;
 import org.codehaus.groovy.control.customizers.ImportCustomizer;
 
 /**
@@ -39,10 +45,31 @@ import org.codehaus.groovy.control.customizers.ImportCustomizer;
  */
 public final class MAVLinkLanguage implements DslExtension {
 
+    private final Consumer<Sensor> install;
+    private final Supplier<DeclaredSensors> declaredSensors;
+
+    /** The language without vehicles and without a fleet file: for checking and dry runs. */
+    public MAVLinkLanguage() {
+        this(FleetFile.NONE);
+    }
+
+    /** The language without vehicles, checking sensor names against a fleet file ({@code dolphin check --fleet}). */
+    public MAVLinkLanguage(FleetFile fleet) {
+        DeclaredSensors declared = DeclaredSensors.of(fleet);
+        this.install = sensor -> { };
+        this.declaredSensors = () -> declared;
+    }
+
+    /** The language on vehicles: sensors a script adds are read by the communications' sensor layer. */
+    MAVLinkLanguage(SensorService sensors) {
+        this.install = sensors::add;
+        this.declaredSensors = sensors::declared;
+    }
+
     @Override
     public void addImports(ImportCustomizer imports) {
         imports.addStarImports("com.MAVLink.minimal", "com.MAVLink.standard", "com.MAVLink.common",
-                "com.MAVLink.ardupilotmega", "com.MAVLink.enums", "com.MAVLink.Messages");
+                "com.MAVLink.ardupilotmega", "com.MAVLink.enums", "com.MAVLink.Messages", "dolphin.sensor");
         // named by string: MissionDsl is a Groovy class, compiled after the Java sources
         imports.addStaticStars("dolphin.mission.dsl.MissionDsl");
     }
@@ -50,16 +77,20 @@ public final class MAVLinkLanguage implements DslExtension {
     @Override
     public List<Class<?>> wordClasses() {
         try {
-            return List.of(Words.class, PositionWords.class, Class.forName("dolphin.mission.dsl.MissionDsl"));
+            return List.of(Words.class, SensorWords.class, PositionWords.class, Class.forName("dolphin.mission.dsl.MissionDsl"));
         } catch (ClassNotFoundException e) {
             throw new IllegalStateException(e);
         }
     }
 
-    /** A mission file that {@code missionFromFile 'path'} names must exist (relative to the current directory). */
+    /**
+     * A mission file that {@code missionFromFile 'path'} names must exist (relative to the current
+     * directory); sensor names and telemetry fields must be possible ({@link SensorCallCheck}, made anew
+     * for each check, as it remembers the script's {@code declareSensors}).
+     */
     @Override
     public List<CallCheck> callChecks() {
-        return List.of((word, constants) -> {
+        return List.of(new SensorCallCheck(declaredSensors.get()), (word, constants) -> {
             if (!"missionFromFile".equals(word) || constants.isEmpty()
                     || !(constants.get(constants.size() - 1) instanceof String path) || Files.exists(Path.of(path))) {
                 return null;
@@ -70,7 +101,7 @@ public final class MAVLinkLanguage implements DslExtension {
 
     @Override
     public List<Object> words(ScriptContext context) {
-        return List.of(new Words(context), new PositionWords());
+        return List.of(new Words(context), new SensorWords(context, install, declaredSensors), new PositionWords());
     }
 
     /** The platform's DSL words. */
@@ -180,19 +211,7 @@ public final class MAVLinkLanguage implements DslExtension {
         }
 
         private MAVLinkNode single(String word, Object vehicle) {
-            context.needsVehicle(word, vehicle);
-            Object v = vehicle;
-            if (v instanceof NodeSet set) {
-                java.util.Iterator<Node> it = set.iterator();
-                v = it.hasNext() ? it.next() : null;
-                if (v == null || it.hasNext()) {
-                    throw new DslException(word + ": expected one vehicle, got " + set);
-                }
-            }
-            if (!(v instanceof MAVLinkNode node)) {
-                throw new DslException(word + ": " + v + " is not a MAVLink vehicle");
-            }
-            return node;
+            return OneVehicle.of(context, word, vehicle);
         }
     }
 }

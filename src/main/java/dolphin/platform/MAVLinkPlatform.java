@@ -7,6 +7,7 @@ import dolphin.core.Platform;
 import dolphin.dsl.DslExtension;
 import dolphin.dsl.ScriptContext;
 import dolphin.dsl.check.CallCheck;
+import dolphin.sensor.SensorService;
 import java.util.List;
 import org.codehaus.groovy.control.customizers.ImportCustomizer;
 
@@ -14,10 +15,12 @@ import org.codehaus.groovy.control.customizers.ImportCustomizer;
 public final class MAVLinkPlatform implements Platform, DslExtension {
 
     private final MAVLinkCommunications comms;
-    private final MAVLinkLanguage language = new MAVLinkLanguage();
+    private final MAVLinkLanguage language;
 
+    /** Attaches the sensor layer at once, so readings and payloads are known before a script asks. */
     public MAVLinkPlatform(MAVLinkCommunications comms) {
         this.comms = comms;
+        this.language = new MAVLinkLanguage(SensorService.of(comms));
     }
 
     public MAVLinkCommunications communications() {

@@ -30,6 +30,7 @@ class ArchitectureTest {
     private static final String TRANSFER = "mission transfer";
     private static final String FLIGHT = "mission flight";
     private static final String LANGUAGE = "mission language";
+    private static final String SENSORS = "sensors and payloads";
     private static final String PLATFORM = "MAVLink platform";
     private static final String SIMULATOR = "simulator";
     private static final String WEB = "web view";
@@ -46,6 +47,7 @@ class ArchitectureTest {
             .layer(TRANSFER).definedBy("dolphin.mission.transfer..")
             .layer(FLIGHT).definedBy("dolphin.mission.flight..")
             .layer(LANGUAGE).definedBy("dolphin.mission.dsl..")
+            .layer(SENSORS).definedBy("dolphin.sensor..")
             .layer(PLATFORM).definedBy("dolphin.platform..")
             .layer(SIMULATOR).definedBy("dolphin.sim..")
             .layer(WEB).definedBy("dolphin.web..")
@@ -59,11 +61,12 @@ class ArchitectureTest {
             .whereLayer(TRANSFER).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL)
             .whereLayer(FLIGHT).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, TRANSFER)
             .whereLayer(LANGUAGE).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT)
-            .whereLayer(PLATFORM).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE)
-            .whereLayer(SIMULATOR).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, PLATFORM)
-            .whereLayer(WEB).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, PLATFORM)
-            .whereLayer(EDITOR).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, PLATFORM)
-            .whereLayer(CLI).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, PLATFORM,
+            .whereLayer(SENSORS).mayOnlyAccessLayers(CORE, DSL, LINK)
+            .whereLayer(PLATFORM).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, SENSORS)
+            .whereLayer(SIMULATOR).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, SENSORS, PLATFORM)
+            .whereLayer(WEB).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, SENSORS, PLATFORM)
+            .whereLayer(EDITOR).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, SENSORS, PLATFORM)
+            .whereLayer(CLI).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, SENSORS, PLATFORM,
                     SIMULATOR, WEB, EDITOR);
 
     @ArchTest

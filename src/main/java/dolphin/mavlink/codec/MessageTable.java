@@ -18,6 +18,7 @@ public final class MessageTable {
 
     private final short[] crcExtra;
     private final String[] names;
+    private final java.util.Map<String, Integer> ids = new java.util.HashMap<>();
 
     private MessageTable(int maxId) {
         crcExtra = new short[maxId + 1];
@@ -43,6 +44,16 @@ public final class MessageTable {
         return known(msgid) ? names[msgid] : "#" + msgid;
     }
 
+    /** The id of a message name ("VFR_HUD"), or -1 for a name the dialect does not define. */
+    public int id(String name) {
+        return ids.getOrDefault(name, -1);
+    }
+
+    /** Every message name of the dialect. */
+    public java.util.Set<String> messageNames() {
+        return java.util.Collections.unmodifiableSet(ids.keySet());
+    }
+
     private static MessageTable load() {
         String resource = "/dolphin/mavlink/messages.tsv";
         try (InputStream in = MessageTable.class.getResourceAsStream(resource)) {
@@ -59,6 +70,7 @@ public final class MessageTable {
             for (String[] f : lines) {
                 int id = Integer.parseInt(f[0]);
                 t.names[id] = f[1];
+                t.ids.put(f[1], id);
                 t.crcExtra[id] = Short.parseShort(f[2]);
             }
             return t;
