@@ -39,12 +39,12 @@ public final class SensorWords {
         this.declaredAhead = declaredAhead;
     }
 
-    @Word("The vehicle's latest value under this name (waits for the first): waitFor { sensor(v, 'SMOKE') > 20 }")
+    @Word("The vehicle's latest value under this name (waits for the first); options maxAge (seconds), component: sensor(v, 'SMOKE') > 20")
     public double sensor(Object vehicle, String name) {
         return sensor(Map.of(), vehicle, name);
     }
 
-    @Word("The vehicle's latest value under this name; options maxAge (seconds), component")
+    @Word("The vehicle's latest value under this name (waits for the first); options maxAge (seconds), component: sensor(v, 'SMOKE') > 20")
     public double sensor(Map<String, Object> options, Object vehicle, String name) {
         MAVLinkNode node = OneVehicle.of(context, "sensor", vehicle);
         ReadingOptions o = ReadingOptions.of("sensor", options);
@@ -73,12 +73,12 @@ public final class SensorWords {
         return r.value();
     }
 
-    @Word("Whether the vehicle has a current, finite value under this name, without waiting: sensorKnown(v, 'SMOKE')")
+    @Word("Whether the vehicle has a current, finite value under this name, without waiting; options maxAge, component")
     public boolean sensorKnown(Object vehicle, String name) {
         return sensorKnown(Map.of(), vehicle, name);
     }
 
-    @Word("Whether the vehicle has a current, finite value under this name; options maxAge (seconds), component")
+    @Word("Whether the vehicle has a current, finite value under this name, without waiting; options maxAge, component")
     public boolean sensorKnown(Map<String, Object> options, Object vehicle, String name) {
         MAVLinkNode node = OneVehicle.of(context, "sensorKnown", vehicle);
         ReadingOptions o = ReadingOptions.of("sensorKnown", options);
@@ -92,12 +92,12 @@ public final class SensorWords {
         return now - r.nanos() <= o.maxAgeNanos(r.freshNanos()) && r.finite();
     }
 
-    @Word("A field of the vehicle's latest message of that kind, in Dolphin's units: telemetry(v, 'VFR_HUD', 'groundspeed')")
+    @Word("A field of the vehicle's latest message, in Dolphin's units: telemetry(v, 'VFR_HUD', 'groundspeed'); options maxAge, component")
     public Object telemetry(Object vehicle, String message, String field) {
         return telemetry(Map.of(), vehicle, message, field);
     }
 
-    @Word("A field of the vehicle's latest message of that kind; options maxAge (seconds), component")
+    @Word("A field of the vehicle's latest message, in Dolphin's units: telemetry(v, 'VFR_HUD', 'groundspeed'); options maxAge, component")
     public Object telemetry(Map<String, Object> options, Object vehicle, String message, String field) {
         TelemetryField f;
         try {

@@ -2,6 +2,7 @@ package dolphin.web;
 
 import dolphin.core.Node;
 import dolphin.mavlink.MAVLinkNode;
+import dolphin.sensor.SensorService;
 import dolphin.mission.file.GeoJsonFile;
 import dolphin.mission.model.Mission;
 import dolphin.mission.flight.MissionExecutor;
@@ -39,11 +40,17 @@ final class MavlinkFleet implements Supplier<List<VehicleSample>> {
         List<VehicleSample> samples = new ArrayList<>();
         for (MAVLinkNode n : nodes.get()) {
             VehicleView view = VehicleView.of(n.getId(), n.getType(), n.isConnected(), bound.contains(n.getId()), n.state(),
-                    tasks.getOrDefault(n.getId(), ""));
+                    tasks.getOrDefault(n.getId(), ""), n.getPayload().names(), readings(n));
             MissionExecutor executor = MissionService.of(n.communications()).executorOn(n);
             samples.add(new VehicleSample(view, executor, () -> draw(executor.mission(), n)));
         }
         return samples;
+    }
+
+    private static List<VehicleView.Shown> readings(MAVLinkNode n) {
+        long now = n.communications().clock().nanoTime();
+        return SensorService.of(n.communications()).readings(n).all().stream()
+                .map(r -> new VehicleView.Shown(r.name(), r.value(), r.unit(), r.component(), r.fresh(now))).toList();
     }
 
     /** The mission, its fence and rally points as GeoJSON (docs/embedding.md); null if it cannot be drawn. */

@@ -1,5 +1,7 @@
 package dolphin.web;
 
+import java.util.List;
+
 import dolphin.core.Position;
 import dolphin.mavlink.VehicleState;
 import groovy.json.JsonOutput;
@@ -7,16 +9,30 @@ import groovy.json.JsonOutput;
 /**
  * What the page shows of one vehicle at one sample: where it is (null before its first position),
  * where it points, its Dolphin type, mode, arming, battery, home, the mission item it flies, whether
- * the script picked it, and the last platform task on it.
+ * the script picked it, the last platform task on it, its payloads and its latest sensor readings.
  */
 record VehicleView(String id, String type, String family, boolean connected, boolean picked, Position position,
                    double relativeAlt, double heading, String mode, boolean armed, int battery, Position home,
-                   int item, int total, boolean fenceBreached, String task) {
+                   int item, int total, boolean fenceBreached, String task, List<String> payloads, List<Shown> readings) {
+
+    /** A sensor reading as shown: stale ones are greyed out, not hidden, so a silent sensor is seen. */
+    record Shown(String name, double value, String unit, int component, boolean fresh) {
+    }
+
+    VehicleView {
+        payloads = List.copyOf(payloads);
+        readings = List.copyOf(readings);
+    }
 
     static VehicleView of(String id, String type, boolean connected, boolean picked, VehicleState s, String task) {
+        return of(id, type, connected, picked, s, task, List.of(), List.of());
+    }
+
+    static VehicleView of(String id, String type, boolean connected, boolean picked, VehicleState s, String task,
+                          List<String> payloads, List<Shown> readings) {
         return new VehicleView(id, type, s.family().label(), connected, picked, s.position(), s.relativeAlt(), s.heading(),
                 s.modeName(), s.armed(), s.batteryPercent(), s.home(), s.flyingMission() ? s.missionSeq() : -1, s.missionTotal(),
-                s.fenceBreached(), task);
+                s.fenceBreached(), task, payloads, readings);
     }
 
     /**
@@ -43,7 +59,24 @@ record VehicleView(String id, String type, String family, boolean connected, boo
                 .append(",\"total\":").append(total < 0 ? "null" : String.valueOf(total))
                 .append(",\"fenceBreached\":").append(fenceBreached)
                 .append(",\"task\":").append(JsonOutput.toJson(task))
+                .append(",\"payloads\":").append(JsonOutput.toJson(payloads))
+                .append(",\"readings\":").append(readingsJson())
                 .append('}').toString();
+    }
+
+    private String readingsJson() {
+        if (readings.isEmpty()) {
+            return "[]";
+        }
+        StringBuilder b = new StringBuilder("[");
+        for (Shown r : readings) {
+            b.append(b.length() > 1 ? "," : "").append("{\"name\":").append(JsonOutput.toJson(r.name()))
+                    .append(",\"value\":").append(Double.isFinite(r.value()) ? String.valueOf(r.value()) : JsonOutput.toJson(String.valueOf(r.value())))
+                    .append(",\"unit\":").append(JsonOutput.toJson(r.unit()))
+                    .append(",\"component\":").append(r.component())
+                    .append(",\"fresh\":").append(r.fresh()).append('}');
+        }
+        return b.append(']').toString();
     }
 
     /** [latitude, longitude, metres AMSL], or null: 1e-7 degrees (a centimetre) is what MAVLink carries. */

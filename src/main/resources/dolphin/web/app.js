@@ -132,7 +132,18 @@ function popupText(d) {
     + `${d.armed ? 'armed' : 'disarmed'}, battery ${d.battery == null ? '?' : d.battery + ' %'}<br>`
     + `${d.relativeAlt} m above home${d.item != null ? ', item ' + d.item + ' of ' + d.total : ''}<br>`
     + `${d.picked ? 'picked by the script' : 'free'}${d.task ? '<br>task ' + escapeHtml(d.task) : ''}`
-    + `${d.fenceBreached ? '<br><b>outside its fence</b>' : ''}`;
+    + `${d.fenceBreached ? '<br><b>outside its fence</b>' : ''}`
+    + `${d.payloads && d.payloads.length ? '<br>carries ' + d.payloads.map(escapeHtml).join(', ') : ''}`
+    + `${d.readings && d.readings.length ? '<br>' + readingsText(d.readings) : ''}`;
+}
+
+/** Readings as "SMOKE 12.5, TEMP 21 degC"; a stale one is greyed, as its sensor has stopped sending. */
+function readingsText(readings) {
+  return readings.map(r => {
+    const value = typeof r.value === 'number' ? Number(r.value.toPrecision(4)) : r.value;
+    const text = `${escapeHtml(r.name)} ${value}${r.unit ? ' ' + escapeHtml(r.unit) : ''}`;
+    return `<span class="reading" data-reading="${escapeHtml(r.name)}" data-fresh="${r.fresh}"${r.fresh ? '' : ' style="color:#999"'}>${text}</span>`;
+  }).join(', ');
 }
 
 const FENCE_STYLE = { inclusion: { color: '#2a9d8f', weight: 2, fillOpacity: 0.05 },
@@ -222,7 +233,8 @@ function renderTable() {
       + `data-lat="${pos[0]}" data-lon="${pos[1]}" data-mode="${escapeHtml(d.mode)}">`
       + `<td>${escapeHtml(d.id)}</td><td>${escapeHtml(d.type)}</td><td>${d.connected ? escapeHtml(d.mode) : 'LOST'}${d.armed ? ' armed' : ''}</td>`
       + `<td>${d.battery == null ? '?' : d.battery + ' %'}</td><td>${d.relativeAlt.toFixed(1)} m</td>`
-      + `<td>${d.item != null ? d.item + '/' + d.total : '-'}</td><td>${escapeHtml(d.task)}</td></tr>`;
+      + `<td>${d.item != null ? d.item + '/' + d.total : '-'}</td><td>${escapeHtml(d.task)}</td>`
+      + `<td>${d.readings && d.readings.length ? readingsText(d.readings) : ''}</td></tr>`;
   });
   document.querySelector('#vehicles tbody').innerHTML = rows.join('');
   document.getElementById('vehicle-count').textContent = `(${all.length})`;

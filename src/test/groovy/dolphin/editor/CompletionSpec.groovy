@@ -80,8 +80,8 @@ surveyNorth = mission {
 }
 ''')
 
-        then: 'the clauses that begin with t, then the script word that does'
-        items*.label == ['timeout', 'type', 'task']
+        then: 'the clauses that begin with t, then the script words that do'
+        items*.label == ['timeout', 'type', 'task', 'telemetry']
     }
 
     def "inside pick { } with nothing typed: the six clauses, then the script's words"() {

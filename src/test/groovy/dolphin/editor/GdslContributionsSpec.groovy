@@ -54,7 +54,8 @@ class GdslContributionsSpec extends Specification {
         contributed.properties == []
         inherited*.name().containsAll(['pick', 'execute', 'waitFor', 'release'])
         added*.name().toSet() == ['mission', 'pos', 'moveDistance', 'move', 'sendMessage', 'downloadMission', 'fenceBreached',
-                                  'missionFromFile'] as Set
+                                  'missionFromFile', 'sensor', 'sensorKnown', 'telemetry', 'payloads', 'useSensor',
+                                  'declareSensors'] as Set
     }
 
     def "inside a block opened by #opener: the block's words, with their parameters, and the top-level ones"() {
