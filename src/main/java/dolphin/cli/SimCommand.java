@@ -5,6 +5,7 @@ import dolphin.core.SystemClock;
 import dolphin.mavlink.codec.SigningKey;
 import dolphin.mavlink.link.LinkUrl;
 import dolphin.sim.FaultModel;
+import dolphin.sim.SimEquipment;
 import dolphin.sim.SimFleet;
 import dolphin.sim.SimOptions;
 import dolphin.sim.VehicleKind;
@@ -109,7 +110,7 @@ final class SimCommand implements Callable<Integer> {
         }
         try {
             return new SimFleet.Config(count, type, home != null ? home : SimFleet.Config.DEFAULT_HOME, SimFleet.Config.DEFAULT_SPACING,
-                    firstSysid, gcs, SimOptions.DEFAULT.withWarmup(warmup).withDrain(drain), key, faultModel);
+                    firstSysid, gcs, SimOptions.DEFAULT.withWarmup(warmup).withDrain(drain), key, faultModel, SimEquipment.NONE);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
