@@ -69,6 +69,15 @@ final class RunCommand implements Callable<Integer> {
     @Mixin
     LinkFaultOptions faults;
 
+    @Option(names = "--sim-sensor", paramLabel = "SPEC", description = "With --sim: " + EquipmentOptions.SENSOR_HELP)
+    private List<String> simSensors = new ArrayList<>();
+
+    @Option(names = "--sim-camera", paramLabel = "SYSIDS", description = "With --sim: " + EquipmentOptions.CAMERA_HELP)
+    private String simCameras;
+
+    @Option(names = "--sim-config", paramLabel = "FILE", description = "With --sim: " + EquipmentOptions.CONFIG_HELP)
+    private Path simConfig;
+
     @Option(names = "--tlog", paramLabel = "FILE", description = "Write every MAVLink frame in and out to a .tlog file.")
     private Path tlog;
 
@@ -227,6 +236,11 @@ final class RunCommand implements Callable<Integer> {
         if (speedup != 1 && sim == 0) {
             throw new ParameterException(spec.commandLine(), "--speedup needs --sim: real vehicles run in real time");
         }
+        for (String option : EquipmentOptions.Names.RUN.all()) {
+            if (sim == 0 && spec.commandLine().getParseResult().hasMatchedOption(option)) {
+                throw new ParameterException(spec.commandLine(), option + " needs --sim: only simulated vehicles carry simulated sensors and cameras");
+            }
+        }
         if (webTiles != null && web == null) {
             throw new ParameterException(spec.commandLine(), "--web-tiles needs --web");
         }
@@ -293,10 +307,13 @@ final class RunCommand implements Callable<Integer> {
 
     /** The in-process fleet the options describe, sending to these ground station ports. */
     SimFleet.Config fleetConfig(List<InetSocketAddress> ports, FaultModel faultModel) {
+        SimFleet.Config config;
         try {
-            return SimFleet.Config.of(sim, simType, ports).withSigningKey(key).withFaults(faultModel);
+            config = SimFleet.Config.of(sim, simType, ports).withSigningKey(key).withFaults(faultModel);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), "--sim " + sim + ": " + e.getMessage());
         }
+        return config.withEquipment(new EquipmentOptions(EquipmentOptions.Names.RUN, simSensors, simCameras, simConfig)
+                .equipment(spec.commandLine(), config.firstSysid(), config.highestSysid()));
     }
 }

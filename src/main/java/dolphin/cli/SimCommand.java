@@ -5,11 +5,13 @@ import dolphin.core.SystemClock;
 import dolphin.mavlink.codec.SigningKey;
 import dolphin.mavlink.link.LinkUrl;
 import dolphin.sim.FaultModel;
+import dolphin.sim.SimEquipment;
 import dolphin.sim.SimFleet;
 import dolphin.sim.SimOptions;
 import dolphin.sim.VehicleKind;
 import java.io.PrintWriter;
 import java.net.InetSocketAddress;
+import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
@@ -71,6 +73,15 @@ final class SimCommand implements Callable<Integer> {
     @Mixin
     LinkFaultOptions faults;
 
+    @Option(names = "--sensor", paramLabel = "SPEC", description = EquipmentOptions.SENSOR_HELP)
+    private List<String> sensors = new ArrayList<>();
+
+    @Option(names = "--camera", paramLabel = "SYSIDS", description = EquipmentOptions.CAMERA_HELP)
+    private String cameras;
+
+    @Option(names = "--config", paramLabel = "FILE", description = EquipmentOptions.CONFIG_HELP)
+    private Path equipmentFile;
+
     @Override
     public Integer call() throws Exception {
         Main.checkSpeedup(spec, speedup);
@@ -107,11 +118,14 @@ final class SimCommand implements Callable<Integer> {
             }
             gcs.add(url.address());
         }
+        SimFleet.Config config;
         try {
-            return new SimFleet.Config(count, type, home != null ? home : SimFleet.Config.DEFAULT_HOME, SimFleet.Config.DEFAULT_SPACING,
-                    firstSysid, gcs, SimOptions.DEFAULT.withWarmup(warmup).withDrain(drain), key, faultModel);
+            config = new SimFleet.Config(count, type, home != null ? home : SimFleet.Config.DEFAULT_HOME, SimFleet.Config.DEFAULT_SPACING,
+                    firstSysid, gcs, SimOptions.DEFAULT.withWarmup(warmup).withDrain(drain), key, faultModel, SimEquipment.NONE);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
+        return config.withEquipment(new EquipmentOptions(EquipmentOptions.Names.SIM, sensors, cameras, equipmentFile)
+                .equipment(spec.commandLine(), firstSysid, config.highestSysid()));
     }
 }

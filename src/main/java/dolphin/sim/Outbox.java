@@ -9,7 +9,8 @@ import java.util.function.Consumer;
 
 /**
  * The order in which a simulated vehicle's link sends what one step of the vehicle (a tick, or the
- * handling of a message) had to say: MISSION_ITEM_REACHED first, one message with the last index
+ * handling of a message) had to say: messages asked for with MAV_CMD_REQUEST_MESSAGE first (after
+ * the command's COMMAND_ACK, which goes out at once), then MISSION_ITEM_REACHED, one message with the last index
  * set (ArduPilot keeps one index and sends it deferred, so completions in one loop coalesce), then
  * the STATUSTEXTs in order, as ArduPilot's link sends its deferred messages before its text queue.
  * Other frames go out at once. Where ArduPilot spreads a step over two loops, the step flushes
@@ -18,6 +19,7 @@ import java.util.function.Consumer;
 final class Outbox {
 
     private final Consumer<MAVLinkMessage> link;
+    private final List<MAVLinkMessage> requested = new ArrayList<>();
     private final List<MAVLinkMessage> texts = new ArrayList<>();
     private int reached = -1;
 
@@ -28,6 +30,11 @@ final class Outbox {
     /** At once. */
     void send(MAVLinkMessage m) {
         link.accept(m);
+    }
+
+    /** With the next flush, as ArduPilot queues a requested message for its link's next send. */
+    void requested(MAVLinkMessage m) {
+        requested.add(m);
     }
 
     void text(int severity, String text) {
@@ -41,8 +48,12 @@ final class Outbox {
         reached = seq;
     }
 
-    /** Sends what waits: the MISSION_ITEM_REACHED, then the texts. */
+    /** Sends what waits: the requested messages, the MISSION_ITEM_REACHED, then the texts. */
     void flush() {
+        for (MAVLinkMessage m : requested) {
+            link.accept(m);
+        }
+        requested.clear();
         if (reached >= 0) {
             msg_mission_item_reached r = new msg_mission_item_reached();
             r.seq = reached;

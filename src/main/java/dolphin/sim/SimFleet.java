@@ -16,6 +16,7 @@ import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Objects;
 import java.util.PriorityQueue;
 import java.util.Random;
 import java.util.concurrent.ConcurrentLinkedQueue;
@@ -40,9 +41,11 @@ public final class SimFleet implements AutoCloseable {
      *     while they fit in 1..255, and start again from it on each link when they do not
      *     (MAVLink allows 255 systems per network; a ground station tells the links apart)
      * @param spacingMetres vehicles start this far apart, in a line to the east of {@code home}
+     * @param equipment the sensors and cameras, by system id
      */
     public record Config(int count, VehicleKind kind, Position home, double spacingMetres, int firstSysid,
-                         List<InetSocketAddress> gcs, SimOptions options, SigningKey signingKey, FaultModel faults) {
+                         List<InetSocketAddress> gcs, SimOptions options, SigningKey signingKey, FaultModel faults,
+                         SimEquipment equipment) {
 
         /** The Serra da Estrela base of the report's test. */
         public static final Position DEFAULT_HOME = Position.fromDegrees(40.444233, -7.375234, 820);
@@ -50,6 +53,7 @@ public final class SimFleet implements AutoCloseable {
 
         public Config {
             gcs = List.copyOf(gcs);
+            Objects.requireNonNull(equipment, "equipment");
             if (count < 1) {
                 throw new IllegalArgumentException("the fleet needs at least one vehicle, got " + count);
             }
@@ -97,29 +101,34 @@ public final class SimFleet implements AutoCloseable {
             return of(count, kind, List.of(gcs));
         }
 
-        /** The defaults: the report's base as home, 10 m apart, system ids from 1, no signing, no faults. */
+        /** The defaults: the report's base as home, 10 m apart, system ids from 1, no signing, no faults, no sensors or cameras. */
         public static Config of(int count, VehicleKind kind, List<InetSocketAddress> gcs) {
-            return new Config(count, kind, DEFAULT_HOME, DEFAULT_SPACING, 1, gcs, SimOptions.DEFAULT, null, FaultModel.NONE);
+            return new Config(count, kind, DEFAULT_HOME, DEFAULT_SPACING, 1, gcs, SimOptions.DEFAULT, null, FaultModel.NONE,
+                    SimEquipment.NONE);
         }
 
         public Config withOptions(SimOptions o) {
-            return new Config(count, kind, home, spacingMetres, firstSysid, gcs, o, signingKey, faults);
+            return new Config(count, kind, home, spacingMetres, firstSysid, gcs, o, signingKey, faults, equipment);
         }
 
         public Config withFaults(FaultModel f) {
-            return new Config(count, kind, home, spacingMetres, firstSysid, gcs, options, signingKey, f);
+            return new Config(count, kind, home, spacingMetres, firstSysid, gcs, options, signingKey, f, equipment);
         }
 
         public Config withSigningKey(SigningKey k) {
-            return new Config(count, kind, home, spacingMetres, firstSysid, gcs, options, k, faults);
+            return new Config(count, kind, home, spacingMetres, firstSysid, gcs, options, k, faults, equipment);
         }
 
         public Config withFirstSysid(int sysid) {
-            return new Config(count, kind, home, spacingMetres, sysid, gcs, options, signingKey, faults);
+            return new Config(count, kind, home, spacingMetres, sysid, gcs, options, signingKey, faults, equipment);
         }
 
         public Config withHome(Position p) {
-            return new Config(count, kind, p, spacingMetres, firstSysid, gcs, options, signingKey, faults);
+            return new Config(count, kind, p, spacingMetres, firstSysid, gcs, options, signingKey, faults, equipment);
+        }
+
+        public Config withEquipment(SimEquipment e) {
+            return new Config(count, kind, home, spacingMetres, firstSysid, gcs, options, signingKey, faults, e);
         }
     }
 
@@ -167,7 +176,7 @@ public final class SimFleet implements AutoCloseable {
         long now = clock.nanoTime();
         for (int i = 0; i < config.count(); i++) {
             Position home = config.home().displace(0, i * config.spacingMetres(), 0);
-            SimVehicle v = new SimVehicle(config.sysidOf(i), config.kind(), home, config.options(), now);
+            SimVehicle v = new SimVehicle(config.sysidOf(i), config.kind(), home, config.options(), now, config.equipment());
             DatagramChannel ch = DatagramChannel.open();
             ch.bind(new InetSocketAddress(0));
             ch.configureBlocking(false);

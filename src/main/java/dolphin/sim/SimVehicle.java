@@ -3,6 +3,7 @@ package dolphin.sim;
 import com.MAVLink.Messages.MAVLinkMessage;
 import com.MAVLink.ardupilotmega.msg_ekf_status_report;
 import com.MAVLink.common.msg_battery_status;
+import com.MAVLink.common.msg_camera_information;
 import com.MAVLink.common.msg_command_ack;
 import com.MAVLink.common.msg_command_long;
 import com.MAVLink.common.msg_extended_sys_state;
@@ -55,6 +56,9 @@ public final class SimVehicle {
     private final Firmware firmware;
     private final SimOptions options;
     private final PositionEstimate estimate;
+    private final long boot;
+    private final SimSensors sensors;
+    private final boolean camera;
     private final Map<Integer, Long> intervals = new HashMap<>();
     private final Map<Integer, Long> nextDue = new HashMap<>();
     private final Outbox outbox = new Outbox(this::send);
@@ -75,11 +79,19 @@ public final class SimVehicle {
     private final MissionFlight flight;
 
     SimVehicle(int sysid, VehicleKind kind, Position home, SimOptions options, long now) {
+        this(sysid, kind, home, options, now, SimEquipment.NONE);
+    }
+
+    /** A vehicle with what {@code equipment} puts on system id {@code sysid}. */
+    SimVehicle(int sysid, VehicleKind kind, Position home, SimOptions options, long now, SimEquipment equipment) {
         this.sysid = sysid;
         this.kind = kind;
         this.firmware = kind.firmware();
         this.options = options;
         this.estimate = new PositionEstimate(now, options.warmupSeconds());
+        this.boot = now;
+        this.sensors = new SimSensors(equipment.sensorsOf(sysid), now);
+        this.camera = equipment.cameraOn(sysid);
         this.home = home;
         this.craft = new Craft(home, firmware.performance(), s -> outbox.text(MAV_SEVERITY.MAV_SEVERITY_INFO, s));
         this.mode = firmware.bootMode();
@@ -225,6 +237,7 @@ public final class SimVehicle {
                 nextDue.put(e.getKey(), nextOnGrid(due, e.getValue(), now));
             }
         }
+        sensors.due(now, craft.position(), bootMillis(now)).forEach(out);
         if (now >= nextHeartbeat) {
             if (fenceGuard.enabled()) {
                 out.accept(fenceGuard.status());
@@ -264,7 +277,7 @@ public final class SimVehicle {
     }
 
     /** The first time after {@code now} on the grid of {@code interval} through {@code due}: a late tick keeps the phase. */
-    private static long nextOnGrid(long due, long interval, long now) {
+    static long nextOnGrid(long due, long interval, long now) {
         return due + interval * ((now - due) / interval + 1);
     }
 
@@ -305,13 +318,7 @@ public final class SimVehicle {
                 yield MAV_RESULT.MAV_RESULT_ACCEPTED;
             }
             case MAV_CMD.MAV_CMD_SET_MESSAGE_INTERVAL -> setInterval((int) c.param1, c.param2, now);
-            case MAV_CMD.MAV_CMD_REQUEST_MESSAGE -> {
-                if (!STREAMABLE.contains((int) c.param1)) {
-                    yield MAV_RESULT.MAV_RESULT_FAILED;
-                }
-                telemetry((int) c.param1).ifPresent(out);
-                yield MAV_RESULT.MAV_RESULT_ACCEPTED;
-            }
+            case MAV_CMD.MAV_CMD_REQUEST_MESSAGE -> requestMessage((int) c.param1, now);
             case MAV_CMD.MAV_CMD_GET_HOME_POSITION -> {
                 if (!estimate.ready(lastTick)) {
                     yield MAV_RESULT.MAV_RESULT_FAILED; // no home yet
@@ -331,6 +338,29 @@ public final class SimVehicle {
                     ? MAV_RESULT.MAV_RESULT_ACCEPTED : MAV_RESULT.MAV_RESULT_UNSUPPORTED;
             default -> MAV_RESULT.MAV_RESULT_UNSUPPORTED;
         };
+    }
+
+    /**
+     * GCS_MAVLINK::handle_command_request_message. CAMERA_INFORMATION is a message ArduPilot knows, so
+     * it is ACCEPTED either way; AP_Camera then sends one per camera, none without a camera.
+     */
+    private int requestMessage(int msgid, long now) {
+        if (msgid == msg_camera_information.MAVLINK_MSG_ID_CAMERA_INFORMATION) {
+            if (camera) {
+                outbox.requested(SimCamera.information(bootMillis(now)));
+            }
+            return MAV_RESULT.MAV_RESULT_ACCEPTED;
+        }
+        if (!STREAMABLE.contains(msgid)) {
+            return MAV_RESULT.MAV_RESULT_FAILED;
+        }
+        telemetry(msgid).ifPresent(out);
+        return MAV_RESULT.MAV_RESULT_ACCEPTED;
+    }
+
+    /** time_boot_ms: clock milliseconds since this vehicle booted. */
+    private long bootMillis(long now) {
+        return (now - boot) / 1_000_000;
     }
 
     /** GCS_MAVLINK_Copter::handle_MAV_CMD_MISSION_START: p1 = p2 = 0, switch to AUTO, auto_armed. */

@@ -42,7 +42,8 @@ class RawGroundStation implements AutoCloseable {
     private final FrameListener listener
     private final Map<Integer, FrameWriter> writers = [:]
 
-    RawGroundStation(VehicleKind kind = VehicleKind.COPTER, double speedup = 20, SimOptions options = SimOptions.DEFAULT) {
+    RawGroundStation(VehicleKind kind = VehicleKind.COPTER, double speedup = 20, SimOptions options = SimOptions.DEFAULT,
+                     SimEquipment equipment = SimEquipment.NONE) {
         clock = new SystemClock(speedup)
         listener = new FrameListener(socket, 'raw-gcs', { Frame f, SocketAddress from ->
             if (f.message()) {
@@ -50,7 +51,7 @@ class RawGroundStation implements AutoCloseable {
             }
         })
         def config = SimFleet.Config.of(1, kind, new InetSocketAddress(InetAddress.getLoopbackAddress(), socket.localPort))
-                .withOptions(options)
+                .withOptions(options).withEquipment(equipment)
         fleet = new SimFleet(config, clock)
         fleet.start()
     }

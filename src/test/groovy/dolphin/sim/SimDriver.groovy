@@ -37,10 +37,11 @@ class SimDriver {
     final List<Sent> sent = []
     long now
 
-    /** A vehicle booted at clock time {@code boot} (nanoseconds). */
-    SimDriver(VehicleKind kind, SimOptions options = SimOptions.DEFAULT, Position home = HOME, long boot = 0) {
+    /** Vehicle {@code sysid} booted at clock time {@code boot} (nanoseconds), with what {@code equipment} gives it. */
+    SimDriver(VehicleKind kind, SimOptions options = SimOptions.DEFAULT, Position home = HOME, long boot = 0,
+              SimEquipment equipment = SimEquipment.NONE, int sysid = 1) {
         now = boot
-        vehicle = new SimVehicle(1, kind, home, options, boot)
+        vehicle = new SimVehicle(sysid, kind, home, options, boot, equipment)
         vehicle.connect { MAVLinkMessage m -> sent << new Sent(now, m) }
     }
 
@@ -112,7 +113,7 @@ class SimDriver {
     def command(int command, List<Number> params = []) {
         int from = mark()
         def p = (params + [0] * 7).take(7)
-        handle(new msg_command_long(target_system: 1, target_component: 1, command: command, param1: p[0], param2: p[1],
+        handle(new msg_command_long(target_system: vehicle.sysid(), target_component: 1, command: command, param1: p[0], param2: p[1],
                 param3: p[2], param4: p[3], param5: p[4], param6: p[5], param7: p[6]))
         since(from, msg_command_ack).find { it.command == command }
     }
