@@ -23,7 +23,7 @@ class ExamplesSpec extends Specification {
     static final List<String> COVERED = [
             'two-drones-survey', 'listing2-single-vehicle', 'listing3-two-vehicles', 'listing4-keep-two-airborne',
             'operators', 'loiters', 'survey', 'camera', 'watch-onerror', 'first-flight', 'battery-and-position', 'fleet',
-            'fence', 'from-file']
+            'fence', 'from-file', 'fire-watch']
 
     @Shared
     Map<String, String> commandLines = [:]
@@ -184,6 +184,33 @@ class ExamplesSpec extends Specification {
                                   'mission square on vehicle 1: done', 'the square from the file: DONE, fence breached: false']
         'battery-and-position' | ['vehicle { 1 }: battery 100 %, position (40.444233°, -7.375234°, 820.000)',
                                   'vehicle { 2 }: battery 100 %, position (40.444233°, -7.375116°, 820.000)']
+    }
+
+    @Timeout(100)
+    def "fire watch: a scout reads the plume, the camera vehicle is picked and sent over it, within the plume's radius"() {
+        given: 'the plume of the command line: 60 m around this centre'
+        Position centre = Position.fromDegrees(40.4461, -7.3752, 870)
+
+        when:
+        def r = run('fire-watch')
+        String smoke = r.lines.find { it ==~ /smoke [\d.]+ read by vehicle \{ [12] \} at .*/ }
+        String over = r.lines.find { it.startsWith('vehicle { 3 } over the fire at ') }
+
+        then:
+        r.code == 0
+        smoke && over
+        (smoke =~ /smoke ([\d.]+)/)[0][1].toDouble() > 20
+        horizontal(ScriptLines.parsePosition(smoke), centre) < 60
+        horizontal(ScriptLines.parsePosition(over), centre) < 60
+        ScriptLines.inOrder(r.lines, 'mission survey west on vehicle 1: cut short: RTL', 'picked { 3 } from the free vehicles { 3 }',
+                'mission watch the fire on vehicle 3: started', 'mission watch the fire on vehicle 3: done')
+        ScriptLines.inOrder(r.lines, 'mission back home on vehicle 1: done')
+        ScriptLines.inOrder(r.lines, 'mission back home on vehicle 2: done')
+        r.lines.last() == 'dsl-examples/fire-watch.dolphin: completed'
+    }
+
+    static double horizontal(Position a, Position b) {
+        a.distanceTo(Position.fromDegrees(b.latitudeDegrees(), b.longitudeDegrees(), a.hae()))
     }
 
     @Timeout(100)
