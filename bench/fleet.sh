@@ -4,10 +4,12 @@
 # bench/fleet.dolphin on every vehicle, each cut at 90 % battery by its own guard. Plain Java main
 # (dolphin.bench.FleetBench), real time. See bench/README.md.
 #
-#   bench/fleet.sh [--no-build] [--web] [SIZE...]      # default sizes: 50 250 1000
+#   bench/fleet.sh [--no-build] [--web | --flood RATE] [SIZE...]      # default sizes: 50 250 1000
 #
 # With --web (needs Debian's chromium), each size runs twice: without the web view, then with it
-# and a page open in a headless chromium; the summary gives the ratios (issue 13).
+# and a page open in a headless chromium; the summary gives the ratios (issue 13). With --flood RATE,
+# each size runs without, then with every vehicle sending RATE sensor readings per second; the
+# summary gives the ratio of the reaction p99 (issue 21; sizes up to 250, one link).
 #
 # Prints the summary, also in bench/target/results/fleet-summary.txt; every reaction time is in
 # fleet.json there. Exit status 1 if a run did not complete or a vehicle was not cut.
@@ -20,6 +22,7 @@ out="$bench/target/results"
 if [ "${1:-}" = "--no-build" ]; then shift; else "$bench/build.sh"; fi
 web=()
 if [ "${1:-}" = "--web" ]; then web=(--web); shift; fi
+if [ "${1:-}" = "--flood" ]; then web=(--flood "$2"); shift 2; fi
 sizes=("$@")
 [ ${#sizes[@]} -gt 0 ] || sizes=(50 250 1000)
 jar="${DOLPHIN_JAR:-$root/target/dolphin.jar}"

@@ -43,7 +43,11 @@ import java.util.stream.Stream;
  * <p>With {@code --web}, each size runs twice: without the web view, then with it and a page open in
  * a headless chromium (the same as a person watching), and the summary gives the ratios.
  *
- * <pre>FleetBench OUT_DIR SCRIPT JAVA CLASSPATH [--web] SIZE...</pre>
+ * <p>With {@code --flood RATE}, each size runs twice: without, then with every vehicle also sending RATE
+ * NAMED_VALUE_FLOAT readings per second from a companion component (id 191), each of which wakes the
+ * script's task tree; the summary gives the ratio of the reaction p99 (issue 21). One link only.
+ *
+ * <pre>FleetBench OUT_DIR SCRIPT JAVA CLASSPATH [--web | --flood RATE] SIZE...</pre>
  */
 public final class FleetBench {
 
@@ -78,13 +82,18 @@ public final class FleetBench {
         Files.createDirectories(out);
         FleetBench bench = new FleetBench(out, Files.readString(Path.of(args[1])), args[2], args[3]);
         boolean web = args[4].equals("--web");
+        int flood = args[4].equals("--flood") ? Integer.parseInt(args[5]) : 0;
         int failures = 0;
-        for (int i = web ? 5 : 4; i < args.length; i++) {
+        for (int i = web ? 5 : flood > 0 ? 6 : 4; i < args.length; i++) {
             int n = Integer.parseInt(args[i]);
-            failures += bench.run(n, false);
+            failures += bench.run(n, false, 0);
             if (web) {
-                failures += bench.run(n, true);
+                failures += bench.run(n, true, 0);
                 bench.compare(n);
+            }
+            if (flood > 0) {
+                failures += bench.run(n, false, flood);
+                bench.compareFlood(n, flood);
             }
         }
         bench.write();
@@ -119,7 +128,7 @@ public final class FleetBench {
         }
     }
 
-    int run(int n, boolean web) throws Exception {
+    int run(int n, boolean web, int flood) throws Exception {
         int links = (n + PER_LINK - 1) / PER_LINK;
         MemoryMXBean memory = ManagementFactory.getMemoryMXBean();
         long heapBefore = usedHeap(memory);
@@ -139,6 +148,7 @@ public final class FleetBench {
         int failures = 0;
         WebView view = null;
         Process browser = null;
+        ReadingFlood flooder = null;
         try {
             check(waitFor(Duration.ofSeconds(120), () -> comms.nodes().size() == n
                     && comms.nodes().stream().allMatch(v -> v.state().batteryPercent() >= 0 && v.state().position() != null)),
@@ -149,6 +159,9 @@ public final class FleetBench {
             if (web) {
                 view = WebView.start(new WebView.Settings(WebAddress.parse("0"), null), comms, engine, clock);
                 browser = openPage(view);
+            }
+            if (flood > 0) {
+                flooder = ReadingFlood.start(n, flood, comms.links().get(0).localPort());
             }
             Cpu idle = Cpu.measure(sim, comms, () -> Thread.sleep(IDLE_WINDOW.toMillis()));
 
@@ -169,8 +182,11 @@ public final class FleetBench {
                         + (early ? ", a cut came during the measuring window" : ""));
                 failures++;
             }
-            report(n, links, web, heapVehicles, heapFlying, idle, guarded, browserCores, ms);
+            report(n, links, web, flood, heapVehicles, heapFlying, idle, guarded, browserCores, ms);
         } finally {
+            if (flooder != null) {
+                flooder.close();
+            }
             if (browser != null) {
                 browser.destroy();
                 browser.waitFor();
@@ -219,6 +235,22 @@ public final class FleetBench {
         r.put("webCpuRatioFlying", cpu);
         r.put("webCpuRatioStreaming", idle);
         r.put("webReactionP99Ratio", p99);
+        results.add(r);
+    }
+
+    /** The flooded run against the run without the flood, for one size. */
+    void compareFlood(int n, int rate) {
+        Map<String, Object> plain = results.get(results.size() - 2);
+        Map<String, Object> flooded = results.get(results.size() - 1);
+        double p99 = (double) flooded.get("reactionP99Ms") / (double) plain.get("reactionP99Ms");
+        double cpu = (double) flooded.get("runtimeCoresFlying") / (double) plain.get("runtimeCoresFlying");
+        line(String.format(Locale.ROOT, "%5d vehicles, %d readings/s per vehicle against none: reaction p99 %.2f ms against %.2f ms (x%.2f); "
+                + "runtime CPU x%.2f flying with guards", n, rate, (double) flooded.get("reactionP99Ms"),
+                (double) plain.get("reactionP99Ms"), p99, cpu));
+        Map<String, Object> r = new LinkedHashMap<>();
+        r.put("vehicles", n);
+        r.put("floodReactionP99Ratio", p99);
+        r.put("floodCpuRatioFlying", cpu);
         results.add(r);
     }
 
@@ -273,13 +305,14 @@ public final class FleetBench {
         }
     }
 
-    private void report(int n, int links, boolean web, long heapVehicles, long heapFlying, Cpu idle, Cpu flying, double browserCores,
+    private void report(int n, int links, boolean web, int flood, long heapVehicles, long heapFlying, Cpu idle, Cpu flying, double browserCores,
                         List<Double> ms) {
         double p50 = percentile(ms, 50);
         double p99 = percentile(ms, 99);
         double max = ms.isEmpty() ? Double.NaN : ms.get(ms.size() - 1);
         line(String.format(Locale.ROOT, "%5d vehicles, %d link(s)%s: %,.0f frames/s in while flying with guards", n, links,
-                web ? ", web view with a page open" : "", flying.framesInPerSecond()));
+                (web ? ", web view with a page open" : "") + (flood > 0 ? ", " + flood + " readings/s per vehicle" : ""),
+                flying.framesInPerSecond()));
         line(String.format(Locale.ROOT, "      runtime CPU: %.3f cores streaming only, %.3f cores flying with guards (%.3f ms/s per vehicle); "
                         + "simulator (reference, same traffic): %.3f and %.3f cores; runtime/simulator %.2f",
                 idle.runtimeCores(), flying.runtimeCores(), flying.runtimeCores() * 1000 / n, idle.simCores(), flying.simCores(),
@@ -299,6 +332,7 @@ public final class FleetBench {
         r.put("vehicles", n);
         r.put("links", links);
         r.put("web", web);
+        r.put("floodReadingsPerSecondPerVehicle", flood);
         r.put("framesInPerSecond", flying.framesInPerSecond());
         r.put("runtimeCoresStreaming", idle.runtimeCores());
         r.put("runtimeCoresFlying", flying.runtimeCores());
