@@ -46,10 +46,10 @@ public final class SensorWords {
 
     @Word("The vehicle's latest value under this name (waits for the first); options maxAge (seconds), component: sensor(v, 'SMOKE') > 20")
     public double sensor(Map<String, Object> options, Object vehicle, String name) {
-        MAVLinkNode node = OneVehicle.of(context, "sensor", vehicle);
-        ReadingOptions o = ReadingOptions.of("sensor", options);
-        checkName("sensor", name);
-        VehicleReadings readings = SensorService.of(node.communications()).readings(node);
+        Asked asked = ask("sensor", options, vehicle, name);
+        MAVLinkNode node = asked.node();
+        ReadingOptions o = asked.options();
+        VehicleReadings readings = asked.readings();
         List<Reading> found = await(node, () -> named(readings, name, o));
         if (found.isEmpty()) {
             List<String> sent = readings.all().stream().map(Reading::name).distinct().toList();
@@ -80,16 +80,14 @@ public final class SensorWords {
 
     @Word("Whether the vehicle has a current, finite value under this name, without waiting; options maxAge, component")
     public boolean sensorKnown(Map<String, Object> options, Object vehicle, String name) {
-        MAVLinkNode node = OneVehicle.of(context, "sensorKnown", vehicle);
-        ReadingOptions o = ReadingOptions.of("sensorKnown", options);
-        checkName("sensorKnown", name);
-        List<Reading> found = named(SensorService.of(node.communications()).readings(node), name, o);
+        Asked asked = ask("sensorKnown", options, vehicle, name);
+        List<Reading> found = named(asked.readings(), name, asked.options());
         if (found.isEmpty()) {
             return false;
         }
-        Reading r = one("sensorKnown", node, name, found);
-        long now = node.communications().clock().nanoTime();
-        return now - r.nanos() <= o.maxAgeNanos(r.freshNanos()) && r.finite();
+        Reading r = one("sensorKnown", asked.node(), name, found);
+        long now = asked.node().communications().clock().nanoTime();
+        return now - r.nanos() <= asked.options().maxAgeNanos(r.freshNanos()) && r.finite();
     }
 
     @Word("A field of the vehicle's latest message, in Dolphin's units: telemetry(v, 'VFR_HUD', 'groundspeed'); options maxAge, component")
@@ -157,11 +155,18 @@ public final class SensorWords {
         declaredByScript.addAll(List.of(names));
     }
 
-    private void checkName(String word, String name) {
+    /** What a sensor word asks about: the vehicle, the options, and the vehicle's readings; the name checked. */
+    private record Asked(MAVLinkNode node, ReadingOptions options, VehicleReadings readings) {
+    }
+
+    private Asked ask(String word, Map<String, Object> options, Object vehicle, String name) {
+        MAVLinkNode node = OneVehicle.of(context, word, vehicle);
+        ReadingOptions o = ReadingOptions.of(word, options);
         String mistake = SensorNameRules.mistake(name, declaredAhead.get(), declaredByScript);
         if (mistake != null) {
             throw new DslException(word + ": " + mistake);
         }
+        return new Asked(node, o, SensorService.of(node.communications()).readings(node));
     }
 
     private static List<Reading> named(VehicleReadings readings, String name, ReadingOptions o) {
