@@ -22,8 +22,8 @@ final class SensorNameRules {
         }
         if (name.length() > NAMED_VALUE_MAX && !all.contains(name)) {
             return "'" + name + "' has " + name.length() + " characters: NAMED_VALUE_FLOAT names have at most "
-                    + NAMED_VALUE_MAX + ", so no vehicle can send it"
-                    + (name.length() > NAMED_VALUE_MAX ? " (did the sender cut it to '" + name.substring(0, NAMED_VALUE_MAX) + "'?)" : "");
+                    + NAMED_VALUE_MAX + ", so no vehicle can send it (did the sender cut it to '"
+                    + name.substring(0, NAMED_VALUE_MAX) + "'?)";
         }
         if ((!declared.fleet().isEmpty() || !scriptDeclared.isEmpty()) && !all.contains(name)) {
             List<String> near = Suggestions.near(name, all);
