@@ -20,11 +20,11 @@ import picocli.CommandLine.ParameterException;
  *
  * @param names the command's names of the sensor, camera and file options
  */
-record EquipmentOptions(Names names, List<String> sensors, String cameras, Path file) {
+record EquipmentOptions(OptionNames names, List<String> sensors, String cameras, Path file) {
 
-    record Names(String sensor, String camera, String config) {
-        static final Names SIM = new Names("--sensor", "--camera", "--config");
-        static final Names RUN = new Names("--sim-sensor", "--sim-camera", "--sim-config");
+    record OptionNames(String sensor, String camera, String config) {
+        static final OptionNames SIM = new OptionNames("--sensor", "--camera", "--config");
+        static final OptionNames RUN = new OptionNames("--sim-sensor", "--sim-camera", "--sim-config");
 
         List<String> all() {
             return List.of(sensor, camera, config);

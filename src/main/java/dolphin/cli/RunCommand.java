@@ -236,7 +236,7 @@ final class RunCommand implements Callable<Integer> {
         if (speedup != 1 && sim == 0) {
             throw new ParameterException(spec.commandLine(), "--speedup needs --sim: real vehicles run in real time");
         }
-        for (String option : EquipmentOptions.Names.RUN.all()) {
+        for (String option : EquipmentOptions.OptionNames.RUN.all()) {
             if (sim == 0 && spec.commandLine().getParseResult().hasMatchedOption(option)) {
                 throw new ParameterException(spec.commandLine(), option + " needs --sim: only simulated vehicles carry simulated sensors and cameras");
             }
@@ -313,7 +313,7 @@ final class RunCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), "--sim " + sim + ": " + e.getMessage());
         }
-        return config.withEquipment(new EquipmentOptions(EquipmentOptions.Names.RUN, simSensors, simCameras, simConfig)
+        return config.withEquipment(new EquipmentOptions(EquipmentOptions.OptionNames.RUN, simSensors, simCameras, simConfig)
                 .equipment(spec.commandLine(), config.firstSysid(), config.highestSysid()));
     }
 }

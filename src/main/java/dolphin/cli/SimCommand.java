@@ -125,7 +125,7 @@ final class SimCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
-        return config.withEquipment(new EquipmentOptions(EquipmentOptions.Names.SIM, sensors, cameras, equipmentFile)
+        return config.withEquipment(new EquipmentOptions(EquipmentOptions.OptionNames.SIM, sensors, cameras, equipmentFile)
                 .equipment(spec.commandLine(), firstSysid, config.highestSysid()));
     }
 }

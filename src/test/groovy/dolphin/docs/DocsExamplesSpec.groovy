@@ -212,8 +212,8 @@ class DocsExamplesSpec extends Specification {
     }
 
     /**
-     * The arguments as they run here: files written (--out, --tlog) and read (--signing-key) in the
-     * document's working directory; the default port 14559 replaced by a free one, and the web view's
+     * The arguments as they run here: files written (--out, --tlog) and read (--signing-key, the
+     * simulated fleet's --config and --sim-config) in the document's working directory; the default port 14559 replaced by a free one, and the web view's
      * port by 0 (a free one, on loopback); tcp links aimed at a closed port and serial links at a
      * device that does not exist.
      */
@@ -221,7 +221,7 @@ class DocsExamplesSpec extends Specification {
         List<String> result = []
         args.eachWithIndex { String a, int i ->
             String before = i > 0 ? args[i - 1] : ''
-            if (before in ['--out', '--tlog', '--signing-key']) {
+            if (before in ['--out', '--tlog', '--signing-key', '--config', '--sim-config']) {
                 result << workDir(b).resolve(a).toString()
             } else if (before == '--web') {
                 result << '0'
