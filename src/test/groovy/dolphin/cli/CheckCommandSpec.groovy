@@ -55,6 +55,59 @@ class CheckCommandSpec extends Specification {
                 "${script('first-try.dolphin')}:7:23: unknown command 'batery'; did you mean 'battery'?"]*.toString()
     }
 
+    def "sensor words: a name no vehicle can send and a telemetry field MAVLink lacks; any other name may be read"() {
+        when:
+        def r = check(script('sensor-names.dolphin'))
+
+        then:
+        r.code == 1
+        r.err.readLines() == [
+                "${script('sensor-names.dolphin')}:3:7: sensorKnown: 'TEMPERATURE' has 11 characters: NAMED_VALUE_FLOAT names have at most 10," +
+                        " so no vehicle can send it (did the sender cut it to 'TEMPERATUR'?)",
+                "${script('sensor-names.dolphin')}:4:9: telemetry: VFR_HUD has no field groundsped; did you mean 'groundspeed'?" +
+                        ' (its fields: airspeed, groundspeed, heading, throttle, alt, climb)']*.toString()
+    }
+
+    def "with a fleet file that lists the sensors, a name it does not declare is a mistake, with what it declares"() {
+        given:
+        String fleet = new File(CheckCommandSpec.getResource('/fleets/smoke-fleet.json').toURI()).path
+
+        when:
+        def r = check('--fleet', fleet, script('sensor-names.dolphin'))
+
+        then:
+        r.code == 1
+        r.err.readLines()[0] == "${script('sensor-names.dolphin')}:2:11: sensor: no sensor 'SMOKY' is declared" +
+                " (declared: DISTANCE_DOWN, DISTANCE_FWD, SMOKE); did you mean 'SMOKE'?"
+        r.err.readLines().size() == 3
+    }
+
+    def "a script that declares its sensors: a misspelt one is a mistake without a fleet file"() {
+        when:
+        def r = check(script('sensor-declared.dolphin'))
+
+        then:
+        r.code == 1
+        r.err.readLines() == ["${script('sensor-declared.dolphin')}:3:50: sensor: no sensor 'C02' is declared" +
+                " (declared: CO2, DISTANCE_DOWN, DISTANCE_FWD, SMOKE); did you mean 'CO2'?"]*.toString()
+    }
+
+    def "a fleet file with a mistake stops the check at once, naming the file and the entry"() {
+        given:
+        def bad = File.createTempFile('fleet', '.json')
+        bad.text = '{"vehicles": [{"sysid": 300}]}'
+
+        when:
+        def r = check('--fleet', bad.path, script('good.dolphin'))
+
+        then:
+        r.code == 2
+        r.err.contains("${bad.path}: vehicle 1: sysid must be a system id from 1 to 255, got 300")
+
+        cleanup:
+        bad.delete()
+    }
+
     def "missions built after a pick are checked: the rehearsal picks stand-ins and runs no execute, even in a loop"() {
         when:
         def r = check(script('below-home-after-pick.dolphin'))
