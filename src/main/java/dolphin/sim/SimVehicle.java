@@ -4,6 +4,7 @@ import com.MAVLink.Messages.MAVLinkMessage;
 import com.MAVLink.ardupilotmega.msg_ekf_status_report;
 import com.MAVLink.common.msg_battery_status;
 import com.MAVLink.common.msg_camera_information;
+import com.MAVLink.common.msg_gimbal_manager_information;
 import com.MAVLink.common.msg_command_ack;
 import com.MAVLink.common.msg_command_long;
 import com.MAVLink.common.msg_extended_sys_state;
@@ -341,14 +342,18 @@ public final class SimVehicle {
     }
 
     /**
-     * GCS_MAVLINK::handle_command_request_message. CAMERA_INFORMATION is a message ArduPilot knows, so
-     * it is ACCEPTED either way; AP_Camera then sends one per camera, none without a camera.
+     * GCS_MAVLINK::handle_command_request_message. CAMERA_INFORMATION and GIMBAL_MANAGER_INFORMATION are
+     * messages ArduPilot knows, so they are ACCEPTED either way; AP_Camera then sends one per camera,
+     * none without a camera, and the simulated vehicles carry no gimbal (docs/decisions.md).
      */
     private int requestMessage(int msgid, long now) {
         if (msgid == msg_camera_information.MAVLINK_MSG_ID_CAMERA_INFORMATION) {
             if (camera) {
                 outbox.requested(SimCamera.information(bootMillis(now)));
             }
+            return MAV_RESULT.MAV_RESULT_ACCEPTED;
+        }
+        if (msgid == msg_gimbal_manager_information.MAVLINK_MSG_ID_GIMBAL_MANAGER_INFORMATION) {
             return MAV_RESULT.MAV_RESULT_ACCEPTED;
         }
         if (!STREAMABLE.contains(msgid)) {

@@ -63,6 +63,20 @@ class SimCameraSpec extends Specification {
         d.since(from, msg_camera_information).empty
     }
 
+    def "GIMBAL_MANAGER_INFORMATION: ACCEPTED, as ArduPilot answers without a mount, and nothing more"() {
+        given:
+        def d = vehicle(1, SysidSet.ALL)
+        int from = d.mark()
+
+        when:
+        def ack = d.command(MAV_CMD.MAV_CMD_REQUEST_MESSAGE, [com.MAVLink.common.msg_gimbal_manager_information.MAVLINK_MSG_ID_GIMBAL_MANAGER_INFORMATION])
+        d.run(2)
+
+        then:
+        ack.result == MAV_RESULT.MAV_RESULT_ACCEPTED
+        d.since(from, com.MAVLink.common.msg_gimbal_manager_information).empty
+    }
+
     def "other requested messages are answered as before; unknown ones FAILED"() {
         given:
         def d = vehicle(1, SysidSet.ALL)
