@@ -1,5 +1,6 @@
 package dolphin.sim
 
+import com.MAVLink.common.msg_gimbal_manager_information
 import com.MAVLink.common.msg_camera_information
 import com.MAVLink.common.msg_command_ack
 import com.MAVLink.common.msg_home_position
@@ -69,12 +70,12 @@ class SimCameraSpec extends Specification {
         int from = d.mark()
 
         when:
-        def ack = d.command(MAV_CMD.MAV_CMD_REQUEST_MESSAGE, [com.MAVLink.common.msg_gimbal_manager_information.MAVLINK_MSG_ID_GIMBAL_MANAGER_INFORMATION])
+        def ack = d.command(MAV_CMD.MAV_CMD_REQUEST_MESSAGE, [msg_gimbal_manager_information.MAVLINK_MSG_ID_GIMBAL_MANAGER_INFORMATION])
         d.run(2)
 
         then:
         ack.result == MAV_RESULT.MAV_RESULT_ACCEPTED
-        d.since(from, com.MAVLink.common.msg_gimbal_manager_information).empty
+        d.since(from, msg_gimbal_manager_information).empty
     }
 
     def "other requested messages are answered as before; unknown ones FAILED"() {
