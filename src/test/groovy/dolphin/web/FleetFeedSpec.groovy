@@ -53,6 +53,21 @@ class FleetFeedSpec extends Specification {
         v.home == [40.444233, -7.375234, 820.0]
     }
 
+    def "a vehicle's payloads and latest readings, a stale one marked, a NaN one as text"() {
+        given:
+        samples = [new VehicleSample(VehicleView.of('1', 'UAV', true, false, state(HOME), '', ['Camera', 'SMOKE'],
+                [new VehicleView.Shown('SMOKE', 42.5d, '', 1, true), new VehicleView.Shown('TEMP', Double.NaN, 'degC', 191, false)]),
+                null, { null })]
+
+        when:
+        def v = parse(feed.sample(1.0).vehicles()['1'].json())
+
+        then:
+        v.payloads == ['Camera', 'SMOKE']
+        v.readings == [[name: 'SMOKE', value: 42.5, unit: '', component: 1, fresh: true],
+                       [name: 'TEMP', value: 'NaN', unit: 'degC', component: 191, fresh: false]]
+    }
+
     def "a viewer that has frame N is sent only the vehicles that changed after N, however many frames it missed"() {
         given:
         samples = [sample('1', HOME), sample('2', HOME)]
