@@ -233,8 +233,8 @@ function renderTable() {
       + `data-lat="${pos[0]}" data-lon="${pos[1]}" data-mode="${escapeHtml(d.mode)}">`
       + `<td>${escapeHtml(d.id)}</td><td>${escapeHtml(d.type)}</td><td>${d.connected ? escapeHtml(d.mode) : 'LOST'}${d.armed ? ' armed' : ''}</td>`
       + `<td>${d.battery == null ? '?' : d.battery + ' %'}</td><td>${d.relativeAlt.toFixed(1)} m</td>`
-      + `<td>${d.item != null ? d.item + '/' + d.total : '-'}</td><td>${escapeHtml(d.task)}</td>`
-      + `<td>${d.readings && d.readings.length ? readingsText(d.readings) : ''}</td></tr>`;
+      + `<td>${d.item != null ? d.item + '/' + d.total : '-'}</td>`
+      + `<td>${d.readings && d.readings.length ? readingsText(d.readings) : ''}</td><td>${escapeHtml(d.task)}</td></tr>`;
   });
   document.querySelector('#vehicles tbody').innerHTML = rows.join('');
   document.getElementById('vehicle-count').textContent = `(${all.length})`;

@@ -45,11 +45,12 @@ class SitlHarness implements AutoCloseable {
      * Starts a vehicle: binary from the environment variable {@code binaryVariable}, parameter file
      * from {@code defaultsVariable} or {@code parmFile} next to ArduPilot's build.
      */
-    SitlVehicle start(String binaryVariable, String defaultsVariable, String parmFile, String model, int sysid, int instance, Position home) {
+    SitlVehicle start(String binaryVariable, String defaultsVariable, String parmFile, String model, int sysid, int instance, Position home,
+                      List<String> params = [], List<java.nio.file.Path> scripts = []) {
         String binary = new File(System.getenv(binaryVariable)).absolutePath
         assert new File(binary).canExecute(): "${binaryVariable}=${binary} is not an executable file"
         def v = new SitlVehicle(binary, model, sysid, instance, home, defaults(binary, defaultsVariable, parmFile), SPEEDUP,
-                comms.links()[0].localPort())
+                comms.links()[0].localPort(), params, scripts)
         vehicles << v
         v
     }

@@ -29,6 +29,16 @@ class SitlVehicle implements AutoCloseable {
      *        plane.parm), or null to run on the binary's built-in defaults
      */
     SitlVehicle(String binary, String model, int sysid, int instance, Position home, String defaults, double speedup, int gcsPort) {
+        this(binary, model, sysid, instance, home, defaults, speedup, gcsPort, [], [])
+    }
+
+    /**
+     * @param params parameter lines ("SCR_ENABLE 1") read after the defaults, from a file of its own
+     *        (SITL's --defaults takes a comma-separated list)
+     * @param scripts Lua scripts put in the working directory's scripts/ folder, where ArduPilot loads them
+     */
+    SitlVehicle(String binary, String model, int sysid, int instance, Position home, String defaults, double speedup, int gcsPort,
+                List<String> params, List<Path> scripts) {
         this.binary = binary
         this.model = model
         this.sysid = sysid
@@ -38,8 +48,16 @@ class SitlVehicle implements AutoCloseable {
         List<String> cmd = [binary, '--model', model, '-I', "${instance}", '--sysid', "${sysid}",
                             '--home', String.format(Locale.ROOT, '%.7f,%.7f,%.2f,0', home.latitudeDegrees(), home.longitudeDegrees(), home.hae()),
                             '--speedup', String.valueOf(speedup), '--serial0', "udpclient:127.0.0.1:${gcsPort}"]*.toString()
-        if (defaults) {
-            cmd += ['--defaults', defaults]
+        if (!scripts.isEmpty()) {
+            Path folder = Files.createDirectories(dir.resolve('scripts'))
+            scripts.each { Files.copy(it, folder.resolve(it.fileName)) }
+        }
+        List<String> parameterFiles = defaults ? [defaults] : []
+        if (!params.isEmpty()) {
+            parameterFiles << Files.write(dir.resolve('extra.parm'), params).toAbsolutePath().toString()
+        }
+        if (parameterFiles) {
+            cmd += ['--defaults', parameterFiles.join(',')]
         }
         process = new ProcessBuilder(cmd).directory(dir.toFile()).redirectErrorStream(true)
                 .redirectOutput(dir.resolve('sitl.log').toFile()).start()

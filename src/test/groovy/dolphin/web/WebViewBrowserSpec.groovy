@@ -6,7 +6,11 @@ import dolphin.dsl.ScriptResult
 import dolphin.mavlink.MAVLinkCommunications
 import dolphin.mavlink.MAVLinkConfig
 import dolphin.platform.MAVLinkPlatform
+import dolphin.sim.PlumeField
+import dolphin.sim.SimEquipment
 import dolphin.sim.SimFleet
+import dolphin.sim.SimSensor
+import dolphin.sim.SysidSet
 import dolphin.sim.VehicleKind
 import java.nio.file.Files
 import java.nio.file.Path
@@ -42,8 +46,11 @@ class WebViewBrowserSpec extends Specification {
     def setup() {
         comms = new MAVLinkCommunications(MAVLinkConfig.of('udpin:127.0.0.1:0'), clock)
         comms.start()
+        // vehicle 1 reads a smoke plume around home, vehicle 2 carries a camera
+        def equipment = new SimEquipment([new SimSensor('SMOKE', new PlumeField(SimFleet.Config.DEFAULT_HOME, 2000, 100, 0),
+                SysidSet.of([1]))], SysidSet.of([2]))
         fleet = new SimFleet(SimFleet.Config.of(2, VehicleKind.COPTER,
-                new InetSocketAddress('127.0.0.1', comms.links()[0].localPort())), clock)
+                new InetSocketAddress('127.0.0.1', comms.links()[0].localPort())).withEquipment(equipment), clock)
         fleet.start()
         engine = new Engine(new MAVLinkPlatform(comms), clock)
         view = WebView.start(new WebView.Settings(WebAddress.parse('0'), null), comms, engine, SystemClock.REAL)
@@ -69,6 +76,10 @@ class WebViewBrowserSpec extends Specification {
         then: 'both vehicles appear in the table and on the map'
         waitUntil(30) { positions().keySet() == ['1', '2'] as Set }
         waitUntil(10) { browser.executeScript('return document.querySelectorAll("path.dolphin-vehicle").length') == 2 }
+
+        and: 'vehicle 1 shows its smoke reading in the table, vehicle 2 none'
+        waitUntil(30) { $('#vehicles tr[data-vehicle="1"] [data-reading="SMOKE"][data-fresh="true"]') }
+        !$('#vehicles tr[data-vehicle="2"] [data-reading]')
 
         and: 'the surveys run, each on its vehicle'
         waitUntil(30) { node('Survey Area 1', 'running') && node('Survey Area 2', 'running') }
