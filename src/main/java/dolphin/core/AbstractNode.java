@@ -1,5 +1,7 @@
 package dolphin.core;
 
+import java.util.concurrent.atomic.AtomicReference;
+
 /**
  * Base class for platform nodes: identity, payload, connection timeout and battery. The payload is an
  * immutable value replaced whole when a node announces a component, so readers never see half of it.
@@ -8,13 +10,13 @@ public abstract class AbstractNode implements Node {
 
     private final String id;
     private final String type;
-    private final java.util.concurrent.atomic.AtomicReference<Payload> payload;
+    private final AtomicReference<Payload> payload;
     private volatile double connectionTimeout = DEFAULT_CONNECTION_TIMEOUT;
 
     protected AbstractNode(String id, String type, Payload payload) {
         this.id = id;
         this.type = type;
-        this.payload = new java.util.concurrent.atomic.AtomicReference<>(payload);
+        this.payload = new AtomicReference<>(payload);
     }
 
     @Override

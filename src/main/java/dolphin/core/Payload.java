@@ -1,5 +1,7 @@
 package dolphin.core;
 
+import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
 
@@ -26,7 +28,7 @@ public record Payload(List<Component> components) {
     }
 
     public static Payload of(String... names) {
-        return new Payload(java.util.Arrays.stream(names).map(Component::named).toList());
+        return new Payload(Arrays.stream(names).map(Component::named).toList());
     }
 
     /** True when every required component name is present. */
@@ -43,7 +45,7 @@ public record Payload(List<Component> components) {
      * name that had fewer details (a camera first known by its heartbeat, then by its CAMERA_INFORMATION).
      */
     public Payload with(Component component) {
-        java.util.ArrayList<Component> list = new java.util.ArrayList<>(components);
+        ArrayList<Component> list = new ArrayList<>(components);
         for (int i = 0; i < list.size(); i++) {
             if (list.get(i).name().equalsIgnoreCase(component.name())) {
                 if (list.get(i).parameters().size() >= component.parameters().size()) {

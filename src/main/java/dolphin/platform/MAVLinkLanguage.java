@@ -20,6 +20,10 @@ import dolphin.mission.file.MissionFile;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.RawItemPoint;
 import dolphin.mission.transfer.TransferResult;
+import dolphin.sensor.DeclaredSensors;
+import dolphin.sensor.FleetFile;
+import dolphin.sensor.Sensor;
+import dolphin.sensor.SensorService;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -29,10 +33,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
-import dolphin.sensor.DeclaredSensors;
-import dolphin.sensor.FleetFile;
-import dolphin.sensor.Sensor;
-import dolphin.sensor.SensorService;
 import org.codehaus.groovy.control.customizers.ImportCustomizer;
 
 /**
@@ -40,7 +40,7 @@ import org.codehaus.groovy.control.customizers.ImportCustomizer;
  * into scripts, the words {@code mission { }}, {@code pos { }} and {@code moveDistance { }} (static
  * imports of {@code dolphin.mission.dsl.MissionDsl}, so IDEs see them), {@code move(position, { })}
  * ({@link PositionWords}), {@code sendMessage(vehicles, message)}, {@code downloadMission(vehicle)} and
- * {@code fenceBreached(vehicle)}. Usable without a link, e.g. to
+ * {@code fenceBreached(vehicle)}, and the sensor words ({@link SensorWords}). Usable without a link, e.g. to
  * check scripts or build missions without vehicles.
  */
 public final class MAVLinkLanguage implements DslExtension {
