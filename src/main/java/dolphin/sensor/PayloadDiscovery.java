@@ -10,6 +10,8 @@ import dolphin.core.Payload;
 import dolphin.mavlink.MAVLinkCommunications;
 import dolphin.mavlink.MAVLinkNode;
 import java.nio.charset.StandardCharsets;
+import java.time.Duration;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
@@ -17,9 +19,11 @@ import java.util.concurrent.ConcurrentHashMap;
 /**
  * Learns a vehicle's payloads from what it announces (docs/sensors.md, "Payloads"): components that
  * send their own heartbeat (a MAVLink camera, gimbal or companion computer), and the CAMERA_INFORMATION
- * and GIMBAL_MANAGER_INFORMATION the autopilot sends when asked with MAV_CMD_REQUEST_MESSAGE, once, on
- * its first message. ArduPilot accepts that request whatever it carries and then sends one
- * CAMERA_INFORMATION per configured camera, nothing without one (docs/decisions.md).
+ * and GIMBAL_MANAGER_INFORMATION the autopilot sends when asked with MAV_CMD_REQUEST_MESSAGE, on its
+ * first message and twice more while unanswered. ArduPilot accepts that request whatever it carries
+ * and then sends one CAMERA_INFORMATION per configured camera, nothing without one, nor while it is
+ * still starting up: a copter SITL asked at its first heartbeat said nothing of its camera
+ * (docs/decisions.md).
  */
 final class PayloadDiscovery {
 
@@ -33,6 +37,9 @@ final class PayloadDiscovery {
             MAV_TYPE.MAV_TYPE_PARACHUTE, "Parachute",
             MAV_TYPE.MAV_TYPE_ADSB, "ADSB");
 
+    /** When to ask again, after the first question, while the answer has not come. */
+    static final List<Duration> ASK_AGAIN = List.of(Duration.ofSeconds(5), Duration.ofSeconds(20));
+
     private final MAVLinkCommunications comms;
     private final Set<MAVLinkNode> asked = ConcurrentHashMap.newKeySet();
 
@@ -42,10 +49,7 @@ final class PayloadDiscovery {
 
     void message(MAVLinkNode node, int component, MAVLinkMessage m) {
         if (component == node.getAutopilotCompid() && asked.add(node)) {
-            // one request after the other: a COMMAND_ACK names only the command, so the sender queues them anyway
-            comms.command(node, MAV_CMD.MAV_CMD_REQUEST_MESSAGE, msg_camera_information.MAVLINK_MSG_ID_CAMERA_INFORMATION)
-                    .whenComplete((r, e) -> comms.command(node, MAV_CMD.MAV_CMD_REQUEST_MESSAGE,
-                            msg_gimbal_manager_information.MAVLINK_MSG_ID_GIMBAL_MANAGER_INFORMATION));
+            ask(node, 0);
         }
         if (m instanceof msg_heartbeat hb && component != node.getAutopilotCompid()) {
             String kind = COMPONENT_KINDS.get((int) hb.type);
@@ -58,6 +62,26 @@ final class PayloadDiscovery {
         } else if (m instanceof msg_gimbal_manager_information g) {
             node.addPayload(new Payload.Component(GIMBAL, Map.of("component", component, "device", (int) g.gimbal_device_id)));
         }
+    }
+
+    /** Asks for what is not known yet, then again after the next delay of {@link #ASK_AGAIN}. */
+    private void ask(MAVLinkNode node, int round) {
+        boolean camera = !node.getPayload().has(CAMERA);
+        boolean gimbal = !node.getPayload().has(GIMBAL);
+        if (camera) {
+            request(node, msg_camera_information.MAVLINK_MSG_ID_CAMERA_INFORMATION);
+        }
+        if (gimbal) {
+            request(node, msg_gimbal_manager_information.MAVLINK_MSG_ID_GIMBAL_MANAGER_INFORMATION);
+        }
+        if ((camera || gimbal) && round < ASK_AGAIN.size()) {
+            comms.schedule(ASK_AGAIN.get(round), () -> ask(node, round + 1));
+        }
+    }
+
+    /** The sender queues requests with the same command id to a vehicle, as a COMMAND_ACK names only the command. */
+    private void request(MAVLinkNode node, int messageId) {
+        comms.command(node, MAV_CMD.MAV_CMD_REQUEST_MESSAGE, messageId);
     }
 
     /** A reading's name is a payload too: a vehicle that sends SMOKE carries a smoke sensor. */
