@@ -40,11 +40,35 @@ final class PayloadDiscovery {
     /** When to ask again, after the first question, while the answer has not come. */
     static final List<Duration> ASK_AGAIN = List.of(Duration.ofSeconds(5), Duration.ofSeconds(20));
 
-    private final MAVLinkCommunications comms;
+    /** How questions reach a vehicle and wait: the communications, or a test's fake. */
+    interface Questions {
+        /** Sends MAV_CMD_REQUEST_MESSAGE for the message to the vehicle's autopilot. */
+        void request(MAVLinkNode node, int messageId);
+
+        /** Runs the action after the delay, on the communications thread. */
+        void later(Duration delay, Runnable action);
+    }
+
+    private final Questions questions;
     private final Set<MAVLinkNode> asked = ConcurrentHashMap.newKeySet();
 
-    PayloadDiscovery(MAVLinkCommunications comms) {
-        this.comms = comms;
+    PayloadDiscovery(Questions questions) {
+        this.questions = questions;
+    }
+
+    /** Questions over the communications; the sender queues requests with the same command id to a vehicle. */
+    static PayloadDiscovery over(MAVLinkCommunications comms) {
+        return new PayloadDiscovery(new Questions() {
+            @Override
+            public void request(MAVLinkNode node, int messageId) {
+                comms.command(node, MAV_CMD.MAV_CMD_REQUEST_MESSAGE, messageId);
+            }
+
+            @Override
+            public void later(Duration delay, Runnable action) {
+                comms.schedule(delay, action);
+            }
+        });
     }
 
     void message(MAVLinkNode node, int component, MAVLinkMessage m) {
@@ -69,19 +93,14 @@ final class PayloadDiscovery {
         boolean camera = !node.getPayload().has(CAMERA);
         boolean gimbal = !node.getPayload().has(GIMBAL);
         if (camera) {
-            request(node, msg_camera_information.MAVLINK_MSG_ID_CAMERA_INFORMATION);
+            questions.request(node, msg_camera_information.MAVLINK_MSG_ID_CAMERA_INFORMATION);
         }
         if (gimbal) {
-            request(node, msg_gimbal_manager_information.MAVLINK_MSG_ID_GIMBAL_MANAGER_INFORMATION);
+            questions.request(node, msg_gimbal_manager_information.MAVLINK_MSG_ID_GIMBAL_MANAGER_INFORMATION);
         }
         if ((camera || gimbal) && round < ASK_AGAIN.size()) {
-            comms.schedule(ASK_AGAIN.get(round), () -> ask(node, round + 1));
+            questions.later(ASK_AGAIN.get(round), () -> ask(node, round + 1));
         }
-    }
-
-    /** The sender queues requests with the same command id to a vehicle, as a COMMAND_ACK names only the command. */
-    private void request(MAVLinkNode node, int messageId) {
-        comms.command(node, MAV_CMD.MAV_CMD_REQUEST_MESSAGE, messageId);
     }
 
     /** A reading's name is a payload too: a vehicle that sends SMOKE carries a smoke sensor. */

@@ -40,7 +40,7 @@ public final class SensorService {
     private SensorService(MAVLinkCommunications comms) {
         this.comms = comms;
         this.clock = comms.clock();
-        this.payloads = new PayloadDiscovery(comms);
+        this.payloads = PayloadDiscovery.over(comms);
         add(new NamedValues());
         installed().forEach(this::add);
         comms.addComponentListener(this::message);
