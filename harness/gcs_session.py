@@ -256,11 +256,12 @@ class GroundStation:
             if status is not None:
                 v["battery_remaining"] = status.battery_remaining
 
-        # 3. arm; after a refusal, wait (bounded) for the STATUSTEXT that says why
+        # 3. arm; wait (bounded) for the STATUSTEXT that says why after a refusal, or "Arming motors"
+        # after an ACCEPTED: ArduCopter sends it after its COMMAND_ACK, so it may come a moment later
         arm = self.command(ids, mavlink.MAV_CMD_COMPONENT_ARM_DISARM, [1], 10, "arm")
-        refused = [s for s in ids if arm[s]["result"] not in (None, mavlink.MAV_RESULT_ACCEPTED)]
-        self.wait_until(lambda: all(self.texts_from(s, arm[s]["sent"]) for s in refused), 3,
-                        "a STATUSTEXT from each vehicle that refused to arm: %s" % refused)
+        answered = [s for s in ids if arm[s]["result"] is not None]
+        self.wait_until(lambda: all(self.texts_from(s, arm[s]["sent"]) for s in answered), 3,
+                        "a STATUSTEXT from each vehicle that answered the arm command: %s" % answered)
         for s in ids:
             rec = dict(arm[s])
             rec["statustext"] = self.texts_from(s, arm[s]["sent"]) if arm[s]["sent"] is not None else []
