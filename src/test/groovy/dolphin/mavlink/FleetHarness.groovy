@@ -3,6 +3,7 @@ package dolphin.mavlink
 import dolphin.core.SystemClock
 import dolphin.mavlink.codec.SigningKey
 import dolphin.sim.FaultModel
+import dolphin.sim.SimEquipment
 import dolphin.sim.SimFleet
 import dolphin.sim.SimOptions
 import dolphin.sim.VehicleKind
@@ -27,9 +28,9 @@ class FleetHarness implements AutoCloseable {
     int port() { comms.links()[0].localPort() }
 
     SimFleet fleet(int count, VehicleKind kind = VehicleKind.COPTER, int firstSysid = 1, SimOptions options = SimOptions.DEFAULT,
-                   FaultModel faults = FaultModel.NONE, SigningKey key = null) {
+                   FaultModel faults = FaultModel.NONE, SigningKey key = null, SimEquipment equipment = SimEquipment.NONE) {
         def config = SimFleet.Config.of(count, kind, new InetSocketAddress('127.0.0.1', port()))
-                .withFirstSysid(firstSysid).withOptions(options).withFaults(faults).withSigningKey(key)
+                .withFirstSysid(firstSysid).withOptions(options).withFaults(faults).withSigningKey(key).withEquipment(equipment)
         def f = new SimFleet(config, clock)
         f.start()
         fleets << f
