@@ -10,6 +10,7 @@ import dolphin.mavlink.link.Link;
 import java.net.SocketAddress;
 import java.time.Duration;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
 import java.util.function.Predicate;
 import java.util.function.UnaryOperator;
 
@@ -166,8 +167,16 @@ public final class MAVLinkNode extends AbstractNode {
 
     /** Waits on the clock until the state shows what a vehicle just discovered has not sent yet; false at the deadline. */
     private boolean awaitTelemetry(String what, Predicate<VehicleState> arrived) {
+        return awaitWithin(what, () -> arrived.test(state.get()));
+    }
+
+    /**
+     * Waits on the clock, up to {@link #TELEMETRY_WAIT}, until {@code arrived} holds: how the words that
+     * read what a vehicle sends (battery, position, sensors) wait for its first report. False at the deadline.
+     */
+    public boolean awaitWithin(String what, BooleanSupplier arrived) {
         long deadline = clock.nanoTime() + TELEMETRY_WAIT.toNanos();
-        while (!arrived.test(state.get())) {
+        while (!arrived.getAsBoolean()) {
             if (clock.nanoTime() >= deadline) {
                 return false;
             }

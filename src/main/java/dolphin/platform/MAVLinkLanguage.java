@@ -134,7 +134,7 @@ public final class MAVLinkLanguage implements DslExtension {
          */
         @Word("The vehicle's current mission, downloaded, as a mission task")
         public MissionTask downloadMission(Object vehicle) {
-            MAVLinkNode node = single("downloadMission", vehicle);
+            MAVLinkNode node = OneVehicle.of(context, "downloadMission", vehicle);
             TransferResult r;
             try {
                 r = MissionService.of(node.communications()).vehicle(node).transfers().download().download().get(DOWNLOAD_DEADLINE.toSeconds(), TimeUnit.SECONDS);
@@ -159,7 +159,7 @@ public final class MAVLinkLanguage implements DslExtension {
          */
         @Word("Whether the vehicle is outside its fence now")
         public boolean fenceBreached(Object vehicle) {
-            return single("fenceBreached", vehicle).state().fenceBreached();
+            return OneVehicle.of(context, "fenceBreached", vehicle).state().fenceBreached();
         }
 
         /**
@@ -210,8 +210,5 @@ public final class MAVLinkLanguage implements DslExtension {
             return new MissionTask(m);
         }
 
-        private MAVLinkNode single(String word, Object vehicle) {
-            return OneVehicle.of(context, word, vehicle);
-        }
     }
 }

@@ -28,8 +28,7 @@ final class SensorCallCheck implements CallCheck {
             case "declareSensors" -> {
                 for (Object c : constants) {
                     if (c instanceof String name) {
-                        String m = name.length() > SensorNameRules.NAMED_VALUE_MAX || name.isBlank()
-                                ? SensorNameRules.mistake(name, new DeclaredSensors(Set.of(), declared.classes()), Set.of()) : null;
+                        String m = SensorNameRules.declarationMistake(name, declared);
                         if (m != null) {
                             return "declareSensors: " + m;
                         }

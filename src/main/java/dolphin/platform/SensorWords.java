@@ -1,6 +1,5 @@
 package dolphin.platform;
 
-import dolphin.core.Clock;
 import dolphin.core.EnvironmentException;
 import dolphin.dsl.DslException;
 import dolphin.dsl.ScriptContext;
@@ -12,7 +11,6 @@ import dolphin.sensor.Sensor;
 import dolphin.sensor.SensorService;
 import dolphin.sensor.TelemetryField;
 import dolphin.sensor.VehicleReadings;
-import java.time.Duration;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -50,7 +48,7 @@ public final class SensorWords {
         MAVLinkNode node = asked.node();
         ReadingOptions o = asked.options();
         VehicleReadings readings = asked.readings();
-        List<Reading> found = await(node, () -> named(readings, name, o));
+        List<Reading> found = await("sensor", node, () -> named(readings, name, o));
         if (found.isEmpty()) {
             List<String> sent = readings.all().stream().map(Reading::name).distinct().toList();
             throw new EnvironmentException("sensor: vehicle " + node.getId() + " has sent no " + name
@@ -107,7 +105,7 @@ public final class SensorWords {
         ReadingOptions o = ReadingOptions.of("telemetry", options);
         int component = o.component() == null ? node.getAutopilotCompid() : o.component();
         VehicleReadings readings = SensorService.of(node.communications()).readings(node);
-        List<VehicleReadings.LastMessage> got = await(node, () -> {
+        List<VehicleReadings.LastMessage> got = await("telemetry", node, () -> {
             VehicleReadings.LastMessage r = readings.message(component, f.msgid());
             return r == null ? List.of() : List.of(r);
         });
@@ -148,8 +146,9 @@ public final class SensorWords {
     @Word("Names the sensors the script's vehicles send, so a misspelt name is an error: declareSensors 'SMOKE', 'CO2'")
     public void declareSensors(String... names) {
         for (String n : names) {
-            if (n.isBlank() || n.length() > SensorNameRules.NAMED_VALUE_MAX && !declaredAhead.get().classes().contains(n)) {
-                throw new DslException("declareSensors: " + SensorNameRules.mistake(n, DeclaredSensors.NONE, Set.of()));
+            String mistake = SensorNameRules.declarationMistake(n, declaredAhead.get());
+            if (mistake != null) {
+                throw new DslException("declareSensors: " + mistake);
             }
         }
         declaredByScript.addAll(List.of(names));
@@ -184,21 +183,10 @@ public final class SensorWords {
         return found.get(0);
     }
 
-    /** Waits on the vehicle's clock, up to the telemetry wait, until {@code find} finds something. */
-    private static <T> List<T> await(MAVLinkNode node, Supplier<List<T>> find) {
-        Clock clock = node.communications().clock();
-        long deadline = clock.nanoTime() + MAVLinkNode.TELEMETRY_WAIT.toNanos();
-        List<T> found = find.get();
-        while (found.isEmpty() && clock.nanoTime() < deadline) {
-            try {
-                clock.sleep(Duration.ofMillis(50));
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                throw new EnvironmentException("interrupted while waiting for vehicle " + node.getId(), e);
-            }
-            found = find.get();
-        }
-        return found;
+    /** What {@code find} finds once the vehicle has sent it, waiting as battery(v) does; empty at the deadline. */
+    private static <T> List<T> await(String word, MAVLinkNode node, Supplier<List<T>> find) {
+        node.awaitWithin(word, () -> !find.get().isEmpty());
+        return find.get();
     }
 
     private static String seconds(long nanos) {

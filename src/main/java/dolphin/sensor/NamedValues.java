@@ -9,10 +9,13 @@ import java.util.Set;
  * NAMED_VALUE_FLOAT and NAMED_VALUE_INT, as ArduPilot Lua scripts ({@code gcs:send_named_float}) and
  * companion computers send them: the reading's name is the message's, up to 10 characters.
  */
-final class NamedValues implements Sensor {
+public final class NamedValues implements Sensor {
 
-    /** NAMED_VALUE's name is a char[10], not terminated when all ten are used. */
-    static final int MAX_NAME = 10;
+    /** NAMED_VALUE's name is a char[10], not terminated when all ten are used: its length in the bindings. */
+    public static final int MAX_NAME = new msg_named_value_float().name.length;
+
+    NamedValues() {
+    }
 
     @Override
     public Set<Class<? extends MAVLinkMessage>> messages() {

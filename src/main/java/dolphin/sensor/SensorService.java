@@ -129,9 +129,9 @@ public final class SensorService {
             return;
         }
         VehicleReadings into = readings;
+        String source = MessageTable.get().name(message.msgid);
         for (Sensor s : readers) {
             long fresh = s.freshness().toNanos();
-            String source = MessageTable.get().name(message.msgid);
             try {
                 s.read(message, (name, value, unit) -> {
                     into.put(new Reading(name, value, unit == null ? "" : unit, component, source, now, fresh));

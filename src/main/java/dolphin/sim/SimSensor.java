@@ -10,7 +10,7 @@ import java.util.Objects;
 public record SimSensor(String name, SimField field, SysidSet vehicles) {
 
     /** NAMED_VALUE_FLOAT's name is char[10]. */
-    public static final int MAX_NAME = 10;
+    public static final int MAX_NAME = dolphin.sensor.NamedValues.MAX_NAME;
 
     public SimSensor {
         Objects.requireNonNull(field, "field");
