@@ -13,7 +13,7 @@ class RunCommandSpec extends Specification {
 
     static final String EXAMPLE = 'dsl-examples/battery-and-position.dolphin'
 
-    Map dolphin(String... args) {
+    static Map dolphin(String... args) {
         def out = new StringWriter()
         def err = new StringWriter()
         int code = Main.commandLine(new PrintWriter(out), new PrintWriter(err)).execute(args)
@@ -219,6 +219,12 @@ class RunCommandSpec extends Specification {
         ['run', EXAMPLE, '--web', '127.0.0.1:99999']               | 'the port must be between 0 and 65535, got 99999'
         ['run', EXAMPLE, '--web-tiles', 'https://t.example/{z}/{x}/{y}.png'] | '--web-tiles needs --web'
         ['run', EXAMPLE, '--web', '0', '--web-tiles', 'https://t.example/tiles.png'] | 'expected a tile URL with {z}, {x} and {y}'
+        ['run', EXAMPLE, '--sim-sensor', 'SMOKE:plume:40,-7,60,100']                   | '--sim-sensor needs --sim: only simulated vehicles carry simulated sensors and cameras'
+        ['run', EXAMPLE, '--sim-camera', '1']                                          | '--sim-camera needs --sim'
+        ['run', EXAMPLE, '--sim-config', 'fleet.json']                                 | '--sim-config needs --sim'
+        ['run', EXAMPLE, '--sim', '1', '--sim-sensor', 'SMOKE:plume:40,-7,60,100@2']   | "--sim-sensor 'SMOKE:plume:40,-7,60,100@2': no vehicle with system id 2 in the fleet (1..1)"
+        ['run', EXAMPLE, '--sim', '1', '--sim-camera', '1+2']                          | "--sim-camera '1+2': no vehicle with system id 2 in the fleet (1..1)"
+        ['run', EXAMPLE, '--sim', '1', '--sim-config', 'no/such.json']                 | '--sim-config no/such.json: no such file'
         ['sim', '--count', '0']                                    | '--count must be at least 1'
         ['sim', '--count', '300']                                  | '300 vehicles from system id 1 need at least 2 links'
         ['sim', '--link', 'udpin:0.0.0.0:14559']                   | '--link for sim must be udpout:HOST:PORT'

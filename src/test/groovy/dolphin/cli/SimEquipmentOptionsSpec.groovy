@@ -11,6 +11,8 @@ import spock.lang.Timeout
 
 import java.nio.file.Path
 
+import static dolphin.cli.RunCommandSpec.dolphin
+
 /**
  * The simulated fleet's sensors and cameras from the command line and a JSON file, for
  * {@code dolphin sim} (--sensor, --camera, --config) and {@code dolphin run --sim}
@@ -29,13 +31,6 @@ class SimEquipmentOptionsSpec extends Specification {
         def file = dir.resolve('fleet.json')
         java.nio.file.Files.writeString(file, text)
         file
-    }
-
-    static Map dolphin(String... args) {
-        def out = new StringWriter()
-        def err = new StringWriter()
-        int code = Main.commandLine(new PrintWriter(out), new PrintWriter(err)).execute(args)
-        [code: code, out: out.toString(), err: err.toString()]
     }
 
     def "dolphin sim: --sensor, a plume and a linear field, on chosen vehicles or all; --camera on some"() {
@@ -170,23 +165,5 @@ class SimEquipmentOptionsSpec extends Specification {
         then:
         r.code == 2
         r.err.contains('--config no/such.json: no such file')
-    }
-
-    def "dolphin run: the sensor and camera options need --sim, and are checked as dolphin sim's"() {
-        when:
-        def r = dolphin(args as String[])
-
-        then:
-        r.code == 2
-        r.err.contains(message)
-
-        where:
-        args                                                                           | message
-        ['run', EXAMPLE, '--sim-sensor', 'SMOKE:plume:40,-7,60,100']                   | '--sim-sensor needs --sim: only simulated vehicles carry simulated sensors and cameras'
-        ['run', EXAMPLE, '--sim-camera', '1']                                          | '--sim-camera needs --sim'
-        ['run', EXAMPLE, '--sim-config', 'fleet.json']                                 | '--sim-config needs --sim'
-        ['run', EXAMPLE, '--sim', '1', '--sim-sensor', 'SMOKE:plume:40,-7,60,100@2']   | "--sim-sensor 'SMOKE:plume:40,-7,60,100@2': no vehicle with system id 2 in the fleet (1..1)"
-        ['run', EXAMPLE, '--sim', '1', '--sim-camera', '1+2']                          | "--sim-camera '1+2': no vehicle with system id 2 in the fleet (1..1)"
-        ['run', EXAMPLE, '--sim', '1', '--sim-config', 'no/such.json']                 | '--sim-config no/such.json: no such file'
     }
 }

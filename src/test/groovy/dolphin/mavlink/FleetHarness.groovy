@@ -1,6 +1,11 @@
 package dolphin.mavlink
 
 import dolphin.core.SystemClock
+import dolphin.dsl.Engine
+import dolphin.dsl.EngineListener
+import dolphin.dsl.ScriptResult
+import dolphin.platform.MAVLinkPlatform
+import java.time.Duration
 import dolphin.mavlink.codec.SigningKey
 import dolphin.sim.FaultModel
 import dolphin.sim.SimEquipment
@@ -43,6 +48,17 @@ class FleetHarness implements AutoCloseable {
     }
 
     MAVLinkNode node(String id) { comms.node(id) }
+
+    /** Runs a script on the MAVLink platform over this ground station, its messages into {@code messages}; fails after 30 s. */
+    ScriptResult run(String script, String name, List<String> messages) {
+        def engine = new Engine(new MAVLinkPlatform(comms), clock)
+        engine.addListener(new EngineListener() {
+            void message(String text) { messages << text }
+        })
+        def result = engine.run(script, name).await(Duration.ofSeconds(30))
+        assert result != null: "${name} did not end in 30 s"
+        result
+    }
 
     @Override
     void close() {

@@ -1,15 +1,11 @@
 package dolphin.mavlink
 
-import dolphin.platform.MAVLinkPlatform
 import com.MAVLink.common.msg_sys_status
 import com.MAVLink.enums.MAV_AUTOPILOT
 import com.MAVLink.enums.MAV_TYPE
 import com.MAVLink.minimal.msg_heartbeat
-import dolphin.dsl.Engine
-import dolphin.dsl.EngineListener
 import dolphin.dsl.ScriptResult
 import dolphin.mavlink.codec.FrameWriter
-import java.time.Duration
 import spock.lang.AutoCleanup
 import spock.lang.Specification
 
@@ -21,13 +17,7 @@ class MavlinkScriptSpec extends Specification {
     List<String> messages = new java.util.concurrent.CopyOnWriteArrayList()
 
     ScriptResult run(String script) {
-        def engine = new Engine(new MAVLinkPlatform(h.comms), h.clock)
-        engine.addListener(new EngineListener() {
-            void message(String text) { messages << text }
-        })
-        def result = engine.run(script, 'mavlink.dolphin').await(Duration.ofSeconds(30))
-        assert result != null: 'script did not end in 30 s'
-        result
+        h.run(script, 'mavlink.dolphin', messages)
     }
 
     def "a script picks two vehicles and prints their battery and position (AMSL)"() {

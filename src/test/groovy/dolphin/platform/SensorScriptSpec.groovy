@@ -2,8 +2,6 @@ package dolphin.platform
 
 import com.MAVLink.common.msg_named_value_float
 import dolphin.core.Position
-import dolphin.dsl.Engine
-import dolphin.dsl.EngineListener
 import dolphin.dsl.ScriptResult
 import dolphin.mavlink.FleetHarness
 import dolphin.mavlink.codec.FrameWriter
@@ -15,7 +13,6 @@ import dolphin.sim.SimOptions
 import dolphin.sim.SimSensor
 import dolphin.sim.SysidSet
 import dolphin.sim.VehicleKind
-import java.time.Duration
 import java.util.concurrent.CopyOnWriteArrayList
 import spock.lang.AutoCleanup
 import spock.lang.Specification
@@ -32,13 +29,7 @@ class SensorScriptSpec extends Specification {
     List<String> messages = new CopyOnWriteArrayList()
 
     ScriptResult run(String script) {
-        def engine = new Engine(new MAVLinkPlatform(h.comms), h.clock)
-        engine.addListener(new EngineListener() {
-            void message(String text) { messages << text }
-        })
-        def result = engine.run(script, 'sensors.dolphin').await(Duration.ofSeconds(30))
-        assert result != null: 'script did not end in 30 s'
-        result
+        h.run(script, 'sensors.dolphin', messages)
     }
 
     def "readings in waitFor, in a task's condition and under during: the vehicle at rest reads 25 degC"() {

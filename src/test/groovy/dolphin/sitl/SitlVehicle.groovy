@@ -27,12 +27,6 @@ class SitlVehicle implements AutoCloseable {
     /**
      * @param defaults the parameter file (ArduPilot's Tools/autotest/default_params/copter.parm or
      *        plane.parm), or null to run on the binary's built-in defaults
-     */
-    SitlVehicle(String binary, String model, int sysid, int instance, Position home, String defaults, double speedup, int gcsPort) {
-        this(binary, model, sysid, instance, home, defaults, speedup, gcsPort, [], [])
-    }
-
-    /**
      * @param params parameter lines ("SCR_ENABLE 1") read after the defaults, from a file of its own
      *        (SITL's --defaults takes a comma-separated list)
      * @param scripts Lua scripts put in the working directory's scripts/ folder, where ArduPilot loads them

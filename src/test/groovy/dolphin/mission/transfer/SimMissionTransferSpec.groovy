@@ -10,11 +10,8 @@ import dolphin.mission.model.RallyPoints
 import com.MAVLink.enums.MAV_CMD
 import com.MAVLink.enums.MAV_FRAME
 import dolphin.core.Position
-import dolphin.dsl.Engine
-import dolphin.dsl.EngineListener
 import dolphin.dsl.ScriptResult
 import dolphin.mavlink.FleetHarness
-import dolphin.platform.MAVLinkPlatform
 import dolphin.sim.FaultModel
 import dolphin.sim.SimOptions
 import dolphin.sim.VehicleKind
@@ -139,17 +136,13 @@ class SimMissionTransferSpec extends Specification {
         def items = missionAround(node.home, 3, 25)
         assert MissionLayer.uploads(node).upload(items).get(30, TimeUnit.SECONDS).success()
         def messages = new java.util.concurrent.CopyOnWriteArrayList()
-        def engine = new Engine(new MAVLinkPlatform(h.comms), h.clock)
-        engine.addListener(new EngineListener() {
-            void message(String text) { messages << text }
-        })
 
         when:
-        def result = engine.run('''
+        def result = h.run('''
             v = pick { id '1'; timeout 20 }
             m = downloadMission(v)
             message "points ${m.mission().missionPoints()} first ${m.mission().getCommandList()[0].item().commandName()}"
-        ''', 'download.dolphin').await(Duration.ofSeconds(30))
+        ''', 'download.dolphin', messages)
 
         then:
         result.outcome == ScriptResult.Outcome.COMPLETED
