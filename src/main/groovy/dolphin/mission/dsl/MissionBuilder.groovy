@@ -22,6 +22,7 @@ import dolphin.mission.model.RallyPoints
 import dolphin.mission.model.SurveyArea
 import dolphin.mission.model.SurveyDirection
 import dolphin.mission.model.TakeOffPoint
+import dolphin.mission.model.Underwater
 import dolphin.dsl.vocabulary.Suggestions
 import dolphin.dsl.vocabulary.Vocabulary
 import dolphin.dsl.vocabulary.Word
@@ -63,6 +64,8 @@ class MissionBuilder {
     private String missionName
     private Position missionHome
     private boolean belowHomeAllowed
+    /** Set by maxDepth: the mission is under water (docs/underwater.md). */
+    private Underwater water
     /** Where each point was written: an exception made there, whose stack trace gives a later error that line. */
     private final Map<MissionPoint, DslException> origins = new IdentityHashMap<>()
     private Position lastRegistered
@@ -118,7 +121,48 @@ class MissionBuilder {
         if (missionHome != null) {
             throw new DslException("home: this mission already has a home, ${missionHome}; a mission has one home")
         }
+        if (water != null) {
+            throw new DslException("home: name the mission's home before maxDepth: the surface is at its height")
+        }
         missionHome = p
+    }
+
+    // ---- under water (docs/underwater.md)
+
+    /**
+     * Makes the mission an underwater one, for a submarine: its items stay between the surface (home's
+     * height, or sea level when the mission names no home) and {@code metres} below it.
+     */
+    @Word('An underwater mission, at most this many metres below the surface (home\'s height, else sea level)')
+    void maxDepth(Number metres) {
+        if (water != null) {
+            throw new DslException("maxDepth: this mission already has a depth limit, ${water.maxDepth()} m; it has one")
+        }
+        water = new Underwater(missionHome != null ? missionHome.hae() : 0, Args.positive('maxDepth', 'depth limit', metres))
+    }
+
+    /** NAV_WAYPOINT straight down (or up) at the last position, {@code metres} below the surface; registers it. */
+    @Word('A waypoint at the last position, this many metres below the surface (after maxDepth)')
+    void dive(Number metres) {
+        Underwater w = underwater('dive')
+        waypoint('dive', lastPosition('dive').atHeight(w.heightAt(Args.notNegative('dive', 'depth', metres))))
+    }
+
+    /** NAV_LAND at the last position at the surface: ArduSub rises there (its landing); registers it. */
+    @Word('Rises to the surface at the last position (after maxDepth)')
+    void surface() {
+        Underwater w = underwater('surface')
+        Position up = lastPosition('surface').atHeight(w.surface())
+        add(new LandingPoint('surface', up, Float.NaN, 0))
+        register(up)
+    }
+
+    private Underwater underwater(String word) {
+        if (water == null) {
+            throw new DslException("${word}: say first that the mission is under water and how deep it may go:"
+                    + " 'maxDepth METRES'")
+        }
+        water
     }
 
     // ---- going somewhere
@@ -429,7 +473,8 @@ class MissionBuilder {
                     + " (goPos, move, takeOff, surveyArea, ...)")
         }
         Mission m = new Mission(missionName, missionHome, commands, belowHomeAllowed)
-        if (missionHome != null && !belowHomeAllowed) {
+        m.setUnderwater(water)
+        if (missionHome != null && !belowHomeAllowed && water == null) {
             Position low = rallyPoints.find { Position p -> p.hae() < missionHome.hae() + HeightCheck.CLEARANCE }
             if (low != null) {
                 DslException e = new DslException("rally: the rally point ${low} is lower than home plus " +
@@ -440,7 +485,7 @@ class MissionBuilder {
             }
         }
         m.setAirspace(missionFence, RallyPoints.at(rallyPoints), fenceEnabled)
-        HeightCheck.firstTooLow(m, missionHome).ifPresent { HeightCheck.TooLow low ->
+        HeightCheck.firstUnsafe(m, missionHome).ifPresent { HeightCheck.Unsafe low ->
             DslException e = new DslException(low.message())
             e.stackTrace = origins[low.point()].stackTrace
             throw e

@@ -1,8 +1,13 @@
 package dolphin.mission.flight;
 
 import com.MAVLink.enums.MAV_CMD;
+import com.MAVLink.enums.MAV_FRAME;
 import dolphin.mavlink.VehicleFamily;
+import dolphin.mission.model.MissionItem;
+import dolphin.mission.model.Underwater;
+import java.util.List;
 import java.util.Optional;
+import java.util.Set;
 
 /**
  * What differs between ArduPilot families when a mission is flown (docs/mavlink.md, "How each
@@ -12,13 +17,34 @@ import java.util.Optional;
  */
 public interface FlightRules {
 
-    /** The rules for a family; ArduSub and other autopilots fly as Rover does (arm, AUTO, done at COMPLETE). */
+    /** The rules for a family; other autopilots fly as Rover does (arm, AUTO, done at COMPLETE). */
     static FlightRules of(VehicleFamily family) {
         return switch (family) {
             case COPTER -> Copter.RULES;
             case PLANE -> Plane.RULES;
+            case SUB -> Sub.RULES;
             default -> Rover.RULES;
         };
+    }
+
+    /** Whether the vehicle goes under water, so flies underwater missions ({@code maxDepth}) and only those. */
+    default boolean underwater() {
+        return false;
+    }
+
+    /** The items as this family must receive them; by default as the mission made them (heights above mean sea level). */
+    default List<MissionItem> onBoard(List<MissionItem> items, Underwater water) {
+        return items;
+    }
+
+    /** Why the family cannot fly this item, or empty when it can. */
+    default Optional<String> cannotFly(MissionItem item) {
+        return Optional.empty();
+    }
+
+    /** The mode a flight cut short ends in: back to its launch, by default. */
+    default String cutShortMode() {
+        return "RTL";
     }
 
     /** The mode to arm in, or empty (the default) to arm in the mode the vehicle is in. */
@@ -90,6 +116,72 @@ public interface FlightRules {
         @Override
         public String holdMode() {
             return "HOLD";
+        }
+
+        @Override
+        public boolean landsAfter(int command) {
+            return false;
+        }
+    }
+
+    /**
+     * ArduSub (docs/underwater.md): every item's height is relative to home, at the surface, and
+     * negative (a depth): ArduSub refuses any other frame with "Bad alt frame". Armed in MANUAL, its
+     * boot mode (AUTO while disarmed races through the mission without moving), started by AUTO;
+     * holds position and depth in POSHOLD; at the end of a mission it holds its depth in AUTO, so a
+     * mission that should end at the surface ends with a surfacing (NAV_LAND). It has no RTL: cut
+     * short, it rises to the surface (SURFACE).
+     */
+    enum Sub implements FlightRules {
+        RULES;
+
+        /** What ArduSub's Sub::start_command starts (ArduSub/commands_logic.cpp); it ignores anything else. */
+        private static final Set<Integer> FLOWN = Set.of(MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_CMD.MAV_CMD_NAV_LAND,
+                MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM, MAV_CMD.MAV_CMD_NAV_LOITER_TURNS, MAV_CMD.MAV_CMD_NAV_LOITER_TIME,
+                MAV_CMD.MAV_CMD_NAV_GUIDED_ENABLE, MAV_CMD.MAV_CMD_NAV_DELAY, MAV_CMD.MAV_CMD_CONDITION_DELAY,
+                MAV_CMD.MAV_CMD_CONDITION_DISTANCE, MAV_CMD.MAV_CMD_CONDITION_YAW, MAV_CMD.MAV_CMD_DO_CHANGE_SPEED,
+                MAV_CMD.MAV_CMD_DO_SET_HOME, MAV_CMD.MAV_CMD_DO_SET_ROI_LOCATION, MAV_CMD.MAV_CMD_DO_SET_ROI_NONE,
+                MAV_CMD.MAV_CMD_DO_SET_ROI, MAV_CMD.MAV_CMD_DO_MOUNT_CONTROL, MAV_CMD.MAV_CMD_DO_GUIDED_LIMITS);
+
+        @Override
+        public boolean underwater() {
+            return true;
+        }
+
+        /** Heights above mean sea level become heights above home, at the surface: minus the depth. */
+        @Override
+        public List<MissionItem> onBoard(List<MissionItem> items, Underwater water) {
+            return items.stream().map(i -> i.seq() == 0 || MissionItem.altitudeReference(i.frame()) != MAV_FRAME.MAV_FRAME_GLOBAL ? i
+                    : new MissionItem(i.seq(), i.command(), MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT, i.param1(), i.param2(),
+                            i.param3(), i.param4(), i.x(), i.y(), (float) Math.min(0, -water.depthOf(i.z())), i.autocontinue()))
+                    .toList();
+        }
+
+        @Override
+        public Optional<String> cannotFly(MissionItem item) {
+            return switch (item.command()) {
+                case MAV_CMD.MAV_CMD_NAV_TAKEOFF -> Optional.of("a submarine does not take off (ArduSub ignores NAV_TAKEOFF):"
+                        + " dive instead");
+                case MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH -> Optional.of("ArduSub has no return to launch: surface at home"
+                        + " with returnHomeAndLand");
+                default -> FLOWN.contains(item.command()) || item.seq() == 0 ? Optional.empty()
+                        : Optional.of("ArduSub ignores this command");
+            };
+        }
+
+        @Override
+        public Optional<String> armMode() {
+            return Optional.of("MANUAL");
+        }
+
+        @Override
+        public String holdMode() {
+            return "POSHOLD";
+        }
+
+        @Override
+        public String cutShortMode() {
+            return "SURFACE";
         }
 
         @Override

@@ -80,7 +80,7 @@ final class MissionEnd {
     }
 
     /** The last navigation item's seq (home, 0, when the mission has none). */
-    private static int lastNavigation(List<MissionItem> items) {
+    static int lastNavigation(List<MissionItem> items) {
         for (int i = items.size() - 1; i > 0; i--) {
             if (items.get(i).command() < MAV_CMD.MAV_CMD_NAV_LAST) {
                 return i;

@@ -1,6 +1,8 @@
 package dolphin.mission.flight;
 
+import com.MAVLink.common.msg_mission_current;
 import com.MAVLink.common.msg_mission_item_reached;
+import com.MAVLink.common.msg_statustext;
 import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_MODE_FLAG;
 import com.MAVLink.enums.MAV_RESULT;
@@ -25,6 +27,7 @@ import java.util.Deque;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.OptionalLong;
 import java.util.TreeMap;
 import java.util.concurrent.CompletableFuture;
@@ -47,6 +50,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     private final Function<Node, MissionVehicle> vehicles;
     /** MISSION_ITEM_REACHED heard since the start, written on the communications thread. */
     private final ItemsReached reached = new ItemsReached();
+    /** What the vehicle says of its items, in order, once the plan is made; fed on the communications thread. */
+    private volatile ItemRefusals refusals;
     private MissionVehicle vehicle;
     private MissionExecutorConfig config;
     private FlightRules rules;
@@ -72,6 +77,26 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     /** MISSION_ITEM_REACHED, on the communications thread: "reached at least seq". */
     public void consume(msg_mission_item_reached message) {
         reached.reached(message.seq);
+        ItemRefusals r = refusals;
+        if (r != null) {
+            r.reached(message.seq);
+        }
+    }
+
+    /** MISSION_CURRENT, on the communications thread, in the order the vehicle sent it. */
+    public void consume(msg_mission_current message) {
+        ItemRefusals r = refusals;
+        if (r != null) {
+            r.current(message.seq, message.mission_state, clock().nanoTime());
+        }
+    }
+
+    /** STATUSTEXT, on the communications thread, in the order the vehicle sent it. */
+    public void consume(msg_statustext message) {
+        ItemRefusals r = refusals;
+        if (r != null) {
+            r.text(message.severity, message.getText(), clock().nanoTime());
+        }
     }
 
     @Override
@@ -107,9 +132,9 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     @Override
     protected void onStop() {
         if (vehicle != null && (state == FlightState.ARM || state == FlightState.START || state == FlightState.RUNNING)) {
-            vehicle.command(MAV_CMD.MAV_CMD_DO_SET_MODE, MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED,
-                    vehicle.state().family().modeNumber("RTL").orElse(0));
-            progress("cut short: RTL");
+            String mode = rules.cutShortMode();
+            setMode(mode);
+            progress("cut short: " + mode);
         }
         landed();
     }
@@ -187,13 +212,24 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             List<MissionItem> items;
             try {
                 Position vehicleHome = vehicle.state().home();
-                items = mission.items(vehicleHome);
-                var low = HeightCheck.firstTooLow(mission, mission.getHome() != null ? mission.getHome() : vehicleHome);
-                if (low.isPresent()) {
-                    return fail(low.get().message());
+                var unsafe = HeightCheck.firstUnsafe(mission, mission.getHome() != null ? mission.getHome() : vehicleHome);
+                if (unsafe.isPresent()) {
+                    return fail(unsafe.get().message());
                 }
+                Optional<String> wrongVehicle = wrongVehicle();
+                if (wrongVehicle.isPresent()) {
+                    return fail(wrongVehicle.get());
+                }
+                items = rules.onBoard(mission.items(vehicleHome), mission.underwater().orElse(null));
             } catch (RuntimeException e) {
                 return fail(e.getMessage());
+            }
+            for (MissionItem item : items) {
+                var why = rules.cannotFly(item);
+                if (why.isPresent()) {
+                    return fail("item " + item.seq() + " (" + item.commandName() + ") cannot be flown by vehicle "
+                            + vehicle.vehicleId() + " (" + vehicle.state().family() + "): " + why.get());
+                }
             }
             TreeMap<Integer, List<DroneCommand>> keyed = new TreeMap<>(mission.nonMissionCommands());
             List<DroneCommand> beforeUpload = keyed.remove(0);
@@ -211,6 +247,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 lists.add(Map.entry(MissionType.RALLY, mission.rally().items()));
             }
             lists.add(Map.entry(MissionType.MISSION, items));
+            refusals = new ItemRefusals(rules, items, vehicle.vehicleId());
             enter(new Uploading(lists, new Plan(items, new MissionEnd(rules, items, vehicle.vehicleId(), config.modeGrace(),
                     config.landingStall()), keyed)));
             return CompletionState.IN_PROGRESS;
@@ -229,6 +266,18 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                         (float) h.latitudeDegrees(), (float) h.longitudeDegrees(), (float) h.hae()),
                         st -> st.home() != null && st.home().distanceTo(h) < 1, true));
             }
+        }
+
+        /** An underwater mission on a vehicle that does not dive, or the other way round. */
+        private Optional<String> wrongVehicle() {
+            boolean underwater = mission.underwater().isPresent();
+            if (underwater == rules.underwater()) {
+                return Optional.empty();
+            }
+            String v = "vehicle " + vehicle.vehicleId() + " (" + vehicle.state().family() + ")";
+            return Optional.of(underwater ? "an underwater mission (maxDepth) for " + v + ", which does not dive"
+                    : v + " goes under water: its mission must say how deep it may go, 'maxDepth METRES'"
+                    + " (docs/underwater.md)");
         }
 
         /** Says what the vehicle is waiting for, once per change. */
@@ -419,7 +468,10 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             }
             steps.add(new CommandSteps.Step("MAV_CMD_DO_SET_MISSION_CURRENT 1", () -> vehicle.command(
                     MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT, 1, 1), st -> st.missionSeq() == 1));
-            steps.add(new CommandSteps.Step("AUTO", () -> setMode("AUTO"), st -> isMode(st, "AUTO")));
+            steps.add(new CommandSteps.Step("AUTO", () -> {
+                refusals.begin();
+                return setMode("AUTO");
+            }, st -> isMode(st, "AUTO")));
             if (rules.needsMissionStart()) {
                 steps.add(new CommandSteps.Step("MAV_CMD_MISSION_START", () -> vehicle.command(MAV_CMD.MAV_CMD_MISSION_START, 0, 0),
                         st -> st.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE));
@@ -476,6 +528,10 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 return CompletionState.IN_PROGRESS;
             }
             MissionEnd.Verdict verdict = plan.end().judge(s, r, isMode(s, "AUTO"), now);
+            var refused = refusals.refusal();
+            if (verdict.error() == null && refused.isPresent()) {
+                return fail(refused.get());
+            }
             if (verdict.done()) {
                 MissionExecutor.this.state = FlightState.DONE;
                 progress("done");
@@ -515,6 +571,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                         int left = jumpsLeft.getOrDefault(jump, 0);
                         if (left > 0) {
                             jumpsLeft.put(jump, left - 1);
+                            refusals.jumped(jump.item());
                             send(jump);
                             progress("jump to item " + jump.item());
                             reached.jumped(jump);

@@ -1,6 +1,8 @@
 package dolphin.mission.flight;
 
+import com.MAVLink.common.msg_mission_current;
 import com.MAVLink.common.msg_mission_item_reached;
+import com.MAVLink.common.msg_statustext;
 import dolphin.core.Node;
 import dolphin.mavlink.MAVLinkCommunications;
 import dolphin.mavlink.MAVLinkNode;
@@ -98,6 +100,19 @@ public final class MissionService {
             if (executor != null) {
                 executor.consume(m);
                 comms.wakeScript();
+            }
+        });
+        // In the order they come, for the refused-item rule (ItemRefusals): snapshots miss a mission raced through.
+        handler.on(msg_mission_current.class, (n, m) -> {
+            MissionExecutor executor = executorOn(n);
+            if (executor != null) {
+                executor.consume(m);
+            }
+        });
+        handler.on(msg_statustext.class, (n, m) -> {
+            MissionExecutor executor = executorOn(n);
+            if (executor != null) {
+                executor.consume(m);
             }
         });
     }

@@ -25,6 +25,7 @@ public final class Mission {
     private volatile RallyPoints rally = RallyPoints.NONE;
     private volatile boolean fenceEnabled;
     private volatile VehicleProfile vehicleProfile = VehicleProfile.ARDUPILOT_COPTER;
+    private volatile Underwater underwater;
 
     /** @param home the home the script named, or null */
     public Mission(String name, Position home, List<DroneCommand> commands) {
@@ -45,6 +46,15 @@ public final class Mission {
     /** Whether the script allowed items lower than home plus the clearance. */
     public boolean belowHomeAllowed() {
         return belowHomeAllowed;
+    }
+
+    /** The bounds of an underwater mission ({@code maxDepth}), or empty for one flown or driven in the air. */
+    public java.util.Optional<Underwater> underwater() {
+        return java.util.Optional.ofNullable(underwater);
+    }
+
+    public void setUnderwater(Underwater bounds) {
+        underwater = bounds;
     }
 
     public void setDroneCommands(List<DroneCommand> commands) {

@@ -1,12 +1,15 @@
 package dolphin.mission.flight
 
 import com.MAVLink.Messages.MAVLinkMessage
+import com.MAVLink.common.msg_mission_current
 import com.MAVLink.common.msg_mission_item_reached
+import com.MAVLink.common.msg_statustext
 import com.MAVLink.common.msg_mission_set_current
 import com.MAVLink.common.msg_sys_status
 import com.MAVLink.enums.MAV_CMD
 import com.MAVLink.enums.MAV_LANDED_STATE
 import com.MAVLink.enums.MAV_RESULT
+import com.MAVLink.enums.MAV_SEVERITY
 import com.MAVLink.enums.MAV_SYS_STATUS_SENSOR
 import com.MAVLink.enums.MISSION_STATE
 import com.MAVLink.minimal.msg_heartbeat
@@ -344,7 +347,14 @@ class FakeFlightVehicle implements MissionVehicle {
         state = state.withPosition(HOME.displace(north, 0, -up), up, Double.NaN, clock.nanoTime())
     }
 
-    void text(String line) { state = state.withStatusText(line) }
+    /** STATUSTEXT, into the state and to the executor flying on the vehicle (as MissionService routes it). */
+    void text(String line, int severity = MAV_SEVERITY.MAV_SEVERITY_INFO) {
+        state = state.withStatusText(line)
+        def m = new msg_statustext()
+        m.severity = (short) severity
+        m.setText(line)
+        current?.consume(m)
+    }
 
     void landedState(int landed) { state = state.withLandedState(landed) }
 
@@ -352,6 +362,11 @@ class FakeFlightVehicle implements MissionVehicle {
     void missionCurrent(int seq, int missionState = MISSION_STATE.MISSION_STATE_ACTIVE) {
         int total = (stored[MissionType.MISSION]?.size() ?: 1) - 1
         state = state.withMissionCurrent(seq, total, missionState)
+        def m = new msg_mission_current()
+        m.seq = seq
+        m.total = total
+        m.mission_state = (short) missionState
+        current?.consume(m)
     }
 
     /** MISSION_ITEM_REACHED, to the executor flying on the vehicle (as MissionService routes it). */

@@ -20,7 +20,7 @@ class HeightCheckSpec extends Specification {
 
     def "#what"() {
         expect:
-        HeightCheck.firstTooLow(raw(item(command, frame, z)), HOME).map { it.seq() }.orElse(null) == tooLow
+        HeightCheck.firstUnsafe(raw(item(command, frame, z)), HOME).map { it.seq() }.orElse(null) == tooLow
 
         where:
         what                                            | command                             | frame                                      | z      || tooLow
@@ -42,7 +42,7 @@ class HeightCheckSpec extends Specification {
                 item(MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_FRAME.MAV_FRAME_GLOBAL_INT, 800))
 
         expect:
-        HeightCheck.firstTooLow(m, HOME).get().message() == "mission m: item 2 (item, NAV_WAYPOINT) is 0.5 m above home" +
+        HeightCheck.firstUnsafe(m, HOME).get().message() == "mission m: item 2 (item, NAV_WAYPOINT) is 0.5 m above home" +
                 " (home at 820.0 m): lower than the 2 m clearance, into the ground or nearly; only landings go lower." +
                 " Raise it, or write 'allowBelowHome true' in the mission if this is intended"
     }
@@ -53,8 +53,8 @@ class HeightCheckSpec extends Specification {
         Mission allowed = new Mission('m', HOME, low.commandList, true)
 
         expect:
-        HeightCheck.firstTooLow(low, HOME).present
-        HeightCheck.firstTooLow(allowed, HOME).empty
-        HeightCheck.firstTooLow(low, null).empty
+        HeightCheck.firstUnsafe(low, HOME).present
+        HeightCheck.firstUnsafe(allowed, HOME).empty
+        HeightCheck.firstUnsafe(low, null).empty
     }
 }
