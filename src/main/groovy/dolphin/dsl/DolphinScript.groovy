@@ -82,7 +82,7 @@ abstract class DolphinScript extends Script implements DslScript {
 
     @Word('How long a picked vehicle may be silent before its tasks fail (seconds): connectionTimeout = 30')
     void setConnectionTimeout(Number seconds) {
-        env().defaultConnectionTimeout = seconds.doubleValue()
+        env().setConnectionTimeout(seconds.doubleValue())
     }
 
     /** {@code setConnectionTimeout v1: 30, v2: 60}: keys name vehicle-set variables. */

@@ -57,6 +57,18 @@ public final class Environment {
         defaultConnectionTimeout = Node.validateConnectionTimeout(seconds);
     }
 
+    /**
+     * The script's {@code setConnectionTimeout secs}: the timeout of the vehicles it holds and of
+     * those it picks from now on (docs/runtime-semantics.md): the report's Listing 1 picks its UUVs,
+     * then gives them 10 minutes to dive out of contact.
+     */
+    public synchronized void setConnectionTimeout(double seconds) {
+        setDefaultConnectionTimeout(seconds);
+        for (Node n : bound) {
+            n.setConnectionTimeout(defaultConnectionTimeout);
+        }
+    }
+
     /** Steps the running task tree as soon as possible (called when telemetry arrives). */
     public void wake() {
         wakeup.wake();

@@ -13,19 +13,21 @@ class ConnectionTimeoutSpec extends Specification {
 
     private double timeout(String id) { h.platform.node(id).connectionTimeout }
 
-    def "the scalar form sets the default for vehicles picked later only"() {
+    def "the scalar form sets the vehicles the script holds (Listing 1 picks, then gives its UUVs 10 minutes) and those picked later"() {
         when:
         def r = h.run('''
             a = pick { }
             setConnectionTimeout 10.minutes
             b = pick { }
+            release b
+            setConnectionTimeout 60
         ''')
 
         then:
         r.outcome == COMPLETED
-        timeout('1') == 20d
+        timeout('1') == 60d
         timeout('2') == 600d
-        h.engine.environment.defaultConnectionTimeout == 600d
+        h.engine.environment.defaultConnectionTimeout == 60d
     }
 
     def "the map form sets the timeout of every vehicle in each named set"() {

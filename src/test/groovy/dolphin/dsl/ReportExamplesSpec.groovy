@@ -94,6 +94,7 @@ class ReportExamplesSpec extends Specification {
         h.platform.entries('done')*.time.max() == 120.0d
         h.messages.last() == 'Done!'
         h.engine.environment.defaultConnectionTimeout == 600d
+        ['1', '5', '6'].every { h.platform.node(it).connectionTimeout == 600d }
     }
 
     def "Listing 2's pattern: wait for a charged battery, run until it is low, then return"() {
