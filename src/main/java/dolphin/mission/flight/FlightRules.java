@@ -153,8 +153,13 @@ public interface FlightRules {
         public List<MissionItem> onBoard(List<MissionItem> items, Underwater water) {
             return items.stream().map(i -> i.seq() == 0 || MissionItem.altitudeReference(i.frame()) != MAV_FRAME.MAV_FRAME_GLOBAL ? i
                     : new MissionItem(i.seq(), i.command(), MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT, i.param1(), i.param2(),
-                            i.param3(), i.param4(), i.x(), i.y(), (float) Math.min(0, -water.depthOf(i.z())), i.autocontinue()))
+                            i.param3(), i.param4(), i.x(), i.y(), onBoardHeight(water, i.z()), i.autocontinue()))
                     .toList();
+        }
+
+        /** Minus the depth, never above the surface (ArduSub refuses a height above home), and 0 rather than -0. */
+        private static float onBoardHeight(Underwater water, float hae) {
+            return (float) Math.min(0, -water.depthOf(hae)) + 0f;
         }
 
         @Override
