@@ -11,6 +11,7 @@ import dolphin.core.Position;
 import dolphin.mission.model.MissionItem;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.Set;
 import java.util.function.Supplier;
 
@@ -286,10 +287,10 @@ final class MissionFlight {
         if (mode == firmware.autoMode()) {
             auto(dt);
         } else if (body.armed()) {
-            if (mode == firmware.rtlMode()) {
-                modeStep(dt, () -> firmware.returnHome(body.craft(), body.home(), false));
+            if (firmware.rtlMode().isPresent() && mode == firmware.rtlMode().getAsInt()) {
+                modeStep(dt, () -> firmware.returnHome(body.craft(), body.home(), false), this::disarmIfLanded);
             } else if (firmware.landMode().isPresent() && mode == firmware.landMode().getAsInt()) {
-                modeStep(dt, () -> firmware.landing(body.craft(), null));
+                modeStep(dt, () -> firmware.landing(body.craft(), null), () -> firmware.landModeDone(body));
             }
         }
         if (restartDue) {
@@ -328,12 +329,19 @@ final class MissionFlight {
         }
     }
 
-    /** RTL or LAND mode: a manoeuvre that, if it ends on the ground, ends with a disarm. */
-    private void modeStep(double dt, Supplier<Manoeuvre> make) {
+    /** RTL or LAND mode: a manoeuvre, and what the vehicle does once it is over. */
+    private void modeStep(double dt, Supplier<Manoeuvre> make, Runnable done) {
         if (modeManoeuvre == null) {
             modeManoeuvre = make.get();
         }
-        if (modeManoeuvre.step(dt) && modeManoeuvre.endsOnGround()) {
+        if (modeManoeuvre.step(dt)) {
+            done.run();
+        }
+    }
+
+    /** An RTL that ends on the ground ends with a disarm. */
+    private void disarmIfLanded() {
+        if (modeManoeuvre != null && modeManoeuvre.endsOnGround()) {
             body.disarm();
         }
     }
@@ -341,7 +349,9 @@ final class MissionFlight {
     /**
      * One tick of AUTO. Disarmed, or a copter armed on the ground without MISSION_START, it does not
      * move, but its mission runs: the DO items before the nav item run and the nav item starts. Such
-     * a copter disarms itself after DISARM_DELAY.
+     * a copter disarms itself after DISARM_DELAY. A firmware that runs its mission disarmed (ArduSub)
+     * completes each nav item as it starts, but for LOITER_UNLIM, which never completes. A nav item
+     * the firmware refuses is skipped, or stops the mission.
      */
     private void auto(double dt) {
         if (!cursor.running() || store.count() <= 1) {
@@ -384,8 +394,21 @@ final class MissionFlight {
                 cursor.next(item.seq() + 1);
                 continue;
             }
-            if (active == null) {
-                begin(item);
+            if (active == null && !begin(item)) {
+                if (!cursor.running()) {
+                    return;
+                }
+                continue;
+            }
+            if (!body.armed() && firmware.runsMissionDisarmed()) {
+                if (item.command() == MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM) {
+                    return;
+                }
+                firmware.completionText(item).ifPresent(s -> body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, s));
+                body.reached(item.seq());
+                cursor.next(item.seq() + 1);
+                dropActive();
+                continue;
             }
             if (waiting || !step(item, dt)) {
                 return;
@@ -507,14 +530,28 @@ final class MissionFlight {
         body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Mission: " + item.seq() + " " + CommandNames.of(item.command()));
     }
 
-    private void begin(MissionItem item) {
-        active = item;
+    /**
+     * Starts a nav item (AP_Mission::start_command): says so, then the firmware starts it or refuses
+     * it. False when refused: the mission is then past the item, or stopped at it.
+     */
+    private boolean begin(MissionItem item) {
         cursor.nav(item.seq());
+        announceStart(item);
+        Optional<NavRefusal> refusal = firmware.navRefusal(item);
+        if (refusal.isPresent()) {
+            refusal.get().texts().forEach(t -> body.text(MAV_SEVERITY.MAV_SEVERITY_WARNING, t));
+            if (refusal.get().stopsMission()) {
+                cursor.stop();
+            } else {
+                cursor.next(item.seq() + 1);
+            }
+            return false;
+        }
+        active = item;
         exitSpeed = exitSpeed(item);
         phase = Phase.APPROACH;
         timer = 0;
         modeManoeuvre = null;
-        announceStart(item);
         Craft craft = body.craft();
         manoeuvre = switch (item.command()) {
             case MAV_CMD.MAV_CMD_NAV_TAKEOFF -> firmware.takeoff(craft, altitude(item));
@@ -523,6 +560,7 @@ final class MissionFlight {
             case MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH -> firmware.returnHome(craft, body.home(), true);
             default -> null;
         };
+        return true;
     }
 
     /** One tick of the current nav item; true when it is complete. */
@@ -569,7 +607,7 @@ final class MissionFlight {
         if (timer < Math.max(0, holdSeconds)) {
             return false;
         }
-        firmware.completionText(item.seq()).ifPresent(s -> body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, s));
+        firmware.completionText(item).ifPresent(s -> body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, s));
         return true;
     }
 
