@@ -136,8 +136,11 @@ final class Craft {
     void dive(Position t, double endSpeed, double within, double dt) {
         double[] ned = position.displacementTo(t);
         double[] step = horizontal(ned[0], ned[1], endSpeed, endSpeed > 0 ? within : 0, false, dt);
-        double dz = Math.max(-performance.sink() * dt, Math.min(performance.climb() * dt, t.hae() - position.hae()));
-        position = position.displace(step[0], step[1], 0).atHeight(Math.min(ground, position.hae() + dz));
+        double gap = t.hae() - position.hae();
+        // the last step ends on the target's height itself, so a sub sent to the surface is at depth 0, not a rounding below it
+        double hae = gap > performance.climb() * dt ? position.hae() + performance.climb() * dt
+                : gap < -performance.sink() * dt ? position.hae() - performance.sink() * dt : t.hae();
+        position = position.displace(step[0], step[1], 0).atHeight(Math.min(ground, hae));
     }
 
     /** How far below the surface (the home's height) it is; 0 at or above it. */

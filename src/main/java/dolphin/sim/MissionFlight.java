@@ -265,7 +265,8 @@ final class MissionFlight {
 
     /**
      * Disarmed: what the firmware resets (AP_Arming_*::disarm). A copter's mission that runs in AUTO
-     * starts over at once (restartAfterDisarm).
+     * starts over at once (restartAfterDisarm); one that runs its mission disarmed (ArduSub) runs it
+     * through from the first item in the next tick.
      */
     void disarmed() {
         autoArmed = false;
@@ -274,7 +275,7 @@ final class MissionFlight {
         if (!firmware.resetsMissionOnDisarm(inAuto)) {
             return;
         }
-        if (inAuto && cursor.running()) {
+        if (inAuto && cursor.running() && !firmware.runsMissionDisarmed()) {
             restartDue = true;
         } else {
             cursor.reset();
@@ -404,6 +405,7 @@ final class MissionFlight {
                 if (item.command() == MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM) {
                     return;
                 }
+                body.flush(); // AP_Mission verifies an item in the loop after the one that started it
                 firmware.completionText(item).ifPresent(s -> body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, s));
                 body.reached(item.seq());
                 cursor.next(item.seq() + 1);
