@@ -234,17 +234,42 @@ final class MissionFlight {
 
     /**
      * Outside AUTO a running mission's items are started where it was set (AP_Mission starts them
-     * whatever the mode) and said so; they run when AUTO resumes them.
+     * whatever the mode) and said so; they run when AUTO resumes them. A nav item the firmware refuses
+     * is passed over for the next one at once (AP_Mission::advance_current_nav_cmd), or stops the
+     * mission; with none left the mission is complete.
      */
     private void sayStarted() {
         if (!cursor.running() || body.mode() == firmware.autoMode()) {
             return;
         }
-        for (int i = Math.min(cursor.next(), cursor.nav()); i <= cursor.nav(); i++) {
-            if (store.get(i).command() != MAV_CMD.MAV_CMD_DO_JUMP) {
-                announceStart(store.get(i));
+        int from = Math.min(cursor.next(), cursor.nav());
+        while (true) {
+            for (int i = from; i <= cursor.nav(); i++) {
+                if (store.get(i).command() != MAV_CMD.MAV_CMD_DO_JUMP) {
+                    announceStart(store.get(i));
+                }
+            }
+            Optional<NavRefusal> refusal = refusal(store.get(cursor.nav()));
+            if (refusal.isEmpty()) {
+                return;
+            }
+            if (refusal.get().stopsMission()) {
+                cursor.stop();
+                return;
+            }
+            from = cursor.nav() + 1;
+            if (!cursor.setCurrent(from)) {
+                finish();
+                return;
             }
         }
+    }
+
+    /** The firmware's refusal to start a nav item, said: empty when it starts it. */
+    private Optional<NavRefusal> refusal(MissionItem navItem) {
+        Optional<NavRefusal> refusal = firmware.navRefusal(navItem);
+        refusal.ifPresent(r -> r.texts().forEach(t -> body.text(MAV_SEVERITY.MAV_SEVERITY_WARNING, t)));
+        return refusal;
     }
 
     /**
@@ -539,9 +564,8 @@ final class MissionFlight {
     private boolean begin(MissionItem item) {
         cursor.nav(item.seq());
         announceStart(item);
-        Optional<NavRefusal> refusal = firmware.navRefusal(item);
+        Optional<NavRefusal> refusal = refusal(item);
         if (refusal.isPresent()) {
-            refusal.get().texts().forEach(t -> body.text(MAV_SEVERITY.MAV_SEVERITY_WARNING, t));
             if (refusal.get().stopsMission()) {
                 cursor.stop();
             } else {

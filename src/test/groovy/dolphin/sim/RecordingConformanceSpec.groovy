@@ -19,7 +19,8 @@ import spock.lang.Specification
  * plane's circuit ending in its own RTL; every mission command, then a second mission uploaded over
  * the first, which keeps its current item; a sub armed before its position estimate, refused AUTO
  * until it had one, then three waypoints at 10 m depth, COMPLETE, and a disarm at depth that resets
- * the mission (docs/mavlink.md, "The simulated fleet and real ArduPilot").
+ * the mission; dolphin's AMSL items refused by a sub ("Bad alt frame"), on DO_SET_MISSION_CURRENT and
+ * again on AUTO, the mission COMPLETE at once (docs/mavlink.md, "The simulated fleet and real ArduPilot").
  */
 class RecordingConformanceSpec extends Specification {
 
@@ -35,7 +36,8 @@ class RecordingConformanceSpec extends Specification {
     SimOptions sitl = SimOptions.DEFAULT.withWarmup(41)
 
     /** SITL's --home of the recordings not made at SimDriver.HOME: the subs dived off Comporta, at sea level. */
-    static final Map<String, Position> HOMES = ['sub-dive-mission': Position.fromDegrees(38.43462, -8.86118, 0)]
+    static final Map<String, Position> HOMES = ['sub-dive-mission' : Position.fromDegrees(38.43462, -8.86118, 0),
+                                                'sub-bad-alt-frame': Position.fromDegrees(38.43462, -8.86118, 0)]
 
     def setupSpec() {
         assert Files.isDirectory(DIRECTORY): "the SITL recordings are not at ${DIRECTORY.toAbsolutePath().normalize()}" 
@@ -87,6 +89,9 @@ class RecordingConformanceSpec extends Specification {
                                                                'HEARTBEAT armed=1 mode=3', 'MISSION_CURRENT seq=1 total=3 state=3',
                                                                'MISSION_ITEM_REACHED seq=3', 'MISSION_CURRENT seq=3 total=3 state=5',
                                                                'STATUSTEXT Disarming motors', 'MISSION_CURRENT seq=0 total=3 state=5']
+        'sub-bad-alt-frame'           | VehicleKind.SUB    || ['MISSION_ACK type=0', 'COMMAND_ACK command=400 result=0',
+                                                               'COMMAND_ACK command=224 result=0', 'STATUSTEXT Bad alt frame',
+                                                               'COMMAND_ACK command=176 result=0', 'HEARTBEAT armed=1 mode=3']
     }
 
     /** Whether {@code expected} occur in {@code lines} in this order, others between them allowed. */
