@@ -20,9 +20,10 @@ import java.util.function.Supplier;
  * clock time, by AP_Mission's rules: each item started says so ("Mission: 3 WP"); a nav item runs
  * until it completes; the DO items after it run when it does, in the same loop, so their
  * MISSION_ITEM_REACHED coalesces with its; CONDITION_DELAY runs beside the next nav item; DO_JUMP
- * loops. Where the mission stands and whether it runs is its {@link MissionCursor}. How the vehicle
- * takes off, reaches a point, holds, lands, returns and ends the mission, and whether it waits for
- * MISSION_START or resets its mission when disarmed, is its {@link Firmware}'s.
+ * loops. Where the mission stands and whether it runs is its {@link MissionCursor}. Which nav items
+ * the vehicle starts, how it takes off, reaches a point, holds, lands, returns and ends the mission,
+ * and whether it waits for MISSION_START, runs its mission disarmed or resets it when disarmed, is
+ * its {@link Firmware}'s.
  */
 final class MissionFlight {
 
