@@ -76,23 +76,28 @@ final class Converters {
         }
     }
 
-    /** {@code lat,lon,alt} in degrees and metres above mean sea level. */
+    /** {@code lat,lon[,alt]} in degrees and metres above mean sea level, the altitude 0 (sea level) when left out. */
     static final class Home implements ITypeConverter<Position> {
         @Override
         public Position convert(String value) {
-            String[] p = value.split(",");
+            String[] p = value.split(",", -1);
             try {
-                if (p.length != 3) {
+                if (p.length != 2 && p.length != 3) {
                     throw new NumberFormatException();
                 }
                 double lat = Double.parseDouble(p[0].strip());
                 double lon = Double.parseDouble(p[1].strip());
-                if (Math.abs(lat) > 90 || Math.abs(lon) > 180) {
+                double alt = p.length == 3 ? Double.parseDouble(p[2].strip()) : 0;
+                if (!Double.isFinite(alt)) {
+                    throw new NumberFormatException();
+                }
+                if (!(Math.abs(lat) <= 90 && Math.abs(lon) <= 180)) {
                     throw new TypeConversionException("home '" + value + "': latitude must be in [-90, 90], longitude in [-180, 180]");
                 }
-                return Position.fromDegrees(lat, lon, Double.parseDouble(p[2].strip()));
+                return Position.fromDegrees(lat, lon, alt);
             } catch (NumberFormatException e) {
-                throw new TypeConversionException("home '" + value + "': expected LAT,LON,ALT, e.g. 40.444233,-7.375234,820");
+                throw new TypeConversionException("home '" + value
+                        + "': expected LAT,LON[,ALT], e.g. 38.43462,-8.86118 or 40.444233,-7.375234,820");
             }
         }
     }

@@ -1,6 +1,7 @@
 package dolphin.cli;
 
 import dolphin.core.Clock;
+import dolphin.core.Position;
 import dolphin.core.SystemClock;
 import dolphin.dsl.Engine;
 import dolphin.dsl.ScriptResult;
@@ -17,6 +18,7 @@ import dolphin.sensor.FleetFile;
 import dolphin.sensor.SensorService;
 import dolphin.sim.FaultModel;
 import dolphin.sim.SimFleet;
+import dolphin.sim.SimOptions;
 import dolphin.sim.VehicleKind;
 import dolphin.web.WebAddress;
 import dolphin.web.WebView;
@@ -59,8 +61,18 @@ final class RunCommand implements Callable<Integer> {
     private int sim;
 
     @Option(names = "--sim-type", paramLabel = "TYPE", converter = Converters.VehicleKindConverter.class, defaultValue = "copter",
-            description = "copter, plane or rover (default: ${DEFAULT-VALUE}).")
+            description = "copter, plane, rover, boat or sub (default: ${DEFAULT-VALUE}).")
     private VehicleKind simType;
+
+    @Option(names = "--sim-home", paramLabel = "LAT,LON[,ALT]", converter = Converters.Home.class,
+            description = "With --sim: home of the first simulated vehicle, the others 10 m apart to the east; ALT in metres "
+                    + "above sea level, 0 if left out (default: 40.444233,-7.375234,820).")
+    private Position simHome;
+
+    @Option(names = "--sim-dive-silence", paramLabel = "METRES",
+            description = "With --sim and --sim-type sub: a sub deeper than this below the surface sends and hears nothing, "
+                    + "as its radio under water, until it is shallower again (default: always heard).")
+    private Double simDiveSilence;
 
     @Option(names = "--speedup", paramLabel = "X", defaultValue = "1",
             description = "With --sim: run time X times faster than real time (default: ${DEFAULT-VALUE}).")
@@ -241,6 +253,11 @@ final class RunCommand implements Callable<Integer> {
                 throw new ParameterException(spec.commandLine(), option + " needs --sim: only simulated vehicles carry simulated sensors and cameras");
             }
         }
+        for (String option : List.of("--sim-home", "--sim-dive-silence")) {
+            if (sim == 0 && spec.commandLine().getParseResult().hasMatchedOption(option)) {
+                throw new ParameterException(spec.commandLine(), option + " needs --sim: it sets up the simulated fleet");
+            }
+        }
         if (webTiles != null && web == null) {
             throw new ParameterException(spec.commandLine(), "--web-tiles needs --web");
         }
@@ -307,11 +324,16 @@ final class RunCommand implements Callable<Integer> {
 
     /** The in-process fleet the options describe, sending to these ground station ports. */
     SimFleet.Config fleetConfig(List<InetSocketAddress> ports, FaultModel faultModel) {
+        SimOptions options = SimOptions.DEFAULT.withDiveSilence(
+                DiveSilence.metres(spec.commandLine(), "--sim-dive-silence", simDiveSilence, "--sim-type", simType));
         SimFleet.Config config;
         try {
-            config = SimFleet.Config.of(sim, simType, ports).withSigningKey(key).withFaults(faultModel);
+            config = SimFleet.Config.of(sim, simType, ports).withSigningKey(key).withFaults(faultModel).withOptions(options);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), "--sim " + sim + ": " + e.getMessage());
+        }
+        if (simHome != null) {
+            config = config.withHome(simHome);
         }
         return config.withEquipment(new EquipmentOptions(EquipmentOptions.OptionNames.RUN, simSensors, simCameras, simConfig)
                 .equipment(spec.commandLine(), config.firstSysid(), config.highestSysid()));

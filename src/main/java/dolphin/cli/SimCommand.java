@@ -41,12 +41,18 @@ final class SimCommand implements Callable<Integer> {
     private List<LinkUrl> links = new ArrayList<>();
 
     @Option(names = "--type", paramLabel = "TYPE", converter = Converters.VehicleKindConverter.class, defaultValue = "copter",
-            description = "copter, plane or rover (default: ${DEFAULT-VALUE}).")
+            description = "copter, plane, rover, boat or sub (default: ${DEFAULT-VALUE}).")
     private VehicleKind type;
 
-    @Option(names = "--home", paramLabel = "LAT,LON,ALT", converter = Converters.Home.class,
-            description = "Home of the first vehicle, the others 10 m apart to the east (default: 40.444233,-7.375234,820).")
+    @Option(names = "--home", paramLabel = "LAT,LON[,ALT]", converter = Converters.Home.class,
+            description = "Home of the first vehicle, the others 10 m apart to the east; ALT in metres above sea level, 0 if "
+                    + "left out (default: 40.444233,-7.375234,820).")
     private Position home;
+
+    @Option(names = "--dive-silence", paramLabel = "METRES",
+            description = "With --type sub: a sub deeper than this below the surface sends and hears nothing, as its radio "
+                    + "under water, until it is shallower again (default: always heard).")
+    private Double diveSilence;
 
     @Option(names = "--first-sysid", paramLabel = "N", defaultValue = "1", description = "System id of the first vehicle.")
     private int firstSysid;
@@ -118,10 +124,12 @@ final class SimCommand implements Callable<Integer> {
             }
             gcs.add(url.address());
         }
+        SimOptions options = SimOptions.DEFAULT.withWarmup(warmup).withDrain(drain)
+                .withDiveSilence(DiveSilence.metres(spec.commandLine(), "--dive-silence", diveSilence, "--type", type));
         SimFleet.Config config;
         try {
             config = new SimFleet.Config(count, type, home != null ? home : SimFleet.Config.DEFAULT_HOME, SimFleet.Config.DEFAULT_SPACING,
-                    firstSysid, gcs, SimOptions.DEFAULT.withWarmup(warmup).withDrain(drain), key, faultModel, SimEquipment.NONE);
+                    firstSysid, gcs, options, key, faultModel, SimEquipment.NONE);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }

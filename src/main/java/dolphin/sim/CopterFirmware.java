@@ -52,8 +52,8 @@ final class CopterFirmware implements Firmware {
     }
 
     @Override
-    public int rtlMode() {
-        return COPTER_MODE.COPTER_MODE_RTL;
+    public OptionalInt rtlMode() {
+        return OptionalInt.of(COPTER_MODE.COPTER_MODE_RTL);
     }
 
     @Override
@@ -155,8 +155,8 @@ final class CopterFirmware implements Firmware {
 
     /** ModeAuto::verify_nav_wp and verify_loiter_time, once the hold is over. */
     @Override
-    public Optional<String> completionText(int seq) {
-        return Optional.of("Reached command #" + seq);
+    public Optional<String> completionText(MissionItem item) {
+        return Optional.of("Reached command #" + item.seq());
     }
 
     /** ModeAuto::exit_mission: hovers where it is in AUTO; on the ground it disarms. */

@@ -13,6 +13,8 @@ import java.util.function.Consumer;
  * has landed or is disarmed where it touches. Over the ground it moves with a velocity that changes
  * at most at its firmware's acceleration (none given: it is at its speed at once, as a plane here),
  * so it gathers speed, brakes for a point it stops at and overshoots one it turns back from.
+ * A submarine's craft moves under the surface instead ({@link #dive}): the home's height is then
+ * the water's surface, which it never rises above, and it has no ground to touch.
  */
 final class Craft {
 
@@ -124,6 +126,26 @@ final class Craft {
         double dz = Math.max(-performance.sink() * dt, Math.min(performance.climb() * dt, t.hae() - position.hae()));
         Position p = position.displace(step[0], step[1], 0);
         moveTo(p.atHeight(position.hae() + dz), dt);
+    }
+
+    /**
+     * Under water towards {@code t}: horizontally as {@link #fly(Position, double, double, double)},
+     * vertically at the climb or sink rate, and never above the surface (the home's height), however
+     * high {@code t} lies.
+     */
+    void dive(Position t, double endSpeed, double within, double dt) {
+        double[] ned = position.displacementTo(t);
+        double[] step = horizontal(ned[0], ned[1], endSpeed, endSpeed > 0 ? within : 0, false, dt);
+        double gap = t.hae() - position.hae();
+        // the last step ends on the target's height itself, so a sub sent to the surface is at depth 0, not a rounding below it
+        double hae = gap > performance.climb() * dt ? position.hae() + performance.climb() * dt
+                : gap < -performance.sink() * dt ? position.hae() - performance.sink() * dt : t.hae();
+        position = position.displace(step[0], step[1], 0).atHeight(Math.min(ground, hae));
+    }
+
+    /** How far below the surface (the home's height) it is; 0 at or above it. */
+    double depth() {
+        return Math.max(0, ground - position.hae());
     }
 
     /** Along the ground to stop at {@code t}, whose height does not matter. */

@@ -7,10 +7,11 @@ import java.util.Optional;
 import java.util.OptionalInt;
 
 /**
- * What the simulated ArduCopter, ArduPlane and ArduRover do differently: identity, modes and
- * default streams; speeds and radii; the arming rules; how each one takes off, reaches a point,
- * holds, lands, returns home and ends a mission; and what it reports of being on the ground.
- * {@link SimVehicle} and {@link MissionFlight} ask their vehicle's firmware and never test its kind.
+ * What the simulated ArduCopter, ArduPlane, ArduRover and ArduSub do differently: identity, modes and
+ * default streams; speeds and radii; the arming and mode rules; which mission items it starts; how
+ * each one takes off, reaches a point, holds, lands, returns home and ends a mission; and what it
+ * reports of being on the ground. {@link SimVehicle} and {@link MissionFlight} ask their vehicle's
+ * firmware and never test its kind.
  */
 interface Firmware {
 
@@ -24,10 +25,19 @@ interface Firmware {
 
     int autoMode();
 
-    int rtlMode();
+    /** Its RTL mode, which a fence breach and MAV_CMD_NAV_RETURN_TO_LAUNCH switch to; empty for ArduSub, which has none. */
+    OptionalInt rtlMode();
 
     /** The mode MAV_CMD_NAV_LAND switches to; empty when the firmware does not take that command. */
     OptionalInt landMode();
+
+    /**
+     * The STATUSTEXT (WARNING) with which it refuses to enter {@code mode}, given whether it has a
+     * position estimate and a mission; empty if it enters it (as far as the firmware's mode rules go).
+     */
+    default Optional<String> modeRefusal(int mode, boolean located, boolean missionPresent) {
+        return Optional.empty();
+    }
 
     /** The rate of the streams it sends before anyone asks, per second; 0 for none. */
     double defaultStreamHz();
@@ -36,6 +46,16 @@ interface Firmware {
 
     /** The STATUSTEXT with which it refuses to arm in {@code mode}; empty if it arms there. */
     Optional<String> armRefusal(int mode);
+
+    /** Whether it refuses to arm without a position estimate ("PreArm: Need Position Estimate", repeated while disarmed). */
+    default boolean needsPositionToArm() {
+        return true;
+    }
+
+    /** Whether a disarm (unless forced) is refused while it flies ("Disarm: vehicle is flying"). */
+    default boolean disarmsOnlyLanded() {
+        return true;
+    }
 
     /** Said on arming. */
     String armedText();
@@ -54,6 +74,22 @@ interface Firmware {
      * the DO_JUMP counts at zero, the mission's state kept), given whether it is in AUTO.
      */
     boolean resetsMissionOnDisarm(boolean inAuto);
+
+    /**
+     * Disarmed in AUTO, it runs its mission through at once without moving: each nav item complete
+     * as soon as it starts (ArduSub). Otherwise a disarmed vehicle's mission waits at its nav item.
+     */
+    default boolean runsMissionDisarmed() {
+        return false;
+    }
+
+    /**
+     * What it does instead of starting a nav item (its frame, its command): the refusal's texts, and
+     * whether the mission then skips to the next item or stops; empty when it starts the item.
+     */
+    default Optional<NavRefusal> navRefusal(MissionItem item) {
+        return Optional.empty();
+    }
 
     /** How close a NAV_WAYPOINT counts as reached. */
     double acceptanceRadius(MissionItem waypoint);
@@ -79,14 +115,19 @@ interface Firmware {
     /** NAV_LAND at {@code over} (null: where it is), and the LAND mode. */
     Manoeuvre landing(Craft craft, Position over);
 
+    /** What it does when the manoeuvre of its LAND mode is over: landed, it disarms. */
+    default void landModeDone(MissionFlight.Body body) {
+        body.disarm();
+    }
+
     /** RTL, as a mode or as NAV_RETURN_TO_LAUNCH in a mission. */
     Manoeuvre returnHome(Craft craft, Position home, boolean asMissionItem);
 
     /** The STATUSTEXT on arriving at waypoint {@code seq}, {@code distance} metres from it. */
     Optional<String> arrivalText(int seq, double distance, double holdSeconds);
 
-    /** The STATUSTEXT when waypoint (or LOITER_TIME) {@code seq} is complete. */
-    Optional<String> completionText(int seq);
+    /** The STATUSTEXT when a waypoint (or LOITER_TIME) is complete. */
+    Optional<String> completionText(MissionItem item);
 
     /** What the vehicle does when its mission is over. */
     void missionComplete(MissionFlight.Body body);

@@ -11,6 +11,7 @@ import dolphin.core.Position;
 import dolphin.mission.model.MissionItem;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.Set;
 import java.util.function.Supplier;
 
@@ -19,9 +20,10 @@ import java.util.function.Supplier;
  * clock time, by AP_Mission's rules: each item started says so ("Mission: 3 WP"); a nav item runs
  * until it completes; the DO items after it run when it does, in the same loop, so their
  * MISSION_ITEM_REACHED coalesces with its; CONDITION_DELAY runs beside the next nav item; DO_JUMP
- * loops. Where the mission stands and whether it runs is its {@link MissionCursor}. How the vehicle
- * takes off, reaches a point, holds, lands, returns and ends the mission, and whether it waits for
- * MISSION_START or resets its mission when disarmed, is its {@link Firmware}'s.
+ * loops. Where the mission stands and whether it runs is its {@link MissionCursor}. Which nav items
+ * the vehicle starts, how it takes off, reaches a point, holds, lands, returns and ends the mission,
+ * and whether it waits for MISSION_START, runs its mission disarmed or resets it when disarmed, is
+ * its {@link Firmware}'s.
  */
 final class MissionFlight {
 
@@ -233,17 +235,42 @@ final class MissionFlight {
 
     /**
      * Outside AUTO a running mission's items are started where it was set (AP_Mission starts them
-     * whatever the mode) and said so; they run when AUTO resumes them.
+     * whatever the mode) and said so; they run when AUTO resumes them. A nav item the firmware refuses
+     * is passed over for the next one at once (AP_Mission::advance_current_nav_cmd), or stops the
+     * mission; with none left the mission is complete.
      */
     private void sayStarted() {
         if (!cursor.running() || body.mode() == firmware.autoMode()) {
             return;
         }
-        for (int i = Math.min(cursor.next(), cursor.nav()); i <= cursor.nav(); i++) {
-            if (store.get(i).command() != MAV_CMD.MAV_CMD_DO_JUMP) {
-                announceStart(store.get(i));
+        int from = Math.min(cursor.next(), cursor.nav());
+        while (true) {
+            for (int i = from; i <= cursor.nav(); i++) {
+                if (store.get(i).command() != MAV_CMD.MAV_CMD_DO_JUMP) {
+                    announceStart(store.get(i));
+                }
+            }
+            Optional<NavRefusal> refusal = refusal(store.get(cursor.nav()));
+            if (refusal.isEmpty()) {
+                return;
+            }
+            if (refusal.get().stopsMission()) {
+                cursor.stop();
+                return;
+            }
+            from = cursor.nav() + 1;
+            if (!cursor.setCurrent(from)) {
+                finish();
+                return;
             }
         }
+    }
+
+    /** The firmware's refusal to start a nav item, said: empty when it starts it. */
+    private Optional<NavRefusal> refusal(MissionItem navItem) {
+        Optional<NavRefusal> refusal = firmware.navRefusal(navItem);
+        refusal.ifPresent(r -> r.texts().forEach(t -> body.text(MAV_SEVERITY.MAV_SEVERITY_WARNING, t)));
+        return refusal;
     }
 
     /**
@@ -264,7 +291,8 @@ final class MissionFlight {
 
     /**
      * Disarmed: what the firmware resets (AP_Arming_*::disarm). A copter's mission that runs in AUTO
-     * starts over at once (restartAfterDisarm).
+     * starts over at once (restartAfterDisarm); one that runs its mission disarmed (ArduSub) runs it
+     * through from the first item in the next tick.
      */
     void disarmed() {
         autoArmed = false;
@@ -273,7 +301,7 @@ final class MissionFlight {
         if (!firmware.resetsMissionOnDisarm(inAuto)) {
             return;
         }
-        if (inAuto && cursor.running()) {
+        if (inAuto && cursor.running() && !firmware.runsMissionDisarmed()) {
             restartDue = true;
         } else {
             cursor.reset();
@@ -286,10 +314,10 @@ final class MissionFlight {
         if (mode == firmware.autoMode()) {
             auto(dt);
         } else if (body.armed()) {
-            if (mode == firmware.rtlMode()) {
-                modeStep(dt, () -> firmware.returnHome(body.craft(), body.home(), false));
+            if (firmware.rtlMode().isPresent() && mode == firmware.rtlMode().getAsInt()) {
+                modeStep(dt, () -> firmware.returnHome(body.craft(), body.home(), false), this::disarmIfLanded);
             } else if (firmware.landMode().isPresent() && mode == firmware.landMode().getAsInt()) {
-                modeStep(dt, () -> firmware.landing(body.craft(), null));
+                modeStep(dt, () -> firmware.landing(body.craft(), null), () -> firmware.landModeDone(body));
             }
         }
         if (restartDue) {
@@ -328,12 +356,19 @@ final class MissionFlight {
         }
     }
 
-    /** RTL or LAND mode: a manoeuvre that, if it ends on the ground, ends with a disarm. */
-    private void modeStep(double dt, Supplier<Manoeuvre> make) {
+    /** RTL or LAND mode: a manoeuvre, and what the vehicle does once it is over. */
+    private void modeStep(double dt, Supplier<Manoeuvre> make, Runnable done) {
         if (modeManoeuvre == null) {
             modeManoeuvre = make.get();
         }
-        if (modeManoeuvre.step(dt) && modeManoeuvre.endsOnGround()) {
+        if (modeManoeuvre.step(dt)) {
+            done.run();
+        }
+    }
+
+    /** An RTL that ends on the ground ends with a disarm. */
+    private void disarmIfLanded() {
+        if (modeManoeuvre != null && modeManoeuvre.endsOnGround()) {
             body.disarm();
         }
     }
@@ -341,7 +376,9 @@ final class MissionFlight {
     /**
      * One tick of AUTO. Disarmed, or a copter armed on the ground without MISSION_START, it does not
      * move, but its mission runs: the DO items before the nav item run and the nav item starts. Such
-     * a copter disarms itself after DISARM_DELAY.
+     * a copter disarms itself after DISARM_DELAY. A firmware that runs its mission disarmed (ArduSub)
+     * completes each nav item as it starts, but for LOITER_UNLIM, which never completes. A nav item
+     * the firmware refuses is skipped, or stops the mission.
      */
     private void auto(double dt) {
         if (!cursor.running() || store.count() <= 1) {
@@ -384,8 +421,22 @@ final class MissionFlight {
                 cursor.next(item.seq() + 1);
                 continue;
             }
-            if (active == null) {
-                begin(item);
+            if (active == null && !begin(item)) {
+                if (!cursor.running()) {
+                    return;
+                }
+                continue;
+            }
+            if (!body.armed() && firmware.runsMissionDisarmed()) {
+                if (item.command() == MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM) {
+                    return;
+                }
+                body.flush(); // AP_Mission verifies an item in the loop after the one that started it
+                firmware.completionText(item).ifPresent(s -> body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, s));
+                body.reached(item.seq());
+                cursor.next(item.seq() + 1);
+                dropActive();
+                continue;
             }
             if (waiting || !step(item, dt)) {
                 return;
@@ -507,14 +558,27 @@ final class MissionFlight {
         body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Mission: " + item.seq() + " " + CommandNames.of(item.command()));
     }
 
-    private void begin(MissionItem item) {
-        active = item;
+    /**
+     * Starts a nav item (AP_Mission::start_command): says so, then the firmware starts it or refuses
+     * it. False when refused: the mission is then past the item, or stopped at it.
+     */
+    private boolean begin(MissionItem item) {
         cursor.nav(item.seq());
+        announceStart(item);
+        Optional<NavRefusal> refusal = refusal(item);
+        if (refusal.isPresent()) {
+            if (refusal.get().stopsMission()) {
+                cursor.stop();
+            } else {
+                cursor.next(item.seq() + 1);
+            }
+            return false;
+        }
+        active = item;
         exitSpeed = exitSpeed(item);
         phase = Phase.APPROACH;
         timer = 0;
         modeManoeuvre = null;
-        announceStart(item);
         Craft craft = body.craft();
         manoeuvre = switch (item.command()) {
             case MAV_CMD.MAV_CMD_NAV_TAKEOFF -> firmware.takeoff(craft, altitude(item));
@@ -523,6 +587,7 @@ final class MissionFlight {
             case MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH -> firmware.returnHome(craft, body.home(), true);
             default -> null;
         };
+        return true;
     }
 
     /** One tick of the current nav item; true when it is complete. */
@@ -569,7 +634,7 @@ final class MissionFlight {
         if (timer < Math.max(0, holdSeconds)) {
             return false;
         }
-        firmware.completionText(item.seq()).ifPresent(s -> body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, s));
+        firmware.completionText(item).ifPresent(s -> body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, s));
         return true;
     }
 

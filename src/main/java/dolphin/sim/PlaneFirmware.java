@@ -45,8 +45,8 @@ final class PlaneFirmware implements Firmware {
     }
 
     @Override
-    public int rtlMode() {
-        return PLANE_MODE.PLANE_MODE_RTL;
+    public OptionalInt rtlMode() {
+        return OptionalInt.of(PLANE_MODE.PLANE_MODE_RTL);
     }
 
     @Override
@@ -140,7 +140,7 @@ final class PlaneFirmware implements Firmware {
     }
 
     @Override
-    public Optional<String> completionText(int seq) {
+    public Optional<String> completionText(MissionItem item) {
         return Optional.empty();
     }
 
@@ -149,7 +149,7 @@ final class PlaneFirmware implements Firmware {
     public void missionComplete(MissionFlight.Body body) {
         if (body.armed()) {
             body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Mission complete, changing mode to RTL");
-            body.switchMode(rtlMode());
+            body.switchMode(PLANE_MODE.PLANE_MODE_RTL);
         }
     }
 

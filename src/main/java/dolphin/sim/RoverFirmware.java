@@ -3,7 +3,6 @@ package dolphin.sim;
 import com.MAVLink.enums.MAV_LANDED_STATE;
 import com.MAVLink.enums.MAV_SEVERITY;
 import com.MAVLink.enums.MAV_STATE;
-import com.MAVLink.enums.MAV_TYPE;
 import com.MAVLink.enums.ROVER_MODE;
 import dolphin.core.Position;
 import dolphin.mavlink.VehicleFamily;
@@ -18,15 +17,24 @@ import java.util.OptionalInt;
  * nav item, the last one stopped on; it arms in any mode and drives a
  * mission as soon as it is armed in AUTO; a take-off is done at once and a landing is a waypoint;
  * at the end of a mission it stops and stays in AUTO (MIS_DONE_BEHAVE 0, hold). Like a copter, no
- * streams until asked. It does not report a landed state (ArduRover has none: UNDEFINED).
+ * streams until asked. It does not report a landed state (ArduRover has none: UNDEFINED). The same
+ * firmware drives a boat (ArduRover with FRAME_CLASS 2, SITL's motorboat), which differs only in the
+ * MAV_TYPE of its heartbeat.
  */
 final class RoverFirmware implements Firmware {
 
     private static final Performance PERFORMANCE = new Performance(5, 0, 0, 3, 2, 1, 2.5);
 
+    private final int mavType;
+
+    /** ArduRover announcing itself as {@code mavType}: MAV_TYPE_GROUND_ROVER, or MAV_TYPE_SURFACE_BOAT for a boat. */
+    RoverFirmware(int mavType) {
+        this.mavType = mavType;
+    }
+
     @Override
     public int mavType() {
-        return MAV_TYPE.MAV_TYPE_GROUND_ROVER;
+        return mavType;
     }
 
     @Override
@@ -45,8 +53,8 @@ final class RoverFirmware implements Firmware {
     }
 
     @Override
-    public int rtlMode() {
-        return ROVER_MODE.ROVER_MODE_RTL;
+    public OptionalInt rtlMode() {
+        return OptionalInt.of(ROVER_MODE.ROVER_MODE_RTL);
     }
 
     @Override
@@ -146,7 +154,7 @@ final class RoverFirmware implements Firmware {
     }
 
     @Override
-    public Optional<String> completionText(int seq) {
+    public Optional<String> completionText(MissionItem item) {
         return Optional.empty();
     }
 

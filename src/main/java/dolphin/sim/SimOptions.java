@@ -10,37 +10,53 @@ package dolphin.sim;
  * @param refuseModeChanges true makes every mode change fail
  * @param missionCapacity the most mission items (home included) the vehicle stores; a larger
  *        MISSION_COUNT is refused with NO_SPACE (ArduPilot's limit depends on its storage; 700 here)
+ * @param diveSilenceMetres deeper than this below the surface a sub sends and hears nothing, as its radio
+ *        under water; infinite (the default): always heard
  */
 public record SimOptions(double warmupSeconds, double drainPercentPerMinute, boolean messageIntervalSupported,
-                         boolean refuseModeChanges, int missionCapacity) {
+                         boolean refuseModeChanges, int missionCapacity, double diveSilenceMetres) {
 
     public static final int DEFAULT_MISSION_CAPACITY = 700;
-    public static final SimOptions DEFAULT = new SimOptions(0, 14, true, false, DEFAULT_MISSION_CAPACITY);
+    public static final SimOptions DEFAULT = new SimOptions(0, 14, true, false, DEFAULT_MISSION_CAPACITY,
+            Double.POSITIVE_INFINITY);
 
     public SimOptions(double warmupSeconds, double drainPercentPerMinute, boolean messageIntervalSupported,
                       boolean refuseModeChanges) {
-        this(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, DEFAULT_MISSION_CAPACITY);
+        this(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, DEFAULT_MISSION_CAPACITY,
+                Double.POSITIVE_INFINITY);
     }
 
     public SimOptions {
         if (missionCapacity < 1) {
             throw new IllegalArgumentException("the mission capacity must hold at least home, got " + missionCapacity);
         }
+        if (!(diveSilenceMetres >= 0)) {
+            throw new IllegalArgumentException("the dive silence must be a depth in metres, 0 or more, got " + diveSilenceMetres);
+        }
     }
 
     public SimOptions withWarmup(double seconds) {
-        return new SimOptions(seconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity);
+        return new SimOptions(seconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity,
+                diveSilenceMetres);
     }
 
     public SimOptions withDrain(double percentPerMinute) {
-        return new SimOptions(warmupSeconds, percentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity);
+        return new SimOptions(warmupSeconds, percentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity,
+                diveSilenceMetres);
     }
 
     public SimOptions withoutMessageInterval() {
-        return new SimOptions(warmupSeconds, drainPercentPerMinute, false, refuseModeChanges, missionCapacity);
+        return new SimOptions(warmupSeconds, drainPercentPerMinute, false, refuseModeChanges, missionCapacity, diveSilenceMetres);
     }
 
     public SimOptions withMissionCapacity(int items) {
-        return new SimOptions(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, items);
+        return new SimOptions(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, items,
+                diveSilenceMetres);
+    }
+
+    /** Subs deeper than {@code metres} below the surface are cut off. */
+    public SimOptions withDiveSilence(double metres) {
+        return new SimOptions(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity,
+                metres);
     }
 }

@@ -37,8 +37,8 @@ import java.util.function.Consumer;
 
 /**
  * One simulated ArduPilot vehicle: the identity, link and command behaviour of its firmware
- * ({@link VehicleKind}, whose {@link Firmware} says what differs between ArduCopter, ArduPlane and
- * ArduRover). Driven by its {@link SimFleet}'s one thread; the public methods are synchronized, so
+ * ({@link VehicleKind}, whose {@link Firmware} says what differs between ArduCopter, ArduPlane,
+ * ArduRover and ArduSub). Driven by its {@link SimFleet}'s one thread; the public methods are synchronized, so
  * tests may read and change it from other threads.
  */
 public final class SimVehicle {
@@ -225,9 +225,11 @@ public final class SimVehicle {
         lists.tick(now);
         flight.tick(dt);
         watchFence(now);
-        estimate.periodicReport(now, armed).ifPresent(s -> outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, s));
+        if (firmware.needsPositionToArm()) {
+            estimate.periodicReport(now, armed).ifPresent(s -> outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, s));
+        }
         outbox.flush();
-        if (silent) {
+        if (cutOff()) {
             return;
         }
         // streams due with the heartbeat go out just before it, as SITL's do
@@ -258,8 +260,11 @@ public final class SimVehicle {
                 outbox.text(MAV_SEVERITY.MAV_SEVERITY_NOTICE, "Polygon fence breached");
                 outbox.flush();
                 sendFenceStatus();
-                changeMode(firmware.rtlMode());
-                announceMode();
+                // ArduSub takes no action on a breach (Sub::fence_checks_async): it has no RTL
+                if (firmware.rtlMode().isPresent()) {
+                    changeMode(firmware.rtlMode().getAsInt());
+                    announceMode();
+                }
             }
             case CLEARED -> {
                 outbox.text(MAV_SEVERITY.MAV_SEVERITY_NOTICE, "Fence breach cleared");
@@ -270,9 +275,9 @@ public final class SimVehicle {
         }
     }
 
-    /** FENCE_STATUS at once on a change, unless the vehicle is silent (its telemetry lost). */
+    /** FENCE_STATUS at once on a change, unless the vehicle is cut off (its telemetry lost). */
     private void sendFenceStatus() {
-        if (!silent) {
+        if (!cutOff()) {
             out.accept(fenceGuard.status());
         }
     }
@@ -283,7 +288,7 @@ public final class SimVehicle {
     }
 
     synchronized void handle(MAVLinkMessage m, long now) {
-        if (silent) {
+        if (cutOff()) {
             return;
         }
         if (m instanceof msg_command_long c && c.target_system == sysid) {
@@ -333,8 +338,8 @@ public final class SimVehicle {
                 yield MAV_RESULT.MAV_RESULT_ACCEPTED;
             }
             case MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT -> flight.setCurrentCommand((int) c.param1, c.param2 == 1);
-            case MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH -> setModeIfValid(firmware.rtlMode()) ? MAV_RESULT.MAV_RESULT_ACCEPTED
-                    : MAV_RESULT.MAV_RESULT_FAILED;
+            case MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH -> firmware.rtlMode().isEmpty() ? MAV_RESULT.MAV_RESULT_UNSUPPORTED
+                    : setModeIfValid(firmware.rtlMode().getAsInt()) ? MAV_RESULT.MAV_RESULT_ACCEPTED : MAV_RESULT.MAV_RESULT_FAILED;
             case MAV_CMD.MAV_CMD_NAV_LAND -> firmware.landMode().isPresent() && setModeIfValid(firmware.landMode().getAsInt())
                     ? MAV_RESULT.MAV_RESULT_ACCEPTED : MAV_RESULT.MAV_RESULT_UNSUPPORTED;
             default -> MAV_RESULT.MAV_RESULT_UNSUPPORTED;
@@ -389,7 +394,7 @@ public final class SimVehicle {
             outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, refusal.get());
             return MAV_RESULT.MAV_RESULT_FAILED;
         }
-        if (!estimate.ready(now)) {
+        if (firmware.needsPositionToArm() && !estimate.ready(now)) {
             outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, PositionEstimate.FAILURE);
             return MAV_RESULT.MAV_RESULT_FAILED;
         }
@@ -399,7 +404,7 @@ public final class SimVehicle {
     }
 
     private int disarm(float force) {
-        if (armed && !craft.onGround() && !craft.contact() && (int) force != FORCE_DISARM) {
+        if (armed && firmware.disarmsOnlyLanded() && !craft.onGround() && !craft.contact() && (int) force != FORCE_DISARM) {
             outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, "Disarm: vehicle is flying");
             return MAV_RESULT.MAV_RESULT_FAILED;
         }
@@ -419,6 +424,13 @@ public final class SimVehicle {
     private boolean setModeIfValid(long custom) {
         if (!firmware.family().modes().containsKey(custom) || options.refuseModeChanges()) {
             return false;
+        }
+        if (custom != mode) {
+            var refusal = firmware.modeRefusal((int) custom, estimate.ready(lastTick), missionStore.count() > 1);
+            if (refusal.isPresent()) {
+                outbox.text(MAV_SEVERITY.MAV_SEVERITY_WARNING, refusal.get());
+                return false;
+            }
         }
         if (custom == firmware.autoMode() && mode != firmware.autoMode() && !flight.autoAllowed()) {
             outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, "Auto: Missing Takeoff Cmd");
@@ -517,9 +529,17 @@ public final class SimVehicle {
     }
 
     private void send(MAVLinkMessage m) {
-        if (!silent) {
+        if (!cutOff()) {
             out.accept(m);
         }
+    }
+
+    /**
+     * Sends nothing and hears nothing: silenced, or deeper than the dive silence, as a sub's radio
+     * is under water.
+     */
+    private boolean cutOff() {
+        return silent || craft.depth() > options.diveSilenceMetres();
     }
 
     /** The mission transfer's view of this vehicle. */

@@ -1,5 +1,6 @@
 package dolphin.sim;
 
+import com.MAVLink.enums.MAV_TYPE;
 import dolphin.mavlink.VehicleFamily;
 import java.util.Locale;
 
@@ -7,7 +8,10 @@ import java.util.Locale;
 public enum VehicleKind {
     COPTER(new CopterFirmware()),
     PLANE(new PlaneFirmware()),
-    ROVER(new RoverFirmware());
+    ROVER(new RoverFirmware(MAV_TYPE.MAV_TYPE_GROUND_ROVER)),
+    /** ArduRover's motorboat: a rover on the water. */
+    BOAT(new RoverFirmware(MAV_TYPE.MAV_TYPE_SURFACE_BOAT)),
+    SUB(new SubFirmware());
 
     private final Firmware firmware;
 
@@ -28,7 +32,10 @@ public enum VehicleKind {
             case "copter", "arducopter" -> COPTER;
             case "plane", "arduplane" -> PLANE;
             case "rover", "ardurover" -> ROVER;
-            default -> throw new IllegalArgumentException("unknown vehicle type '" + s + "': expected copter, plane or rover");
+            case "boat" -> BOAT;
+            case "sub", "ardusub" -> SUB;
+            default -> throw new IllegalArgumentException("unknown vehicle type '" + s
+                    + "': expected copter, plane, rover, boat or sub");
         };
     }
 }

@@ -2,7 +2,10 @@ package dolphin.cli
 
 import dolphin.mission.flight.MissionExecutorConfig
 import dolphin.mission.transfer.MissionTransferConfig
+import dolphin.core.Position
 import dolphin.sim.FaultModel
+import dolphin.sim.SimFleet
+import dolphin.sim.VehicleKind
 import java.time.Duration
 import picocli.CommandLine
 import spock.lang.Specification
@@ -40,6 +43,49 @@ class RunCommandSpec extends Specification {
         r.out =~ /vehicle \{ 1 \}: battery 100 %, position \(40\.444233°, -7\.375234°, 820\.000\)/
         r.out =~ /vehicle \{ 2 \}: battery 100 %, position \(40\.444233°, -7\.375116°, 820\.000\)/
         r.out.contains("${EXAMPLE}: completed")
+    }
+
+    def "a simulated #type at --sim-home is picked as a #dolphinType and starts there, at the surface"() {
+        given:
+        def script = File.createTempFile('where', '.dolphin')
+        script.deleteOnExit()
+        script.text = """v = pick { type '${dolphinType}'; timeout 30.seconds }
+message "${dolphinType}: position \${position(v)}"
+release v
+"""
+
+        when:
+        def r = dolphin('run', script.path, '--sim', '1', '--sim-type', type, '--sim-home', '38.43462,-8.86118', '--speedup', '5')
+
+        then:
+        r.code == 0
+        r.out.contains("${dolphinType}: position (38.434620°, -8.861180°, 0.000)")
+
+        where:
+        type   || dolphinType
+        'sub'  || 'UUV'
+        'boat' || 'USV'
+    }
+
+    def "--sim-home and --sim-dive-silence make the in-process fleet's home and its subs' dive silence"() {
+        given:
+        def port = new InetSocketAddress('127.0.0.1', 14560)
+        def command = parsed(EXAMPLE, '--sim', '2', '--sim-type', 'sub', '--sim-home', '38.43462,-8.86118', '--sim-dive-silence', '4.5')
+        def plain = parsed(EXAMPLE, '--sim', '2', '--sim-type', 'ardusub')
+
+        when:
+        def config = command.fleetConfig([port], command.faultModel())
+        def defaults = plain.fleetConfig([port], plain.faultModel())
+
+        then:
+        config.kind() == VehicleKind.SUB
+        config.home() == Position.fromDegrees(38.43462, -8.86118, 0)
+        config.options().diveSilenceMetres() == 4.5d
+
+        and: 'without them, the report base and subs always heard'
+        defaults.kind() == VehicleKind.SUB
+        defaults.home() == SimFleet.Config.DEFAULT_HOME
+        defaults.options().diveSilenceMetres() == Double.POSITIVE_INFINITY
     }
 
     def "the example runs over a lossy simulated link"() {
@@ -211,7 +257,15 @@ class RunCommandSpec extends Specification {
         ['run', EXAMPLE, '--link', 'carrier-pigeon:1']             | "unknown link kind 'carrier-pigeon'"
         ['run', EXAMPLE, '--link', 'udpin:0.0.0.0:99999']          | 'the port must be between 0 and 65535'
         ['run', EXAMPLE, '--speedup', '10']                        | '--speedup needs --sim'
-        ['run', EXAMPLE, '--sim', '1', '--sim-type', 'submarine']  | "unknown vehicle type 'submarine'"
+        ['run', EXAMPLE, '--sim', '1', '--sim-type', 'hovercraft'] | "unknown vehicle type 'hovercraft': expected copter, plane, rover, boat or sub"
+        ['run', EXAMPLE, '--sim-home', '38.43462,-8.86118']        | '--sim-home needs --sim: it sets up the simulated fleet'
+        ['run', EXAMPLE, '--sim-dive-silence', '5']                | '--sim-dive-silence needs --sim'
+        ['run', EXAMPLE, '--sim', '1', '--sim-home', '38.43462']   | "home '38.43462': expected LAT,LON[,ALT], e.g. 38.43462,-8.86118"
+        ['run', EXAMPLE, '--sim', '1', '--sim-home', '38.4,-8.8,deep'] | "home '38.4,-8.8,deep': expected LAT,LON[,ALT]"
+        ['run', EXAMPLE, '--sim', '1', '--sim-home', '38.4,-188']  | "home '38.4,-188': latitude must be in [-90, 90], longitude in [-180, 180]"
+        ['run', EXAMPLE, '--sim', '1', '--sim-dive-silence', '5']  | '--sim-dive-silence needs --sim-type sub: only a sub dives, got --sim-type copter'
+        ['run', EXAMPLE, '--sim', '1', '--sim-type', 'sub', '--sim-dive-silence', '-2'] | '--sim-dive-silence must be a depth in metres, 0 or more, got -2.0'
+        ['run', EXAMPLE, '--sim', '1', '--sim-type', 'sub', '--sim-dive-silence', 'deep'] | "Invalid value for option '--sim-dive-silence': 'deep' is not a double"
         ['run', EXAMPLE, '--sim', '600', '--link', 'udpin:127.0.0.1:0'] | '--sim 600: 600 vehicles from system id 1 need at least 3 links'
         ['run', EXAMPLE, '--status', 'fancy']                      | "Invalid value for option '--status'"
         ['run', EXAMPLE, '--forward', 'udpout:nowhere']            | "bad connection string 'udpout:nowhere': expected HOST:PORT"
@@ -229,6 +283,8 @@ class RunCommandSpec extends Specification {
         ['sim', '--count', '300']                                  | '300 vehicles from system id 1 need at least 2 links'
         ['sim', '--link', 'udpin:0.0.0.0:14559']                   | '--link for sim must be udpout:HOST:PORT'
         ['sim', '--home', '95,0,0']                                | 'latitude must be in [-90, 90]'
+        ['sim', '--dive-silence', '5']                             | '--dive-silence needs --type sub: only a sub dives, got --type copter'
+        ['sim', '--type', 'sub', '--dive-silence', '-0.5']         | '--dive-silence must be a depth in metres, 0 or more, got -0.5'
         ['run', EXAMPLE, '--loss', '0.1']                          | '--loss needs --sim: link faults are simulated'
         ['run', EXAMPLE, '--delay', '100']                         | '--delay needs --sim'
         ['run', EXAMPLE, '--fault-seed', '3']                      | '--fault-seed needs --sim'

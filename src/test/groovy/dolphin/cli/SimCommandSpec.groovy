@@ -1,6 +1,8 @@
 package dolphin.cli
 
+import dolphin.core.Position
 import dolphin.sim.FaultModel
+import dolphin.sim.VehicleKind
 import picocli.CommandLine
 import spock.lang.Specification
 import spock.lang.Timeout
@@ -28,6 +30,18 @@ class SimCommandSpec extends Specification {
         expect:
         parsed().fleetConfig().faults() == FaultModel.NONE
         parsed('--fault-seed', '9').fleetConfig().faults().none()
+    }
+
+    def "--type sub with --home and --dive-silence: subs off Comporta at sea level, silent below 8 m; boats are ArduRover's"() {
+        when:
+        def config = parsed('--type', 'sub', '--home', '38.43462,-8.86118', '--dive-silence', '8').fleetConfig()
+
+        then:
+        config.kind() == VehicleKind.SUB
+        config.home() == Position.fromDegrees(38.43462, -8.86118, 0)
+        config.options().diveSilenceMetres() == 8d
+        parsed('--type', 'boat').fleetConfig().kind() == VehicleKind.BOAT
+        parsed('--home', '40.444233,-7.375234,820').fleetConfig().home() == Position.fromDegrees(40.444233, -7.375234, 820)
     }
 
     def "a bad link-fault value is a usage error naming the option and the value"() {

@@ -21,7 +21,8 @@ import groovy.transform.EqualsAndHashCode
  */
 class KeyFrames {
 
-    static final List<String> TEXTS = ['SIM Hit ground', 'Disarming motors', 'Mission complete, changing mode to RTL']
+    static final List<String> TEXTS = ['SIM Hit ground', 'Disarming motors', 'Mission complete, changing mode to RTL',
+                                       'Mode change failed: Auto requires position', 'Bad alt frame']
 
     @EqualsAndHashCode
     static class Event {

@@ -2,6 +2,7 @@ package dolphin.sim
 
 import com.MAVLink.Messages.MAVLinkMessage
 import com.MAVLink.minimal.msg_heartbeat
+import dolphin.core.Position
 
 import java.lang.reflect.Field
 import java.nio.file.Path
@@ -82,10 +83,10 @@ class Recording {
      * ground station's frames reach it at the recorded times, until the recording ends. The simulator
      * sends its heartbeat on the second of its boot, so it is booted up to a second earlier, at the
      * recorded heartbeat's phase: a heartbeat between two of the ground station's commands shows the
-     * vehicle's state only if SITL's did.
+     * vehicle's state only if SITL's did. Its home is SITL's {@code --home}: SimDriver.HOME, where the copter, plane and rover were recorded, unless given.
      */
-    List<MAVLinkMessage> replay(VehicleKind kind, SimOptions options) {
-        def driver = new SimDriver(kind, options, SimDriver.HOME, heartbeatPhaseNanos - 1_000_000_000L)
+    List<MAVLinkMessage> replay(VehicleKind kind, SimOptions options, Position home = SimDriver.HOME) {
+        def driver = new SimDriver(kind, options, home, heartbeatPhaseNanos - 1_000_000_000L)
         groundStation.each { sent ->
             driver.runTo(sent.bootNanos)
             driver.handle(sent.message, sent.message.sysid, sent.message.compid)

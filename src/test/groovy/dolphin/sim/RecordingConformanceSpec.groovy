@@ -1,5 +1,6 @@
 package dolphin.sim
 
+import dolphin.core.Position
 import java.nio.file.Files
 import java.nio.file.Path
 import spock.lang.Shared
@@ -16,7 +17,10 @@ import spock.lang.Specification
  * and after 15 s, both ending in a landing, a disarm and the mission started over; a fence breach
  * ending in RTL, the mission stopped, the copter still descending; a rover's square ending COMPLETE; a
  * plane's circuit ending in its own RTL; every mission command, then a second mission uploaded over
- * the first, which keeps its current item (docs/mavlink.md, "The simulated fleet and real ArduPilot").
+ * the first, which keeps its current item; a sub armed before its position estimate, refused AUTO
+ * until it had one, then three waypoints at 10 m depth, COMPLETE, and a disarm at depth that resets
+ * the mission; dolphin's AMSL items refused by a sub ("Bad alt frame"), on DO_SET_MISSION_CURRENT and
+ * again on AUTO, the mission COMPLETE at once (docs/mavlink.md, "The simulated fleet and real ArduPilot").
  */
 class RecordingConformanceSpec extends Specification {
 
@@ -31,6 +35,10 @@ class RecordingConformanceSpec extends Specification {
     @Shared
     SimOptions sitl = SimOptions.DEFAULT.withWarmup(41)
 
+    /** SITL's --home of the recordings not made at SimDriver.HOME: the subs dived off Comporta, at sea level. */
+    static final Map<String, Position> HOMES = ['sub-dive-mission' : Position.fromDegrees(38.43462, -8.86118, 0),
+                                                'sub-bad-alt-frame': Position.fromDegrees(38.43462, -8.86118, 0)]
+
     def setupSpec() {
         assert Files.isDirectory(DIRECTORY): "the SITL recordings are not at ${DIRECTORY.toAbsolutePath().normalize()}" 
     }
@@ -41,7 +49,7 @@ class RecordingConformanceSpec extends Specification {
         def real = KeyFrames.of(recorded.vehicle)
 
         when:
-        def simulated = KeyFrames.of(recorded.replay(kind, sitl))
+        def simulated = KeyFrames.of(recorded.replay(kind, sitl, HOMES.getOrDefault(recording, SimDriver.HOME)))
 
         then: 'the recording shows what this spec is about'
         inOrder(real.lines(), ending)
@@ -76,6 +84,14 @@ class RecordingConformanceSpec extends Specification {
                                                                'COMMAND_ACK command=224 result=0', 'MISSION_CURRENT seq=1 total=7 state=3',
                                                                'EXTENDED_SYS_STATE landed_state=3', 'MISSION_CURRENT seq=2 total=7 state=3',
                                                                'HEARTBEAT armed=1 mode=6']
+        'sub-dive-mission'            | VehicleKind.SUB    || ['HEARTBEAT armed=1 mode=19', 'COMMAND_ACK command=176 result=4',
+                                                               'STATUSTEXT Mode change failed: Auto requires position',
+                                                               'HEARTBEAT armed=1 mode=3', 'MISSION_CURRENT seq=1 total=3 state=3',
+                                                               'MISSION_ITEM_REACHED seq=3', 'MISSION_CURRENT seq=3 total=3 state=5',
+                                                               'STATUSTEXT Disarming motors', 'MISSION_CURRENT seq=0 total=3 state=5']
+        'sub-bad-alt-frame'           | VehicleKind.SUB    || ['MISSION_ACK type=0', 'COMMAND_ACK command=400 result=0',
+                                                               'COMMAND_ACK command=224 result=0', 'STATUSTEXT Bad alt frame',
+                                                               'COMMAND_ACK command=176 result=0', 'HEARTBEAT armed=1 mode=3']
     }
 
     /** Whether {@code expected} occur in {@code lines} in this order, others between them allowed. */
