@@ -23,7 +23,7 @@ class ExamplesSpec extends Specification {
     static final List<String> COVERED = [
             'two-drones-survey', 'listing2-single-vehicle', 'listing3-two-vehicles', 'listing4-keep-two-airborne',
             'operators', 'loiters', 'survey', 'camera', 'watch-onerror', 'first-flight', 'battery-and-position', 'fleet',
-            'fence', 'from-file', 'fire-watch']
+            'fence', 'from-file', 'fire-watch', 'listing1-uuv-surveys']
 
     @Shared
     Map<String, String> commandLines = [:]
@@ -211,6 +211,23 @@ class ExamplesSpec extends Specification {
 
     static double horizontal(Position a, Position b) {
         a.distanceTo(Position.fromDegrees(b.latitudeDegrees(), b.longitudeDegrees(), a.hae()))
+    }
+
+    @Timeout(100)
+    def "Listing 1: three subs with a side-scan sonar picked in the Comporta area, one survey each at 10 m, back at the surface: Done!"() {
+        when:
+        def r = run('listing1-uuv-surveys')
+
+        then:
+        r.code == 0
+        r.lines.any { it.startsWith('picked { 1 2 3 } from the free vehicles') }
+        ['survey1': 1, 'survey2': 2, 'survey3': 3].every { survey, n ->
+            ScriptLines.inOrder(r.lines, "mission ${survey} on vehicle ${n}: uploading 10 items".toString(),
+                    "mission ${survey} on vehicle ${n}: upload verified".toString(), "mission ${survey} on vehicle ${n}: armed".toString(),
+                    "mission ${survey} on vehicle ${n}: item 9 of 9 reached".toString(), "mission ${survey} on vehicle ${n}: done".toString())
+        }
+        r.lines.contains('Done!')
+        r.lines.last() == 'dsl-examples/listing1-uuv-surveys.dolphin: completed'
     }
 
     @Timeout(100)

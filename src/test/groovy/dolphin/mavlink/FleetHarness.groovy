@@ -34,8 +34,16 @@ class FleetHarness implements AutoCloseable {
 
     SimFleet fleet(int count, VehicleKind kind = VehicleKind.COPTER, int firstSysid = 1, SimOptions options = SimOptions.DEFAULT,
                    FaultModel faults = FaultModel.NONE, SigningKey key = null, SimEquipment equipment = SimEquipment.NONE) {
-        def config = SimFleet.Config.of(count, kind, new InetSocketAddress('127.0.0.1', port()))
-                .withFirstSysid(firstSysid).withOptions(options).withFaults(faults).withSigningKey(key).withEquipment(equipment)
+        fleet(config(count, kind).withFirstSysid(firstSysid).withOptions(options).withFaults(faults).withSigningKey(key)
+                .withEquipment(equipment))
+    }
+
+    /** The defaults of a fleet sending to this ground station, for a spec to change. */
+    SimFleet.Config config(int count, VehicleKind kind) {
+        SimFleet.Config.of(count, kind, new InetSocketAddress('127.0.0.1', port()))
+    }
+
+    SimFleet fleet(SimFleet.Config config) {
         def f = new SimFleet(config, clock)
         f.start()
         fleets << f
