@@ -8,14 +8,16 @@
 #   harness/record-sitl.sh NAME BINARY MODEL DEFAULTS SCRIPT [SETTLE_S] [TIMEOUT_S] [HOME]
 #
 # NAME      recording name (NAME.tlog, NAME.out)      BINARY    arducopter, arduplane, ardurover...
-# MODEL     SITL's --model (+, plane, rover)          DEFAULTS  its parameter file (Tools/autotest/...)
+# MODEL     SITL's --model (+, plane, rover)          DEFAULTS  its parameter files (Tools/autotest/...),
+#                                                               comma-separated, later ones overriding
 # SCRIPT    the .dolphin script to fly                SETTLE_S  real seconds between SITL's start and
 #                                                               dolphin's (0: "at boot"; default 15)
 # TIMEOUT_S real seconds after which dolphin is stopped (default 240); SITL runs at --speedup 5.
 # HOME      SITL's home LAT,LON,ALT (default 40.444233,-7.375234,820; ArduSub needs one at sea level)
 set -euo pipefail
-[ $# -ge 5 ] || { sed -n '2,17p' "$0"; exit 2; }
-name=$1 binary=$(realpath "$2") model=$3 defaults=$(realpath "$4") script=$(realpath "$5")
+[ $# -ge 5 ] || { sed -n '2,18p' "$0"; exit 2; }
+name=$1 binary=$(realpath "$2") model=$3 script=$(realpath "$5")
+defaults=$(IFS=,; for f in $4; do realpath "$f"; done | paste -sd,)
 settle=${6:-15} timeout_s=${7:-240} home=${8:-40.444233,-7.375234,820}
 repo=$(cd "$(dirname "$0")/.." && pwd)
 out="$repo/src/test/resources/sitl-recordings"
