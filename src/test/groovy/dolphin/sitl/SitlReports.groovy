@@ -12,7 +12,9 @@ import java.util.concurrent.ConcurrentHashMap
  * What each SITL vehicle reported during a run, by system id, from its autopilot's messages as our
  * ground station decoded them: the MAVLink types in its heartbeats, the items it reported reached
  * (MISSION_ITEM_REACHED) and the lowest height relative to home it reported (GLOBAL_POSITION_INT,
- * metres; a sub's depth is a negative one). The node's own state keeps only the last of each.
+ * metres; a sub's depth is a negative one) once it had a position: before, ArduPilot sends latitude
+ * and longitude 0 and a height that means nothing (−0.4 m from a sub at the surface). The node's
+ * own state keeps only the last of each.
  */
 class SitlReports implements MAVLinkCommunications.ComponentListener {
 
@@ -38,7 +40,7 @@ class SitlReports implements MAVLinkCommunications.ComponentListener {
             add(heartbeatTypes, sysid, message.type)
         } else if (message instanceof msg_mission_item_reached) {
             add(itemsReached, sysid, message.seq)
-        } else if (message instanceof msg_global_position_int) {
+        } else if (message instanceof msg_global_position_int && (message.lat != 0 || message.lon != 0)) {
             lowestRelativeAlt.merge(sysid, message.relative_alt / 1000d, Math::min)
         }
     }
