@@ -17,7 +17,7 @@
 set -euo pipefail
 [ $# -ge 5 ] || { sed -n '2,18p' "$0"; exit 2; }
 name=$1 binary=$(realpath "$2") model=$3 script=$(realpath "$5")
-defaults=$(IFS=,; for f in $4; do realpath "$f"; done | paste -sd,)
+defaults=$(IFS=,; realpath -e $4 | paste -sd,)
 settle=${6:-15} timeout_s=${7:-240} home=${8:-40.444233,-7.375234,820}
 repo=$(cd "$(dirname "$0")/.." && pwd)
 out="$repo/src/test/resources/sitl-recordings"
