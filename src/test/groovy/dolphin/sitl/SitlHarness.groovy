@@ -65,8 +65,9 @@ class SitlHarness implements AutoCloseable {
     static String defaults(String binary, String variable, String parmFiles) {
         String named = System.getenv(variable)
         if (named) {
-            named.split(',').each { assert new File(it).isFile(): "${variable}=${named}: ${it} is not a file" }
-            return named.split(',').collect { new File(it).absolutePath }.join(',')
+            List<File> files = named.split(',').collect { new File(it) }
+            files.each { assert it.isFile(): "${variable}=${named}: ${it} is not a file" }
+            return files*.absolutePath.join(',')
         }
         def guess = new File(binary).parentFile?.parentFile?.parentFile?.parentFile
         // copter.parm, rover.parm, motorboat.parm and sub.parm are in default_params, plane.parm among the models
