@@ -22,10 +22,12 @@ import spock.util.concurrent.PollingConditions
  * Our ground station (MAVLinkCommunications on udpin 127.0.0.1, a private port, real time, as
  * `dolphin run` has it) and the SITL processes that send to it. Configured from the environment:
  * ARDUPILOT_SITL_BIN (arducopter), ARDUPILOT_SITL_PLANE_BIN (arduplane), ARDUPILOT_SITL_ROVER_BIN
- * (ardurover), ARDUPILOT_SITL_DEFAULTS, ARDUPILOT_SITL_PLANE_DEFAULTS and ARDUPILOT_SITL_ROVER_DEFAULTS
- * (their parameter files; by default ArduPilot's copter.parm, plane.parm or rover.parm, found in
- * Tools/autotest from a binary in build/sitl/bin),
- * ARDUPILOT_SITL_SPEEDUP (SITL's --speedup, default 1). Close it to stop every process.
+ * (ardurover, for rovers and boats), ARDUPILOT_SITL_SUB_BIN (ardusub), ARDUPILOT_SITL_DEFAULTS,
+ * ARDUPILOT_SITL_PLANE_DEFAULTS, ARDUPILOT_SITL_ROVER_DEFAULTS, ARDUPILOT_SITL_BOAT_DEFAULTS and
+ * ARDUPILOT_SITL_SUB_DEFAULTS (their parameter files, comma-separated; by default ArduPilot's
+ * copter.parm, plane.parm, rover.parm, rover.parm with motorboat.parm, or sub.parm, found in
+ * Tools/autotest from a binary in build/sitl/bin), ARDUPILOT_SITL_SPEEDUP (SITL's --speedup,
+ * default 1). Close it to stop every process.
  */
 class SitlHarness implements AutoCloseable {
 
@@ -42,31 +44,37 @@ class SitlHarness implements AutoCloseable {
     }
 
     /**
-     * Starts a vehicle: binary from the environment variable {@code binaryVariable}, parameter file
-     * from {@code defaultsVariable} or {@code parmFile} next to ArduPilot's build.
+     * Starts a vehicle: binary from the environment variable {@code binaryVariable}, parameter files
+     * from {@code defaultsVariable} or {@code parmFiles} (comma-separated, later ones overriding, as
+     * ArduPilot's autotest layers motorboat.parm over rover.parm) next to ArduPilot's build.
      */
-    SitlVehicle start(String binaryVariable, String defaultsVariable, String parmFile, String model, int sysid, int instance, Position home,
+    SitlVehicle start(String binaryVariable, String defaultsVariable, String parmFiles, String model, int sysid, int instance, Position home,
                       List<String> params = [], List<java.nio.file.Path> scripts = []) {
         String binary = new File(System.getenv(binaryVariable)).absolutePath
         assert new File(binary).canExecute(): "${binaryVariable}=${binary} is not an executable file"
-        def v = new SitlVehicle(binary, model, sysid, instance, home, defaults(binary, defaultsVariable, parmFile), SPEEDUP,
+        def v = new SitlVehicle(binary, model, sysid, instance, home, defaults(binary, defaultsVariable, parmFiles), SPEEDUP,
                 comms.links()[0].localPort(), params, scripts)
         vehicles << v
         v
     }
 
-    /** The parameter file: named by the variable, else ArduPilot's own, from build/sitl/bin/BINARY up to the source tree. */
-    static String defaults(String binary, String variable, String parmFile) {
+    /**
+     * The parameter files, comma-separated as SITL's --defaults takes them: named by the variable, else
+     * ArduPilot's own, from build/sitl/bin/BINARY up to the source tree; null when one is not found.
+     */
+    static String defaults(String binary, String variable, String parmFiles) {
         String named = System.getenv(variable)
         if (named) {
-            assert new File(named).isFile(): "${variable}=${named} is not a file"
-            return new File(named).absolutePath
+            List<File> files = named.split(',').collect { new File(it) }
+            files.each { assert it.isFile(): "${variable}=${named}: ${it} is not a file" }
+            return files*.absolutePath.join(',')
         }
         def guess = new File(binary).parentFile?.parentFile?.parentFile?.parentFile
-        // copter.parm and rover.parm are in default_params, plane.parm among the models
-        def parm = guess == null ? null : ['default_params', 'models'].collect { new File(guess, "Tools/autotest/${it}/${parmFile}") }
-                .find { it.isFile() }
-        parm?.absolutePath
+        // copter.parm, rover.parm, motorboat.parm and sub.parm are in default_params, plane.parm among the models
+        List<File> found = parmFiles.split(',').collect { parmFile ->
+            guess == null ? null : ['default_params', 'models'].collect { new File(guess, "Tools/autotest/${it}/${parmFile}") }.find { it.isFile() }
+        }
+        found.contains(null) ? null : found*.absolutePath.join(',')
     }
 
     /** Runs a script with a new Engine on this ground station; its result, or a failure after {@code deadline}. */

@@ -6,8 +6,8 @@ import java.nio.file.Path
 import java.util.concurrent.TimeUnit
 
 /**
- * One ArduPilot SITL process (arducopter or arduplane, run directly, without sim_vehicle.py or
- * MAVProxy), started the way ArduPilot's docs run the binary: in its own working directory (its
+ * One ArduPilot SITL process (arducopter, arduplane, ardurover or ardusub, run directly, without
+ * sim_vehicle.py or MAVProxy), started the way ArduPilot's docs run the binary: in its own working directory (its
  * eeprom.bin and logs go there), with an instance number (-I i: TCP ports 5760 + 10 i and up, so
  * instances never clash), a system id (--sysid N, which sets MAV_SYSID on current ArduPilot and
  * SYSID_THISMAV on older releases), a home, the vehicle's default parameter file, and SERIAL0 sending
@@ -25,8 +25,8 @@ class SitlVehicle implements AutoCloseable {
     private final Process process
 
     /**
-     * @param defaults the parameter file (ArduPilot's Tools/autotest/default_params/copter.parm or
-     *        plane.parm), or null to run on the binary's built-in defaults
+     * @param defaults the parameter files, comma-separated (ArduPilot's Tools/autotest/default_params/copter.parm,
+     *        say, or rover.parm,motorboat.parm), or null to run on the binary's built-in defaults
      * @param params parameter lines ("SCR_ENABLE 1") read after the defaults, from a file of its own
      *        (SITL's --defaults takes a comma-separated list)
      * @param scripts Lua scripts put in the working directory's scripts/ folder, where ArduPilot loads them
