@@ -16,7 +16,7 @@ import spock.lang.Specification
  * recording's ending in the order SITL sent it: the copter's first flight started 41 s after boot
  * and after 15 s, both ending in a landing, a disarm and the mission started over; a fence breach
  * ending in RTL, the mission stopped, the copter still descending; a rover's square ending COMPLETE; a
- * plane's circuit ending in its own RTL; every mission command, then a second mission uploaded over
+ * plane's circuit ending in its own RTL; a boat's square, driven as the rover drives it; every mission command, then a second mission uploaded over
  * the first, which keeps its current item; a sub armed before its position estimate, refused AUTO
  * until it had one, then three waypoints at 10 m depth, COMPLETE, and a disarm at depth that resets
  * the mission; dolphin's AMSL items refused by a sub ("Bad alt frame"), on DO_SET_MISSION_CURRENT and
@@ -37,7 +37,8 @@ class RecordingConformanceSpec extends Specification {
 
     /** SITL's --home of the recordings not made at SimDriver.HOME: the subs dived off Comporta, at sea level. */
     static final Map<String, Position> HOMES = ['sub-dive-mission' : Position.fromDegrees(38.43462, -8.86118, 0),
-                                                'sub-bad-alt-frame': Position.fromDegrees(38.43462, -8.86118, 0)]
+                                                'sub-bad-alt-frame': Position.fromDegrees(38.43462, -8.86118, 0),
+                                                'boat-square'      : Position.fromDegrees(38.43462, -8.86118, 0)]
 
     def setupSpec() {
         assert Files.isDirectory(DIRECTORY): "the SITL recordings are not at ${DIRECTORY.toAbsolutePath().normalize()}" 
@@ -84,6 +85,9 @@ class RecordingConformanceSpec extends Specification {
                                                                'COMMAND_ACK command=224 result=0', 'MISSION_CURRENT seq=1 total=7 state=3',
                                                                'EXTENDED_SYS_STATE landed_state=3', 'MISSION_CURRENT seq=2 total=7 state=3',
                                                                'HEARTBEAT armed=1 mode=6']
+        'boat-square'                 | VehicleKind.BOAT   || ['HEARTBEAT armed=1 mode=10', 'MISSION_ITEM_REACHED seq=3',
+                                                               'MISSION_CURRENT seq=4 total=4 state=3', 'MISSION_ITEM_REACHED seq=4',
+                                                               'MISSION_CURRENT seq=4 total=4 state=5']
         'sub-dive-mission'            | VehicleKind.SUB    || ['HEARTBEAT armed=1 mode=19', 'COMMAND_ACK command=176 result=4',
                                                                'STATUSTEXT Mode change failed: Auto requires position',
                                                                'HEARTBEAT armed=1 mode=3', 'MISSION_CURRENT seq=1 total=3 state=3',
