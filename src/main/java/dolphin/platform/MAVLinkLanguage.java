@@ -19,6 +19,9 @@ import dolphin.mission.model.Mission;
 import dolphin.mission.file.MissionFile;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.RawItemPoint;
+import dolphin.mission.model.HeightCheck;
+import dolphin.mission.model.Underwater;
+import com.MAVLink.enums.MAV_FRAME;
 import dolphin.mission.transfer.TransferResult;
 import dolphin.sensor.DeclaredSensors;
 import dolphin.sensor.FleetFile;
@@ -168,19 +171,21 @@ public final class MAVLinkLanguage implements DslExtension {
          * relative to the current directory. Item 0 of the file (its planned home) is not flown: the
          * vehicle's home takes its place, as ArduPilot does, and no DO_SET_HOME is sent. The fence
          * stays as the vehicle has it unless {@code enableFence: true}; items lower than home plus the
-         * clearance are refused at the flight unless {@code allowBelowHome: true}.
+         * clearance are refused at the flight unless {@code allowBelowHome: true}. {@code maxDepth: 30}
+         * makes it an underwater mission, for a submarine (docs/underwater.md), its surface at the
+         * height of the file's planned home (sea level when it has none above mean sea level).
          */
-        @Word("A mission task from a mission file (QGroundControl .plan, .waypoints, ...); options enableFence, allowBelowHome, name")
+        @Word("A mission task from a mission file (QGroundControl .plan, .waypoints, ...); options enableFence, allowBelowHome, maxDepth, name")
         public MissionTask missionFromFile(String path) {
             return missionFromFile(Map.of(), path);
         }
 
-        @Word("A mission task from a mission file (QGroundControl .plan, .waypoints, ...); options enableFence, allowBelowHome, name")
+        @Word("A mission task from a mission file (QGroundControl .plan, .waypoints, ...); options enableFence, allowBelowHome, maxDepth, name")
         public MissionTask missionFromFile(Map<String, Object> options, String path) {
             for (String key : options.keySet()) {
-                if (!List.of("enableFence", "name", "allowBelowHome").contains(key)) {
+                if (!List.of("enableFence", "name", "allowBelowHome", "maxDepth").contains(key)) {
                     throw new DslException("missionFromFile: unknown option '" + key
-                            + "' (expected enableFence, allowBelowHome, name)");
+                            + "' (expected enableFence, allowBelowHome, maxDepth, name)");
                 }
             }
             MissionFile file;
@@ -203,6 +208,12 @@ public final class MAVLinkLanguage implements DslExtension {
             Mission m = RawItemPoint.mission(name, null, file.mission(), Boolean.TRUE.equals(options.get("allowBelowHome")));
             m.setAirspace(file.fence(), file.rally(), Boolean.TRUE.equals(options.get("enableFence")));
             m.setVehicleProfile(file.vehicle());
+            if (options.containsKey("maxDepth")) {
+                m.setUnderwater(underwater(options.get("maxDepth"), file.mission().get(0)));
+                HeightCheck.firstUnsafe(m, null).ifPresent(u -> {
+                    throw new DslException("missionFromFile: " + path + ": " + u.message());
+                });
+            }
             context.words().forEach(w -> MissionRecorder.report(w, m));
             context.listener().message("read " + (file.mission().size() - 1) + " mission items"
                     + (file.fence().isEmpty() ? "" : ", a fence of " + file.fence().describe())
@@ -210,5 +221,17 @@ public final class MAVLinkLanguage implements DslExtension {
             return new MissionTask(m);
         }
 
+        /** The bounds {@code maxDepth:} gives a file's mission: the surface at its planned home, if that is above mean sea level. */
+        private static Underwater underwater(Object maxDepth, MissionItem plannedHome) {
+            if (!(maxDepth instanceof Number depth)) {
+                throw new DslException("missionFromFile: maxDepth must be a number of metres, got " + maxDepth);
+            }
+            double surface = MissionItem.altitudeReference(plannedHome.frame()) == MAV_FRAME.MAV_FRAME_GLOBAL ? plannedHome.z() : 0;
+            try {
+                return new Underwater(surface, depth.doubleValue());
+            } catch (IllegalArgumentException e) {
+                throw new DslException("missionFromFile: " + e.getMessage());
+            }
+        }
     }
 }

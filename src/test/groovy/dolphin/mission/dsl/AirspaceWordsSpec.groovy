@@ -139,7 +139,7 @@ class AirspaceWordsSpec extends Specification {
         "'no/such.plan'"                                  | 'missionFromFile: no file no/such.plan'
         "'${FENCE_ONLY}'"                                 | 'holds a fence but no mission'
         "'${WRONG}'"                                      | 'mission.version 7 is not one QGroundControl reads'
-        "'dsl-examples/square.plan', fence: true"         | "missionFromFile: unknown option 'fence' (expected enableFence, allowBelowHome, name)"
+        "'dsl-examples/square.plan', fence: true"         | "missionFromFile: unknown option 'fence' (expected enableFence, allowBelowHome, maxDepth, name)"
     }
 
     /** Small files of each kind, written for these specs. */

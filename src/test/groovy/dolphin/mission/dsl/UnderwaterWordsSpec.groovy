@@ -92,4 +92,41 @@ class UnderwaterWordsSpec extends Specification {
         'a negative limit'    | "mission {\n maxDepth(-5) // <<\n goPos 38.4349, -8.86118, 0\n}"                         || 'maxDepth'
         'a negative dive'     | "mission {\n maxDepth 5\n goPos 38.4349, -8.86118, 0\n dive(-3) // <<\n}"                || 'dive'
     }
+
+    /** A QGroundControl-style .waypoints file for a sub: home at sea level, waypoints relative to it at -5 and -{@code deepest}. */
+    static File waypoints(double deepest) {
+        File f = File.createTempFile('sub', '.waypoints')
+        f.deleteOnExit()
+        f.text = """QGC WPL 110
+0\t1\t0\t16\t0\t0\t0\t0\t38.43462\t-8.86118\t0\t1
+1\t0\t3\t16\t0\t0\t0\t0\t38.43490\t-8.86118\t-5\t1
+2\t0\t3\t16\t0\t0\t0\t0\t38.43520\t-8.86118\t-${deepest}\t1
+3\t0\t3\t21\t0\t0\t0\t0\t38.43520\t-8.86118\t0\t1
+"""
+        f
+    }
+
+    def "missionFromFile(maxDepth: 20) reuses a sub's plan made in QGroundControl: depths relative to home, checked as it is read"() {
+        when:
+        def r = h.run("sub = missionFromFile('${waypoints(12).path}', maxDepth: 20)", FILE)
+        def m = (h.engine.variable('sub') as MissionTask).mission()
+
+        then:
+        r.outcome == COMPLETED
+        m.underwater().get() == new Underwater(0, 20)
+        m.items(null).drop(1)*.z == [-5f, -12f, 0f]
+    }
+
+    def "missionFromFile: an item deeper than maxDepth is a script error at its line, naming the file"() {
+        given:
+        File f = waypoints(30)
+
+        when:
+        def r = h.run("x = 1\nsub = missionFromFile('${f.path}', maxDepth: 20)", FILE)
+
+        then:
+        r.outcome == SCRIPT_ERROR
+        r.error.line == 2
+        r.error.message.contains("missionFromFile: ${f.path}: mission ${f.name - '.waypoints'}: item 2 (item, NAV_WAYPOINT) is 30.0 m deep")
+    }
 }
