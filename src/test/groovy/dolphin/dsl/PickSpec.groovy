@@ -243,7 +243,7 @@ class PickSpec extends Specification {
         ids('v') == ['2']
     }
 
-    def "a picked vehicle gets the current default connection timeout"() {
+    def "a picked vehicle gets the current connection timeout; setConnectionTimeout sets those held, not those released"() {
         given:
         h.platform.addNode('1')
         h.platform.addNode('2')
@@ -253,11 +253,13 @@ class PickSpec extends Specification {
             a = pick { }
             setConnectionTimeout 60
             b = pick { }
+            release a
+            setConnectionTimeout 90
         ''')
 
         then:
-        h.platform.node('1').connectionTimeout == 20d
-        h.platform.node('2').connectionTimeout == 60d
+        h.platform.node('1').connectionTimeout == 60d
+        h.platform.node('2').connectionTimeout == 90d
     }
 
     def "timeout #timeout: attempts every #pause s, so a vehicle connected at #connectAt s is picked at #pickedAt s"() {
