@@ -248,16 +248,8 @@ final class RunCommand implements Callable<Integer> {
         if (speedup != 1 && sim == 0) {
             throw new ParameterException(spec.commandLine(), "--speedup needs --sim: real vehicles run in real time");
         }
-        for (String option : EquipmentOptions.OptionNames.RUN.all()) {
-            if (sim == 0 && spec.commandLine().getParseResult().hasMatchedOption(option)) {
-                throw new ParameterException(spec.commandLine(), option + " needs --sim: only simulated vehicles carry simulated sensors and cameras");
-            }
-        }
-        for (String option : List.of("--sim-home", "--sim-dive-silence")) {
-            if (sim == 0 && spec.commandLine().getParseResult().hasMatchedOption(option)) {
-                throw new ParameterException(spec.commandLine(), option + " needs --sim: it sets up the simulated fleet");
-            }
-        }
+        needsSim(EquipmentOptions.OptionNames.RUN.all(), "only simulated vehicles carry simulated sensors and cameras");
+        needsSim(List.of("--sim-home", "--sim-dive-silence"), "it sets up the simulated fleet");
         if (webTiles != null && web == null) {
             throw new ParameterException(spec.commandLine(), "--web-tiles needs --web");
         }
@@ -267,6 +259,18 @@ final class RunCommand implements Callable<Integer> {
         }
         if (sysid < 1 || sysid > 255) {
             throw new ParameterException(spec.commandLine(), "--sysid must be in 1..255, got " + sysid);
+        }
+    }
+
+    /** Without --sim, the first of these options given is a usage error saying why it needs --sim. */
+    private void needsSim(List<String> options, String why) {
+        if (sim > 0) {
+            return;
+        }
+        for (String option : options) {
+            if (spec.commandLine().getParseResult().hasMatchedOption(option)) {
+                throw new ParameterException(spec.commandLine(), option + " needs --sim: " + why);
+            }
         }
     }
 

@@ -105,7 +105,7 @@ final class ItemRefusals {
                 moveTo(seq, now);
                 underSince = now;
             }
-        } else if (severity <= MAV_SEVERITY.MAV_SEVERITY_WARNING && complaint == null && under > 0) {
+        } else if (severity <= MAV_SEVERITY.MAV_SEVERITY_WARNING && complaint == null) {
             complaint = text;
         }
     }

@@ -14,6 +14,7 @@ import java.time.Duration;
 import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Consumer;
 
 /**
  * The mission layer on one {@link MAVLinkCommunications}: it registers for the mission protocol's
@@ -95,25 +96,20 @@ public final class MissionService {
                 v.transfers().handle(m);
             }
         }));
-        handler.on(msg_mission_item_reached.class, (n, m) -> {
-            MissionExecutor executor = executorOn(n);
-            if (executor != null) {
-                executor.consume(m);
-                comms.wakeScript();
-            }
-        });
+        handler.on(msg_mission_item_reached.class, (n, m) -> toExecutor(n, e -> {
+            e.consume(m);
+            comms.wakeScript();
+        }));
         // In the order they come, for the refused-item rule (ItemRefusals): snapshots miss a mission raced through.
-        handler.on(msg_mission_current.class, (n, m) -> {
-            MissionExecutor executor = executorOn(n);
-            if (executor != null) {
-                executor.consume(m);
-            }
-        });
-        handler.on(msg_statustext.class, (n, m) -> {
-            MissionExecutor executor = executorOn(n);
-            if (executor != null) {
-                executor.consume(m);
-            }
-        });
+        handler.on(msg_mission_current.class, (n, m) -> toExecutor(n, e -> e.consume(m)));
+        handler.on(msg_statustext.class, (n, m) -> toExecutor(n, e -> e.consume(m)));
+    }
+
+    /** Hands a message to the executor flying on the vehicle, if one is. */
+    private void toExecutor(MAVLinkNode node, Consumer<MissionExecutor> deliver) {
+        MissionExecutor executor = executorOn(node);
+        if (executor != null) {
+            deliver.accept(executor);
+        }
     }
 }

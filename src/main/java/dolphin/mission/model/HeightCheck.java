@@ -6,6 +6,7 @@ import dolphin.core.Position;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.Set;
+import java.util.function.BiFunction;
 
 /**
  * A mission never goes where its vehicle does not belong unless its script says so
@@ -97,7 +98,7 @@ public final class HeightCheck {
     }
 
     /** The first item the rule has something to say about. */
-    private static Optional<Unsafe> first(Mission mission, java.util.function.BiFunction<MissionPoint, MissionItem, String> rule) {
+    private static Optional<Unsafe> first(Mission mission, BiFunction<MissionPoint, MissionItem, String> rule) {
         int seq = 1;
         for (DroneCommand c : mission.getCommandList()) {
             if (!(c instanceof MissionPoint p)) {

@@ -7,6 +7,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 
 /**
  * A MAVLink mission: the commands of a {@code mission { }} block (or of a file), turned into the
@@ -49,8 +50,8 @@ public final class Mission {
     }
 
     /** The bounds of an underwater mission ({@code maxDepth}), or empty for one flown or driven in the air. */
-    public java.util.Optional<Underwater> underwater() {
-        return java.util.Optional.ofNullable(underwater);
+    public Optional<Underwater> underwater() {
+        return Optional.ofNullable(underwater);
     }
 
     public void setUnderwater(Underwater bounds) {
