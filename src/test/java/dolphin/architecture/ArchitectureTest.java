@@ -26,6 +26,7 @@ class ArchitectureTest {
     private static final String DSL = "script engine";
     private static final String LINK = "MAVLink link layer";
     private static final String MODEL = "mission model";
+    private static final String SURVEYS = "mission surveys";
     private static final String FILES = "mission files";
     private static final String TRANSFER = "mission transfer";
     private static final String FLIGHT = "mission flight";
@@ -43,6 +44,7 @@ class ArchitectureTest {
             .layer(DSL).definedBy("dolphin.dsl..")
             .layer(LINK).definedBy("dolphin.mavlink..")
             .layer(MODEL).definedBy("dolphin.mission.model..")
+            .layer(SURVEYS).definedBy("dolphin.mission.survey..")
             .layer(FILES).definedBy("dolphin.mission.file..")
             .layer(TRANSFER).definedBy("dolphin.mission.transfer..")
             .layer(FLIGHT).definedBy("dolphin.mission.flight..")
@@ -57,16 +59,17 @@ class ArchitectureTest {
             .whereLayer(DSL).mayOnlyAccessLayers(CORE)
             .whereLayer(LINK).mayOnlyAccessLayers(CORE, DSL)
             .whereLayer(MODEL).mayOnlyAccessLayers(CORE, DSL, LINK)
-            .whereLayer(FILES).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL)
-            .whereLayer(TRANSFER).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL)
-            .whereLayer(FLIGHT).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, TRANSFER)
-            .whereLayer(LANGUAGE).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT)
+            .whereLayer(SURVEYS).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL)
+            .whereLayer(FILES).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, SURVEYS)
+            .whereLayer(TRANSFER).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, SURVEYS)
+            .whereLayer(FLIGHT).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, SURVEYS, TRANSFER)
+            .whereLayer(LANGUAGE).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, SURVEYS, FILES, TRANSFER, FLIGHT)
             .whereLayer(SENSORS).mayOnlyAccessLayers(CORE, DSL, LINK)
-            .whereLayer(PLATFORM).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, SENSORS)
-            .whereLayer(SIMULATOR).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, SENSORS, PLATFORM)
-            .whereLayer(WEB).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, SENSORS, PLATFORM)
-            .whereLayer(EDITOR).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, SENSORS, PLATFORM)
-            .whereLayer(CLI).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, FILES, TRANSFER, FLIGHT, LANGUAGE, SENSORS, PLATFORM,
+            .whereLayer(PLATFORM).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, SURVEYS, FILES, TRANSFER, FLIGHT, LANGUAGE, SENSORS)
+            .whereLayer(SIMULATOR).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, SURVEYS, FILES, TRANSFER, FLIGHT, LANGUAGE, SENSORS, PLATFORM)
+            .whereLayer(WEB).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, SURVEYS, FILES, TRANSFER, FLIGHT, LANGUAGE, SENSORS, PLATFORM)
+            .whereLayer(EDITOR).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, SURVEYS, FILES, TRANSFER, FLIGHT, LANGUAGE, SENSORS, PLATFORM)
+            .whereLayer(CLI).mayOnlyAccessLayers(CORE, DSL, LINK, MODEL, SURVEYS, FILES, TRANSFER, FLIGHT, LANGUAGE, SENSORS, PLATFORM,
                     SIMULATOR, WEB, EDITOR);
 
     @ArchTest
