@@ -59,6 +59,20 @@ final class PlanJson {
         }
     }
 
+    /** Degrees of latitude (limit 90) or longitude (limit 180) as they are written, refused when missing or out of range. */
+    static double degrees(Object v, double limit, String where) {
+        if (!(v instanceof Number n) || !Double.isFinite(n.doubleValue())) {
+            throw new IllegalArgumentException(where + ": expected degrees of " + (limit == 90 ? "latitude" : "longitude")
+                    + ", found " + shown(v));
+        }
+        double d = n.doubleValue();
+        if (Math.abs(d) > limit) {
+            throw new IllegalArgumentException(where + ": " + n + " is out of range for a "
+                    + (limit == 90 ? "latitude (-90 to 90)" : "longitude (-180 to 180)"));
+        }
+        return d;
+    }
+
     static int integer(Object v, String where) {
         if (!(v instanceof Number n)) {
             throw new IllegalArgumentException(where + ": expected an integer, found " + shown(v));
