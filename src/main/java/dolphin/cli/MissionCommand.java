@@ -130,8 +130,7 @@ final class MissionCommand implements Callable<Integer> {
         Set<String> taken = new HashSet<>();
         for (int i = 0; i < missions.size(); i++) {
             Mission m = missions.get(i);
-            MissionFile contents = MissionFile.of(itemLists.get(i)).withFence(m.fence()).withRally(m.rally())
-                    .withVehicle(m.vehicleProfile());
+            MissionFile contents = MissionFile.of(m, itemLists.get(i));
             String base = fileName(m.getId());
             Map<Path, String> files = new LinkedHashMap<>();
             try {
