@@ -84,7 +84,7 @@ class PhotoGridSpec extends Specification {
         ['X', Double.NaN, 4.55, 4000, 3000, 2.98, 0, false]     | "camera 'X': the sensor width must be above 0 mm, got NaN"
         ['X', 6.17, -1, 4000, 3000, 2.98, 0, false]             | "camera 'X': the sensor height must be above 0 mm, got -1"
         ['X', 6.17, 4.55, 0, 3000, 2.98, 0, false]              | "camera 'X': the image width must be above 0 px, got 0"
-        ['X', 6.17, 4.55, 4000, 3000, 2.98, -1, false]          | "camera 'X': the minimum trigger interval must be 0 s or more, got -1.0"
+        ['X', 6.17, 4.55, 4000, 3000, 2.98, -1, false]          | "camera 'X': the minimum trigger interval must be 0 s or more, got -1"
         [' ', 6.17, 4.55, 4000, 3000, 2.98, 0, false]           | 'a camera needs a name, got a blank one'
     }
 
