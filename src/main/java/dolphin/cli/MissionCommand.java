@@ -113,6 +113,7 @@ final class MissionCommand implements Callable<Integer> {
                 stdout.println("mission " + m.getId() + ": " + items.size() + " items (item 0 is the home"
                         + (m.getHome() == null ? ": the first position, the mission names none" : "") + ")");
                 stdout.print(MissionTable.format(items));
+                CoverageLines.of(m).forEach(stdout::println);
                 if (!m.fence().isEmpty()) {
                     stdout.println("fence of " + m.getId() + ": " + m.fence().describe()
                             + (m.fenceEnabled() ? ", enabled at the start" : ", not enabled by the mission"));
@@ -129,8 +130,7 @@ final class MissionCommand implements Callable<Integer> {
         Set<String> taken = new HashSet<>();
         for (int i = 0; i < missions.size(); i++) {
             Mission m = missions.get(i);
-            MissionFile contents = MissionFile.of(itemLists.get(i)).withFence(m.fence()).withRally(m.rally())
-                    .withVehicle(m.vehicleProfile());
+            MissionFile contents = MissionFile.of(m, itemLists.get(i));
             String base = fileName(m.getId());
             Map<Path, String> files = new LinkedHashMap<>();
             try {

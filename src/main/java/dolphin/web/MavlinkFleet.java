@@ -56,7 +56,7 @@ final class MavlinkFleet implements Supplier<List<VehicleSample>> {
     /** The mission, its fence and rally points as GeoJSON (docs/embedding.md); null if it cannot be drawn. */
     private static String draw(Mission m, MAVLinkNode node) {
         try {
-            return GeoJsonFile.compact(m.getId(), MissionFile.of(m.items(node.getHome())).withFence(m.fence()).withRally(m.rally()));
+            return GeoJsonFile.compact(m.getId(), MissionFile.of(m, m.items(node.getHome())));
         } catch (RuntimeException e) {
             LOG.debug("mission {} of vehicle {} not drawn: {}", m.getId(), node.getId(), e.getMessage());
             return null;

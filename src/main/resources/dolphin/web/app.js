@@ -156,7 +156,18 @@ function updateMission(id, geojson) {
   const items = new Map();
   const layer = L.geoJSON(geojson, {
     renderer: renderer(),
-    style: f => f.properties.fence ? FENCE_STYLE[f.properties.fence] : { color, weight: 2, dashArray: '6 4', opacity: 0.8 },
+    style: f => f.properties.fence ? FENCE_STYLE[f.properties.fence]
+      : f.properties.kind ? { color, weight: 2, fillOpacity: 0.08 }
+      : f.properties.footprints ? { color, weight: 0.5, opacity: 0.35, fillOpacity: 0.03 }
+      : { color, weight: 2, dashArray: '6 4', opacity: 0.8 },
+    onEachFeature: (f, layer) => {
+      const p = f.properties;
+      if (!p.kind && !p.footprints) return;
+      // marks the drawn shape for people's style sheets and the browser test
+      layer.on('add', () => layer.getElement()?.classList.add(p.kind ? 'dolphin-survey' : 'dolphin-footprints'));
+      if (p.kind) layer.bindTooltip(`${geojson.name}: ${p.word} from item ${p.seq}, `
+        + `${p.gsd != null ? p.gsd.toFixed(2) + ' cm/px, ' : ''}${p.photos} photos`);
+    },
     pointToLayer: (f, at) => {
       const p = f.properties;
       if (p.rally != null) return L.circleMarker(at, { radius: 5, color: '#f4a261', weight: 2, fillOpacity: 0.6 }).bindTooltip('rally point ' + p.rally);

@@ -28,7 +28,8 @@ import spock.lang.Timeout
  * The page in a real browser (issue 13's acceptance): Debian's chromium, driven by Selenium, watches
  * the report's two-vehicle scenario (dsl-examples/two-drones-survey.dolphin) on the simulated fleet.
  * The browser is on the page before the script starts, so every phase is seen as it happens. It
- * saves target/web-view-survey.png (the surveys flying) and target/web-view.png (the end).
+ * saves target/web-view-survey.png (the surveys flying) and target/web-view.png (the end); a mapping
+ * mission (dsl-examples/mapping.dolphin) shows its survey's drawing in target/web-view-mapping.png.
  */
 @Requires({ Chromium.available() })
 @Timeout(180)
@@ -108,6 +109,23 @@ class WebViewBrowserSpec extends Specification {
 
         cleanup:
         screenshot('web-view.png')
+    }
+
+    def "a mapping mission draws its survey polygon, its corridor's path and the photos' footprints"() {
+        given:
+        browser.get(view.address())
+        waitUntil(10) { $('#connection[data-state="live"]') }
+
+        when:
+        def run = engine.run(Path.of('dsl-examples/mapping.dolphin'))
+
+        then: 'the survey polygon and the corridor path, each an element of its own, and the footprints'
+        waitUntil(60) { browser.executeScript('return document.querySelectorAll("path.dolphin-survey").length') == 2 }
+        browser.executeScript('return document.querySelectorAll("path.dolphin-footprints").length') == 2
+        screenshot('web-view-mapping.png')
+
+        and:
+        run.await(Duration.ofSeconds(90)).outcome() == ScriptResult.Outcome.COMPLETED
     }
 
     /** Saves what the browser shows in target/, for a person to look at. */

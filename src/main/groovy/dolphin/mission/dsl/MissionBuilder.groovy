@@ -23,6 +23,9 @@ import dolphin.mission.model.SurveyArea
 import dolphin.mission.model.SurveyDirection
 import dolphin.mission.model.TakeOffPoint
 import dolphin.mission.model.Underwater
+import dolphin.mission.survey.HeightReference
+import dolphin.mission.survey.MappingItem
+import dolphin.mission.survey.TransectPoint
 import dolphin.dsl.vocabulary.Suggestions
 import dolphin.dsl.vocabulary.Vocabulary
 import dolphin.dsl.vocabulary.Word
@@ -69,6 +72,8 @@ class MissionBuilder {
     /** Where each point was written: an exception made there, whose stack trace gives a later error that line. */
     private final Map<MissionPoint, DslException> origins = new IdentityHashMap<>()
     private Position lastRegistered
+    /** Why there is no last registered position after a mapping item whose end height is not known here, else null. */
+    private String unknownEnd
     private final List<DroneCommand> commands = []
     private Fence missionFence = Fence.NONE
     private boolean fenceEnabled
@@ -353,26 +358,26 @@ class MissionBuilder {
     @Word('A lawnmower survey of a length by width rectangle, lines spacing metres apart')
     void surveyArea(Number length, Number width, Number spacing = SurveyArea.DEFAULT_SPACING,
                     String direction = SurveyArea.DEFAULT_DIRECTION.name()) {
-        survey(lastPosition('surveyArea'), length, width, spacing, direction)
+        lawnmower(lastPosition('surveyArea'), length, width, spacing, direction)
     }
 
     @Word('A lawnmower survey of a length by width rectangle, lines spacing metres apart')
     void surveyArea(Number length, Number width, String direction) {
-        survey(lastPosition('surveyArea'), length, width, SurveyArea.DEFAULT_SPACING, direction)
+        lawnmower(lastPosition('surveyArea'), length, width, SurveyArea.DEFAULT_SPACING, direction)
     }
 
     @Word('A lawnmower survey of a length by width rectangle, lines spacing metres apart')
     void surveyArea(Position base, Number length, Number width, Number spacing = SurveyArea.DEFAULT_SPACING,
                     String direction = SurveyArea.DEFAULT_DIRECTION.name()) {
-        survey(Args.position('surveyArea', base), length, width, spacing, direction)
+        lawnmower(Args.position('surveyArea', base), length, width, spacing, direction)
     }
 
     @Word('A lawnmower survey of a length by width rectangle, lines spacing metres apart')
     void surveyArea(Position base, Number length, Number width, String direction) {
-        survey(Args.position('surveyArea', base), length, width, SurveyArea.DEFAULT_SPACING, direction)
+        lawnmower(Args.position('surveyArea', base), length, width, SurveyArea.DEFAULT_SPACING, direction)
     }
 
-    private void survey(Position base, Number length, Number width, Number spacing, String direction) {
+    private void lawnmower(Position base, Number length, Number width, Number spacing, String direction) {
         String w = 'surveyArea'
         double l = Args.notNegative(w, 'length', length)
         double wd = Args.notNegative(w, 'width', width)
@@ -391,6 +396,51 @@ class MissionBuilder {
         }
         add(area)
         register(base)
+    }
+
+    // ---- mapping (docs/mission-commands.md, "Mapping")
+
+    /** QGroundControl's survey over a polygon: lines at a grid angle, photos by distance or hovering. */
+    @Word('A survey over a polygon with a camera: QGroundControl\'s flight lines and photo triggers')
+    void survey(@DelegatesTo(value = SurveyBuilder, strategy = Closure.DELEGATE_FIRST) Closure block) {
+        mapping('survey', SurveyBuilder.build({ -> missionFence }, block))
+    }
+
+    /** QGroundControl's corridor scan: lines along a path, as many as cover its width. */
+    @Word('A corridor scan: flight lines along a path (a road, a river) covering its width')
+    void corridorScan(@DelegatesTo(value = CorridorBuilder, strategy = Closure.DELEGATE_FIRST) Closure block) {
+        mapping('corridorScan', CorridorBuilder.build({ -> missionFence }, block))
+    }
+
+    /** QGroundControl's structure scan: rings around a footprint, layer by layer, photographing the walls. */
+    @Word('A structure scan: rings around a building at a distance, layer by layer')
+    void structureScan(@DelegatesTo(value = StructureBuilder, strategy = Closure.DELEGATE_FIRST) Closure block) {
+        mapping('structureScan', StructureBuilder.build({ -> missionFence }, block))
+    }
+
+    /**
+     * Adds a mapping item and registers where it ends, when its height is known here: above home with a
+     * home, or above sea level. Otherwise relative commands after it have no position to start from.
+     */
+    private void mapping(String word, MappingItem item) {
+        if (water != null) {
+            throw new DslException("${word}: the mission is under water (maxDepth); surveys here fly at a height above"
+                    + ' the ground: under water, use surveyArea at a depth')
+        }
+        add(item)
+        TransectPoint end = item.path().last()
+        double height = item.lastHeight()
+        Double hae = switch (item.heightReference()) {
+            case HeightReference.ABOVE_HOME -> missionHome == null ? null : missionHome.hae() + height
+            case HeightReference.ABOVE_SEA_LEVEL -> height
+            default -> null
+        }
+        if (hae == null) {
+            lastRegistered = null
+            unknownEnd = "${word} ends at a height above ${item.heightReference() == HeightReference.ABOVE_HOME ? 'home, and the mission names no home' : 'the terrain'}"
+        } else {
+            register(Position.fromDegrees(end.latitude(), end.longitude(), hae))
+        }
     }
 
     // ---- camera
@@ -527,12 +577,17 @@ class MissionBuilder {
 
     private void register(Position p) {
         lastRegistered = p
+        unknownEnd = null
     }
 
     /** Where relative commands start: the last registered position, else home. */
     private Position lastPosition(String word) {
         if (lastRegistered != null) {
             return lastRegistered
+        }
+        if (unknownEnd != null) {
+            throw new DslException("${word}: there is no position to start from: the ${unknownEnd}; name the"
+                    + " mission's home ('home lat, lon, hae') before it, or go to a position (goPos, ...) first")
         }
         if (missionHome != null) {
             return missionHome
@@ -544,6 +599,10 @@ class MissionBuilder {
     /** Home's latitude and longitude at the last registered height: returning never goes lower than the mission flew. */
     private Position overHome(String word) {
         Position h = homeFor(word)
+        if (lastRegistered == null && unknownEnd != null) {
+            throw new DslException("${word}: there is no height to return at: the ${unknownEnd}; name the mission's"
+                    + " home ('home lat, lon, hae') before it, or use returnHomeAndLand()")
+        }
         if (lastRegistered == null) {
             throw new DslException("${word}: there is no height to return at yet: the mission goes nowhere before it;"
                     + " go somewhere first (takeOff, goPos, move, ...), or use returnHomeAndLand()")

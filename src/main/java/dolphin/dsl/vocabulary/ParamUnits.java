@@ -18,7 +18,8 @@ final class ParamUnits {
             Map.entry("down", "metres"), Map.entry("metres", "metres"), Map.entry("radius", "metres"),
             Map.entry("length", "metres"), Map.entry("width", "metres"), Map.entry("spacing", "metres"),
             Map.entry("seconds", "seconds"), Map.entry("timeBetween", "seconds"),
-            Map.entry("millis", "milliseconds"), Map.entry("newSpeed", "m/s"));
+            Map.entry("millis", "milliseconds"), Map.entry("newSpeed", "m/s"), Map.entry("percent", "%"),
+            Map.entry("centimetresPerPixel", "cm/px"));
 
     /** Number parameters that count or pick something and have no unit. */
     private static final Set<String> UNITLESS = Set.of("turns", "photos", "item", "repetitions", "speedType",

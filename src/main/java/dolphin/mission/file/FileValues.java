@@ -73,6 +73,20 @@ final class FileValues {
         return JsonOutput.unescaped(s);
     }
 
+    /**
+     * A double as a JSON number, written verbatim: an integer without a fraction, otherwise Java's
+     * decimal that reads back to the same double. Null for NaN and infinities, as {@link #jsonNumber}.
+     */
+    static Object jsonDouble(double d) {
+        if (!Double.isFinite(d)) {
+            return null;
+        }
+        if (d == Math.rint(d) && Math.abs(d) < 1e15) {
+            return JsonOutput.unescaped(d == 0 && 1 / d < 0 ? "-0.0" : Long.toString((long) d));
+        }
+        return JsonOutput.unescaped(Double.toString(d));
+    }
+
     /** degE7 as JSON degrees, written verbatim without trailing zeros: 404442330 -> 40.444233. */
     static Object jsonDegrees(int degE7) {
         return JsonOutput.unescaped(BigDecimal.valueOf(degE7, 7).stripTrailingZeros().toPlainString());

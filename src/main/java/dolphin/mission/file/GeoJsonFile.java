@@ -1,10 +1,14 @@
 package dolphin.mission.file;
 
+import dolphin.core.Position;
 import dolphin.mission.model.ItemText;
 import dolphin.mission.model.Fence;
 import dolphin.mission.model.FenceRegion;
 import dolphin.mission.model.Mission;
 import dolphin.mission.model.MissionItem;
+import dolphin.mission.survey.Coverage;
+import dolphin.mission.survey.MappingItem;
+import dolphin.mission.survey.PhotoGrid;
 import groovy.json.JsonGenerator;
 import groovy.json.JsonOutput;
 import java.io.IOException;
@@ -16,6 +20,7 @@ import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.TreeMap;
 
 /**
  * A mission as GeoJSON (RFC 7946), to look at on a map (geojson.io, QGIS, GitHub's file view): a
@@ -33,6 +38,13 @@ import java.util.Map;
  * ring of {@value #CIRCLE_SEGMENTS} points, with {@code radius} and {@code center} in its
  * properties), each with {@code "fence": "inclusion"} or {@code "exclusion"}, and a Point for its
  * return point ({@code "fence": "return point"}); rally points are Points with {@code "rally": n}.
+ *
+ * <p>Each mapping item of the file (a survey, corridor or structure scan) adds its outline, a
+ * Polygon (a LineString for a corridor's path) with {@code kind} (QGroundControl's complex item
+ * type), {@code word}, {@code seq} (its first item), {@code altitude}, {@code gsd} (cm/px; null
+ * without a camera), {@code photos}, {@code spacing} and {@code triggerDistance} (m), and its photos'
+ * ground footprints as one MultiPolygon ({@code "footprints": word}): a single feature keeps a
+ * survey of thousands of photos a small file that map viewers still draw at once.
  */
 public final class GeoJsonFile {
 
@@ -86,6 +98,7 @@ public final class GeoJsonFile {
             properties.put("path", "flight path");
             features.add(feature(FileValues.ordered("type", "LineString", "coordinates", path), properties));
         }
+        addMappingItems(file, features);
         addFence(file.fence(), features);
         for (MissionItem it : file.rally().items()) {
             features.add(feature(FileValues.ordered("type", "Point", "coordinates",
@@ -101,6 +114,41 @@ public final class GeoJsonFile {
 
     public static void write(Path file, String name, List<MissionItem> items) throws IOException {
         Files.writeString(file, write(name, items), StandardCharsets.UTF_8);
+    }
+
+    /** Each mapping item's outline with its numbers, then its photo footprints as one MultiPolygon. */
+    private static void addMappingItems(MissionFile file, List<Object> features) {
+        for (Map.Entry<Integer, MappingItem> e : new TreeMap<>(file.mappingItems()).entrySet()) {
+            MappingItem m = e.getValue();
+            List<Object> outline = new ArrayList<>();
+            m.outline().forEach(v -> outline.add(lonLat(v)));
+            Map<String, Object> geometry;
+            if (m.closedOutline()) {
+                outline.add(outline.get(0)); // GeoJSON closes its rings
+                geometry = FileValues.ordered("type", "Polygon", "coordinates", List.of(outline));
+            } else {
+                geometry = FileValues.ordered("type", "LineString", "coordinates", outline);
+            }
+            PhotoGrid grid = m.photoGrid();
+            Coverage coverage = m.coverage();
+            features.add(feature(geometry, FileValues.ordered("kind", m.qgcType(), "word", m.name(), "seq", e.getKey(),
+                    "altitude", FileValues.jsonDouble(grid.altitude()), "gsd", FileValues.jsonDouble(coverage.gsd()),
+                    "photos", coverage.photos(), "spacing", FileValues.jsonDouble(grid.spacing()),
+                    "triggerDistance", FileValues.jsonDouble(grid.triggerDistance()))));
+            List<List<Position>> footprints = m.footprints();
+            if (footprints.isEmpty()) {
+                continue;
+            }
+            List<Object> polygons = new ArrayList<>();
+            for (List<Position> corners : footprints) {
+                List<Object> ring = new ArrayList<>();
+                corners.forEach(c -> ring.add(lonLat(c)));
+                ring.add(ring.get(0));
+                polygons.add(List.of(ring));
+            }
+            features.add(feature(FileValues.ordered("type", "MultiPolygon", "coordinates", polygons),
+                    FileValues.ordered("footprints", m.name(), "seq", e.getKey(), "photos", footprints.size())));
+        }
     }
 
     private static void addFence(Fence fence, List<Object> features) {
@@ -129,7 +177,7 @@ public final class GeoJsonFile {
                         FileValues.ordered("fence", "return point", "frame", it.frameName()))));
     }
 
-    private static List<Object> lonLat(dolphin.core.Position p) {
+    private static List<Object> lonLat(Position p) {
         return Arrays.asList(degrees(MissionItem.degE7(p.longitudeDegrees())), degrees(MissionItem.degE7(p.latitudeDegrees())));
     }
 

@@ -1,21 +1,36 @@
 package dolphin.mission.file;
 
+import dolphin.mission.model.DroneCommand;
 import dolphin.mission.model.Fence;
+import dolphin.mission.model.Mission;
 import dolphin.mission.model.MissionItem;
+import dolphin.mission.model.MissionPoint;
 import dolphin.mission.model.RallyPoints;
 import dolphin.mission.model.VehicleProfile;
+import dolphin.mission.survey.MappingItem;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
  * What a mission file holds: a mission's items (item 0 the home; empty for a file of only a fence
- * or only rally points), a geofence, rally points, and the vehicle the file was made for.
+ * or only rally points), a geofence, rally points, the vehicle the file was made for, and the
+ * mission's mapping items (surveys, corridor and structure scans) by the seq of their first item,
+ * which a plan writes as QGroundControl's editable complex items. Reading a file gives none: its
+ * complex items are read as the items they expand to.
  */
-public record MissionFile(List<MissionItem> mission, Fence fence, RallyPoints rally, VehicleProfile vehicle) {
+public record MissionFile(List<MissionItem> mission, Fence fence, RallyPoints rally, VehicleProfile vehicle,
+                          Map<Integer, MappingItem> mappingItems) {
 
     public MissionFile {
         mission = List.copyOf(mission);
+        mappingItems = Map.copyOf(mappingItems);
+    }
+
+    public MissionFile(List<MissionItem> mission, Fence fence, RallyPoints rally, VehicleProfile vehicle) {
+        this(mission, fence, rally, vehicle, Map.of());
     }
 
     /** A mission alone, for an ArduPilot copter. */
@@ -23,16 +38,35 @@ public record MissionFile(List<MissionItem> mission, Fence fence, RallyPoints ra
         return new MissionFile(mission, Fence.NONE, RallyPoints.NONE, VehicleProfile.ARDUPILOT_COPTER);
     }
 
+    /**
+     * A Mission with its fence, rally points, vehicle profile and mapping items.
+     *
+     * @param items the mission's items as {@link Mission#items} gave them
+     */
+    public static MissionFile of(Mission mission, List<MissionItem> items) {
+        Map<Integer, MappingItem> mapping = new HashMap<>();
+        int seq = 1;
+        for (DroneCommand c : mission.getCommandList()) {
+            if (c instanceof MappingItem m) {
+                mapping.put(seq, m);
+            }
+            if (c instanceof MissionPoint p) {
+                seq += p.messageCount();
+            }
+        }
+        return new MissionFile(items, mission.fence(), mission.rally(), mission.vehicleProfile(), mapping);
+    }
+
     public MissionFile withFence(Fence f) {
-        return new MissionFile(mission, f, rally, vehicle);
+        return new MissionFile(mission, f, rally, vehicle, mappingItems);
     }
 
     public MissionFile withRally(RallyPoints r) {
-        return new MissionFile(mission, fence, r, vehicle);
+        return new MissionFile(mission, fence, r, vehicle, mappingItems);
     }
 
     public MissionFile withVehicle(VehicleProfile v) {
-        return new MissionFile(mission, fence, rally, v);
+        return new MissionFile(mission, fence, rally, v, mappingItems);
     }
 
     public boolean hasMission() {

@@ -6,6 +6,7 @@ import dolphin.mission.model.Mission;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.RallyPoints;
 import dolphin.mission.model.VehicleProfile;
+import dolphin.mission.survey.MappingItem;
 import com.MAVLink.enums.MAV_AUTOPILOT;
 import com.MAVLink.enums.MAV_CMD;
 import groovy.json.JsonException;
@@ -62,22 +63,29 @@ public final class PlanFile {
      * The file's JSON: the mission (item 0 the home, as {@link Mission#items} gives them), its
      * fence and rally points, and the vehicle profile (firmware, vehicle type, speeds). A file
      * without a mission gets its first fence or rally position as the planned home, at height 0.
+     * The file's mapping items become ComplexItems that QGroundControl opens as editable surveys
+     * ({@link PlanComplexItems}); the other items SimpleItems.
+     *
+     * @throws IllegalArgumentException when a mapping item's items are not the mission's at its seq
      */
     public static String write(MissionFile file) {
         List<MissionItem> items = file.mission();
         MissionItem home = items.isEmpty() ? airspaceHome(file) : items.get(0);
         List<Object> simpleItems = new ArrayList<>();
         for (int i = 1; i < items.size(); i++) {
-            MissionItem it = items.get(i);
-            Map<String, Object> item = new LinkedHashMap<>();
-            item.put("type", "SimpleItem");
-            item.put("command", it.command());
-            item.put("frame", ItemText.fileFrame(it.frame()));
-            item.put("params", Arrays.asList(number(it.param1()), number(it.param2()), number(it.param3()),
-                    number(it.param4()), degrees(it.x()), degrees(it.y()), number(it.z())));
-            item.put("autoContinue", it.autocontinue());
-            item.put("doJumpId", i);
-            simpleItems.add(item);
+            MappingItem complex = file.mappingItems().get(i);
+            if (complex == null) {
+                simpleItems.add(simpleItem(items.get(i), i));
+                continue;
+            }
+            List<MissionItem> own = complex.items(i);
+            List<MissionItem> expanded = items.subList(i, Math.min(items.size(), i + own.size()));
+            if (!expanded.equals(own)) {
+                throw new IllegalArgumentException("item " + i + ": the mission's items are not those of its "
+                        + complex.qgcType() + " '" + complex.name() + "', which starts there");
+            }
+            simpleItems.add(PlanComplexItems.write(complex, expanded));
+            i += expanded.size() - 1;
         }
         VehicleProfile v = file.vehicle();
         Map<String, Object> mission = new LinkedHashMap<>();
@@ -99,14 +107,27 @@ public final class PlanFile {
         return JsonOutput.prettyPrint(JSON.toJson(plan)) + "\n";
     }
 
+    /** A SimpleItem as QGroundControl writes it; {@code doJumpId} the item's seq, which DO_JUMP targets name. */
+    static Map<String, Object> simpleItem(MissionItem it, int doJumpId) {
+        Map<String, Object> item = new LinkedHashMap<>();
+        item.put("type", "SimpleItem");
+        item.put("command", it.command());
+        item.put("frame", ItemText.fileFrame(it.frame()));
+        item.put("params", Arrays.asList(number(it.param1()), number(it.param2()), number(it.param3()),
+                number(it.param4()), degrees(it.x()), degrees(it.y()), number(it.z())));
+        item.put("autoContinue", it.autocontinue());
+        item.put("doJumpId", doJumpId);
+        return item;
+    }
+
     public static void write(Path file, List<MissionItem> items) throws IOException {
         Files.writeString(file, write(items), StandardCharsets.UTF_8);
     }
 
     /**
      * The items of a plan: item 0 a NAV_WAYPOINT at {@code plannedHomePosition} (the home item
-     * {@link Mission#items} makes), then the SimpleItems, the ComplexItems' pre-expanded items
-     * flattened in place, numbered from 1 in file order.
+     * {@link Mission#items} makes), then the SimpleItems and the ComplexItems' items in place (those
+     * QGroundControl stored, else regenerated: {@link PlanItems}), numbered from 1 in file order.
      *
      * @throws IllegalArgumentException saying what is wrong, for a text that is not such a plan
      */

@@ -77,11 +77,11 @@ public final class PolygonFile {
         String where;
         if (start.startsWith("<")) {
             int skipped = (int) t.substring(0, t.length() - start.length()).chars().filter(c -> c == '\n').count();
-            Shape s = kml(start, skipped, polygon);
+            VerticesFound s = kml(start, skipped, polygon);
             points = s.points;
             where = s.where;
         } else if (start.startsWith("{")) {
-            Shape s = json(start, polygon);
+            VerticesFound s = json(start, polygon);
             points = s.points;
             where = s.where;
         } else {
@@ -100,7 +100,7 @@ public final class PolygonFile {
     }
 
     /** The points read and where they were, for errors about the shape as a whole. */
-    private record Shape(List<Position> points, String where) {
+    private record VerticesFound(List<Position> points, String where) {
     }
 
     private static Position position(double lat, double lon, String where) {
@@ -145,7 +145,7 @@ public final class PolygonFile {
     }
 
     /** The first Polygon's outer ring or LineString's coordinates, with the line each tuple is on. */
-    private static Shape kml(String text, int skippedLines, boolean polygon) {
+    private static VerticesFound kml(String text, int skippedLines, boolean polygon) {
         KmlHandler handler = new KmlHandler(polygon);
         try {
             SAXParserFactory factory = SAXParserFactory.newInstance();
@@ -165,7 +165,7 @@ public final class PolygonFile {
                     + " <kml>)") + (handler.other ? "; it has a " + (polygon ? "<LineString>: read it as a path"
                     : "<Polygon>: read it as a polygon") : ""));
         }
-        return new Shape(tuples(handler.coordinates.toString(), handler.line + skippedLines),
+        return new VerticesFound(tuples(handler.coordinates.toString(), handler.line + skippedLines),
                 "the KML's " + (polygon ? "<Polygon>" : "<LineString>") + " at line " + (handler.line + skippedLines));
     }
 
@@ -274,7 +274,7 @@ public final class PolygonFile {
         }
     }
 
-    private static Shape json(String text, boolean polygon) {
+    private static VerticesFound json(String text, boolean polygon) {
         Object root;
         try {
             root = new JsonSlurper().parseText(text);
@@ -291,7 +291,7 @@ public final class PolygonFile {
                     + " (\"fileType\": \"Plan\")");
         }
         List<String> seen = new ArrayList<>();
-        Shape found = geoJson(json, "", polygon, seen);
+        VerticesFound found = geoJson(json, "", polygon, seen);
         if (found == null) {
             throw new IllegalArgumentException("no " + (polygon ? "Polygon or MultiPolygon" : "LineString or MultiLineString")
                     + " in the GeoJSON" + (seen.isEmpty() ? "" : "; it has " + String.join(", ", seen)));
@@ -300,13 +300,13 @@ public final class PolygonFile {
     }
 
     /** The first matching geometry at or under {@code value}, or null; {@code seen} collects the other types. */
-    private static Shape geoJson(Map<?, ?> json, String where, boolean polygon, List<String> seen) {
+    private static VerticesFound geoJson(Map<?, ?> json, String where, boolean polygon, List<String> seen) {
         String at = where.isEmpty() ? "" : where + ".";
         Object type = json.get("type");
         if ("FeatureCollection".equals(type)) {
             List<?> features = PlanJson.list(json.get("features"), at + "features");
             for (int i = 0; i < features.size(); i++) {
-                Shape s = geoJson(PlanJson.map(features.get(i), at + "features[" + i + "]"), at + "features[" + i + "]",
+                VerticesFound s = geoJson(PlanJson.map(features.get(i), at + "features[" + i + "]"), at + "features[" + i + "]",
                         polygon, seen);
                 if (s != null) {
                     return s;
@@ -321,7 +321,7 @@ public final class PolygonFile {
         if ("GeometryCollection".equals(type)) {
             List<?> geometries = PlanJson.list(json.get("geometries"), at + "geometries");
             for (int i = 0; i < geometries.size(); i++) {
-                Shape s = geoJson(PlanJson.map(geometries.get(i), at + "geometries[" + i + "]"),
+                VerticesFound s = geoJson(PlanJson.map(geometries.get(i), at + "geometries[" + i + "]"),
                         at + "geometries[" + i + "]", polygon, seen);
                 if (s != null) {
                     return s;
@@ -356,7 +356,7 @@ public final class PolygonFile {
         return l.get(0);
     }
 
-    private static Shape lonLats(Object array, String where) {
+    private static VerticesFound lonLats(Object array, String where) {
         List<?> l = PlanJson.list(array, where);
         List<Position> points = new ArrayList<>();
         for (int i = 0; i < l.size(); i++) {
@@ -369,11 +369,11 @@ public final class PolygonFile {
             points.add(Position.fromDegrees(PlanJson.degrees(p.get(1), 90, w + "[1] (latitude)"),
                     PlanJson.degrees(p.get(0), 180, w + "[0] (longitude)"), 0));
         }
-        return new Shape(points, where);
+        return new VerticesFound(points, where);
     }
 
     /** A plan's first survey or structure scan polygon, else its first fence polygon; or its first corridor's polyline. */
-    private static Shape plan(Map<?, ?> plan, boolean polygon) {
+    private static VerticesFound plan(Map<?, ?> plan, boolean polygon) {
         String key = polygon ? "polygon" : "polyline";
         Object mission = plan.get("mission");
         if (mission != null) {
@@ -399,7 +399,7 @@ public final class PolygonFile {
                 : "the plan has no polyline: no corridor scan in mission.items");
     }
 
-    private static Shape latLons(Object array, String where) {
+    private static VerticesFound latLons(Object array, String where) {
         List<?> l = PlanJson.list(array, where);
         List<Position> points = new ArrayList<>();
         for (int i = 0; i < l.size(); i++) {
@@ -411,6 +411,6 @@ public final class PolygonFile {
             points.add(Position.fromDegrees(PlanJson.degrees(p.get(0), 90, w + "[0] (latitude)"),
                     PlanJson.degrees(p.get(1), 180, w + "[1] (longitude)"), 0));
         }
-        return new Shape(points, where);
+        return new VerticesFound(points, where);
     }
 }

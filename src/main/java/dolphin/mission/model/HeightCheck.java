@@ -44,24 +44,25 @@ public final class HeightCheck {
 
     /**
      * The first item out of bounds: under water, above the surface or deeper than the limit; in
-     * the air, below home + clearance. Empty when there is none, and for a mission in the air when
-     * home is unknown or the mission allows going lower.
+     * the air, below home + clearance. Empty when there is none, and for a mission in the air that
+     * allows going lower. With home unknown, only items whose height is above home are checked.
      */
     public static Optional<Unsafe> firstUnsafe(Mission mission, Position home) {
         Optional<Underwater> water = mission.underwater();
         if (water.isPresent()) {
             return firstOutOfWater(mission, water.get());
         }
-        if (home == null || mission.belowHomeAllowed()) {
+        if (mission.belowHomeAllowed()) {
             return Optional.empty();
         }
         return first(mission, (p, item) -> {
             double height = heightAboveHome(item, home);
             return FLOWN_AT_HEIGHT.contains(item.command()) && height < CLEARANCE ? String.format(Locale.ROOT,
-                    "mission %s: item %d (%s, %s) is %.1f m above home (home at %.1f m): lower than the %.0f m"
+                    "mission %s: item %d (%s, %s) is %.1f m above home%s: lower than the %.0f m"
                             + " clearance, into the ground or nearly; only landings go lower. Raise it, or write"
                             + " 'allowBelowHome true' in the mission if this is intended",
-                    mission.getId(), item.seq(), p.name(), item.commandName(), height, home.hae(), CLEARANCE) : null;
+                    mission.getId(), item.seq(), p.name(), item.commandName(), height,
+                    home == null ? "" : String.format(Locale.ROOT, " (home at %.1f m)", home.hae()), CLEARANCE) : null;
         });
     }
 
@@ -115,10 +116,10 @@ public final class HeightCheck {
         return Optional.empty();
     }
 
-    /** The item's height above home, from its frame; +infinity for frames whose height is not known here. */
+    /** The item's height above home, from its frame; +infinity for heights not known here (home may be null). */
     private static double heightAboveHome(MissionItem item, Position home) {
         return switch (MissionItem.altitudeReference(item.frame())) {
-            case MAV_FRAME.MAV_FRAME_GLOBAL -> item.z() - home.hae();
+            case MAV_FRAME.MAV_FRAME_GLOBAL -> home == null ? Double.POSITIVE_INFINITY : item.z() - home.hae();
             case MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT -> item.z();
             default -> Double.POSITIVE_INFINITY;
         };

@@ -142,6 +142,15 @@ public final class Mission {
             if (c instanceof MissionPoint p && p.getPosition() != null) {
                 return p.getPosition();
             }
+            if (c instanceof MissionPoint p) {
+                // a generated pattern (a survey) has no position of its own: its first item's, at sea level,
+                // since its heights may be above a home not known here
+                for (MissionItem item : p.items(1)) {
+                    if (item.frame() != MissionItem.MISSION && (item.x() != 0 || item.y() != 0)) {
+                        return Position.fromDegrees(item.x() * 1e-7, item.y() * 1e-7, 0);
+                    }
+                }
+            }
         }
         throw new EnvironmentException("mission " + getId() + " has no home: name one with 'home', or give it a position");
     }

@@ -19,14 +19,16 @@ public record Camera(String name, double sensorWidth, double sensorHeight, int i
         positive(name, "sensor height", sensorHeight, "mm");
         positive(name, "focal length", focalLength, "mm");
         if (imageWidth <= 0) {
-            throw new IllegalArgumentException("camera '" + name + "': the image width must be above 0 px, got " + imageWidth);
+            throw new IllegalArgumentException("camera '" + name + "': the image width must be above 0 px, got "
+                    + imageWidth);
         }
         if (imageHeight <= 0) {
-            throw new IllegalArgumentException("camera '" + name + "': the image height must be above 0 px, got " + imageHeight);
+            throw new IllegalArgumentException("camera '" + name + "': the image height must be above 0 px, got "
+                    + imageHeight);
         }
         if (!(minTriggerInterval >= 0) || Double.isInfinite(minTriggerInterval)) {
             throw new IllegalArgumentException("camera '" + name + "': the minimum trigger interval must be 0 s or more, got "
-                    + minTriggerInterval);
+                    + Numbers.format(minTriggerInterval));
         }
     }
 

@@ -48,7 +48,8 @@ public final class Cameras {
     private Cameras() {
     }
 
-    private static Camera cam(String name, double sw, double sh, int iw, int ih, double f, double minInterval, boolean fixed) {
+    private static Camera cam(String name, double sw, double sh, int iw, int ih, double f, double minInterval,
+                              boolean fixed) {
         return new Camera(name, sw, sh, iw, ih, f, minInterval, fixed);
     }
 

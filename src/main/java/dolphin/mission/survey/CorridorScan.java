@@ -106,6 +106,16 @@ public final class CorridorScan extends MappingItem {
     }
 
     @Override
+    public HeightReference heightReference() {
+        return options().height();
+    }
+
+    @Override
+    public double lastHeight() {
+        return photoGrid().altitude();
+    }
+
+    @Override
     public String qgcType() {
         return "CorridorScan";
     }

@@ -5,7 +5,10 @@ package dolphin.mission.survey;
  * only in where the camera trigger commands go and in the stop command's param3.
  */
 public enum Emission {
-    /** Generation C, current QGC: trigger restarted at every entry, stop with param3 1; corridors relabel reversed transects. */
+    /**
+     * Generation C, current QGC: the trigger restarted at every entry, stops with param3 1;
+     * corridors relabel their reversed transects.
+     */
     CURRENT,
     /** Generation A, the QGC 3.x survey builder: one start and one stop with images in turnarounds, stop param3 0. */
     LEGACY_SURVEY,

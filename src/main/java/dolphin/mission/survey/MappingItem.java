@@ -40,6 +40,12 @@ public abstract sealed class MappingItem extends MissionPoint permits PolygonSur
     @Override
     public abstract List<MissionItem> items(int seq);
 
+    /** What the items' heights are measured from. */
+    public abstract HeightReference heightReference();
+
+    /** The height of the last waypoint, measured from {@link #heightReference()}: where the vehicle is when the item ends. */
+    public abstract double lastHeight();
+
     /** QGC's complexItemType: "survey", "CorridorScan" or "StructureScan". */
     public abstract String qgcType();
 

@@ -155,6 +155,16 @@ public final class PolygonSurvey extends MappingItem {
     }
 
     @Override
+    public HeightReference heightReference() {
+        return options().height();
+    }
+
+    @Override
+    public double lastHeight() {
+        return photoGrid().altitude();
+    }
+
+    @Override
     public String qgcType() {
         return "survey";
     }

@@ -71,7 +71,8 @@ final class QgcGeo {
         double lat1 = Math.toRadians(a.lat());
         double lat2 = Math.toRadians(b.lat());
         double y = StrictMath.sin(dLon) * StrictMath.cos(lat2);
-        double x = StrictMath.cos(lat1) * StrictMath.sin(lat2) - StrictMath.sin(lat1) * StrictMath.cos(lat2) * StrictMath.cos(dLon);
+        double x = StrictMath.cos(lat1) * StrictMath.sin(lat2)
+                - StrictMath.sin(lat1) * StrictMath.cos(lat2) * StrictMath.cos(dLon);
         double azimuth = Math.toDegrees(StrictMath.atan2(y, x)) + 360.0;
         double whole = azimuth < 0 ? Math.ceil(azimuth) : Math.floor(azimuth);
         return ((int) whole + 360) % 360 + (azimuth - whole);
@@ -88,7 +89,8 @@ final class QgcGeo {
         double cosRatio = StrictMath.cos(ratio);
         double sinRatio = StrictMath.sin(ratio);
         double lat2 = StrictMath.asin(sinLat1 * cosRatio + cosLat1 * sinRatio * StrictMath.cos(az));
-        double lon2 = lon1 + StrictMath.atan2(StrictMath.sin(az) * sinRatio * cosLat1, cosRatio - sinLat1 * StrictMath.sin(lat2));
+        double lon2 = lon1 + StrictMath.atan2(StrictMath.sin(az) * sinRatio * cosLat1,
+                cosRatio - sinLat1 * StrictMath.sin(lat2));
         double lon = Math.toDegrees(lon2);
         // Qt's wrapLong: one step, not a modulo, so ordinary longitudes keep every bit
         if (lon > 180) {

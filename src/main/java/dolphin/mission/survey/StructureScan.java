@@ -220,6 +220,16 @@ public final class StructureScan extends MappingItem {
     }
 
     @Override
+    public HeightReference heightReference() {
+        return HeightReference.ABOVE_HOME;
+    }
+
+    @Override
+    public double lastHeight() {
+        return entranceAltitude();
+    }
+
+    @Override
     public String qgcType() {
         return "StructureScan";
     }

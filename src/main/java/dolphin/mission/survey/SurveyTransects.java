@@ -208,7 +208,8 @@ final class SurveyTransects {
     }
 
     /** Entry, hover stops, exit, framed by the turnarounds (§2.6). */
-    private static List<TransectPoint> points(GeoPoint entry, GeoPoint exit, TransectOptions options, double triggerDistance) {
+    private static List<TransectPoint> points(GeoPoint entry, GeoPoint exit, TransectOptions options,
+                                              double triggerDistance) {
         List<TransectPoint> out = new ArrayList<>();
         double t = options.turnaround();
         if (t > 0) {

@@ -12,7 +12,8 @@ public record TransectOptions(double turnaround, boolean triggerInTurnarounds, b
 
     public TransectOptions {
         if (!(turnaround >= 0) || Double.isInfinite(turnaround)) {
-            throw new IllegalArgumentException("the turnaround distance must be 0 m or more, got " + Numbers.format(turnaround));
+            throw new IllegalArgumentException("the turnaround distance must be 0 m or more, got "
+                    + Numbers.format(turnaround));
         }
         Objects.requireNonNull(height, "height");
         Objects.requireNonNull(emission, "emission");

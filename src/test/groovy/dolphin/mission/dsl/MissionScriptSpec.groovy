@@ -271,7 +271,7 @@ class MissionScriptSpec extends Specification {
         !variable('m1').executor.is(variable('m1').executor)
     }
 
-    def "every command of C.6 rows 1 to 30, allowBelowHome, fence, rally and the underwater words, is a builder method, has its forms for errors and is documented"() {
+    def "every command of C.6 rows 1 to 30, allowBelowHome, fence, rally, the underwater and the mapping words, is a builder method, has its forms for errors and is documented"() {
         given:
         Set<String> methods = MissionBuilder.declaredMethods
                 .findAll { Modifier.isPublic(it.modifiers) && !it.synthetic && !it.name.startsWith('\$') }*.name
@@ -285,7 +285,7 @@ class MissionScriptSpec extends Specification {
                     'moveAndLoiterTimeFromHome', 'loiterPos', 'loiterTurns', 'loiterTime', 'landingPoint', 'returnHome',
                     'returnHomeAndLoiter', 'returnHomeAndLand', 'speed', 'altitude', 'delay', 'surveyArea', 'capturePhoto',
                     'captureSeveralPhotos', 'captureUntilStop', 'stopCapturing', 'jumpToItem', 'allowBelowHome', 'fence',
-                    'rally', 'maxDepth', 'dive', 'surface'].toSet()
+                    'rally', 'maxDepth', 'dive', 'surface', 'survey', 'corridorScan', 'structureScan'].toSet()
         methods.every { doc.contains("`${it}(") || doc.contains("`${it} {") }
     }
 

@@ -99,4 +99,46 @@ class GeoJsonFileSpec extends Specification {
         where:
         format << [MissionFormat.PLAN, MissionFormat.WAYPOINTS]
     }
+
+    def "a survey adds its outline with its numbers and its photo footprints as one MultiPolygon"() {
+        given:
+        def survey = PlanComplexItemsSpec.cameraSurvey()
+        MissionFile f = PlanComplexItemsSpec.file(survey)
+
+        when:
+        def features = (new JsonSlurper().parseText(GeoJsonFile.write('survey', f)) as Map).features
+        def outline = features.find { it.properties.kind == 'survey' }
+        def footprints = features.find { it.properties.footprints }
+
+        then:
+        outline.geometry.type == 'Polygon'
+        outline.geometry.coordinates[0].size() == 5
+        outline.geometry.coordinates[0][0] == [-7.376, 40.445]
+        outline.properties.word == 'survey'
+        outline.properties.seq == 2
+        outline.properties.photos == survey.coverage().photos()
+        outline.properties.gsd == survey.coverage().gsd()
+        outline.properties.spacing == survey.photoGrid().spacing()
+        outline.properties.triggerDistance == survey.photoGrid().triggerDistance()
+
+        and:
+        footprints.geometry.type == 'MultiPolygon'
+        footprints.geometry.coordinates.size() == survey.footprints().size()
+        footprints.geometry.coordinates.every { it.size() == 1 && it[0].size() == 5 && it[0][0] == it[0][4] }
+        footprints.properties == [footprints: 'survey', seq: 2, photos: survey.footprints().size()]
+    }
+
+    def "a corridor's outline is its path, a LineString; a manual survey has no footprints"() {
+        when:
+        def features = (new JsonSlurper().parseText(GeoJsonFile.write('c', PlanComplexItemsSpec.file(item))) as Map).features
+
+        then:
+        features.find { it.properties.kind == kind }.geometry.type == geometry
+        features.find { it.properties.footprints } == null
+
+        where:
+        item                                 | kind           | geometry
+        PlanComplexItemsSpec.manualSurvey()  | 'survey'       | 'Polygon'
+        PlanComplexItemsSpec.corridor()      | 'CorridorScan' | 'LineString'
+    }
 }

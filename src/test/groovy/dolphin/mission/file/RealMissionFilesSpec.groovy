@@ -60,7 +60,7 @@ class RealMissionFilesSpec extends Specification {
         if (!Files.isRegularFile(origins)) {
             throw new IllegalStateException("the real mission files are missing: expected $origins")
         }
-        // The rows whose files are under surveys/ (QGroundControl's complex items) are the survey work's.
+        // The rows whose files are under surveys/ (QGroundControl's complex items) are read by surveyPlans().
         Files.readAllLines(origins).findAll { it.trim() }.collect { line ->
             List<String> f = line.split('\t') as List
             String repo = f[0].split('@')[0].replace('/', '+')
@@ -70,6 +70,15 @@ class RealMissionFilesSpec extends Specification {
             }
             Files.exists(file) ? file : null
         }.findAll()
+    }
+
+    /** The plans with QGroundControl's complex items, under surveys/ (docs/qgc-surveys.md §5). */
+    static List<Path> surveyPlans() {
+        Path surveys = DIRECTORY.resolve('surveys')
+        if (!Files.isDirectory(surveys)) {
+            throw new IllegalStateException("the survey plans are missing: expected $surveys")
+        }
+        Files.walk(surveys).withCloseable { s -> s.filter { it.toString().endsWith('.plan') }.sorted().toList() }
     }
 
     static boolean isJson(Path p) {
@@ -150,6 +159,51 @@ class RealMissionFilesSpec extends Specification {
         where:
         file << listed().findAll { !REFUSED.containsKey(it.fileName.toString()) }
         name = DIRECTORY.relativize(file).toString()
+    }
+
+    def "#name: stored survey items read as they are, a structure scan regenerated: (N + 3) L + 4 items"() {
+        given:
+        MissionFile f = MissionFile.read(file)
+        Map mission = (new JsonSlurper().parse(file.toFile()) as Map).mission as Map
+        List<MissionItem> ours = f.mission().drop(1)
+        int at = 0
+
+        expect:
+        mission.items.each { Map e ->
+            if (e.type == 'ComplexItem' && e.TransectStyleComplexItem?.Items == null) {
+                assert e.complexItemType == 'StructureScan'
+                int n = e.polygon.size()
+                int layers = e.Layers
+                double h = e.CameraCalc.AdjustedFootprintFrontal
+                List<MissionItem> scan = ours.subList(at, at + (n + 3) * layers + 4)
+                List<Float> layerHeights = (0..<layers).collect {
+                    (float) (e.StartFromTop ? e.StructureHeight - h / 2 - it * h : e.ScanBottomAlt + h / 2 + it * h)
+                }
+                assert [scan.first(), scan.last()].every {
+                    it.command() == MAV_CMD.MAV_CMD_NAV_WAYPOINT && it.z() == (e.EntranceAltitude as float)
+                }
+                assert scan.findAll { it.command() == MAV_CMD.MAV_CMD_NAV_WAYPOINT }.drop(1).dropRight(1)*.z().unique() == layerHeights
+                assert scan.every { it.command() != MAV_CMD.MAV_CMD_NAV_WAYPOINT || it.frame() == MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT }
+                at += scan.size()
+            } else {
+                flatten([e]).each { assert same(it, ours[at++]) }
+            }
+        }
+        at == ours.size()
+
+        where:
+        file << surveyPlans()
+        name = DIRECTORY.relativize(file).toString()
+    }
+
+    def "the survey plans have the structure scan of docs/qgc-surveys.md §5: 10 layers of 4 vertices"() {
+        when:
+        Path scan = surveyPlans().find { it.fileName.toString() == 'technopark_structure_scan.plan' }
+        Map json = new JsonSlurper().parse(scan.toFile()) as Map
+
+        then:
+        json.mission.items.count { it.type == 'SimpleItem' } == 7
+        MissionFile.read(scan).mission().size() == 1 + 7 + (4 + 3) * 10 + 4
     }
 
     def "#name, wrong on purpose, is refused in one line naming the file"() {
