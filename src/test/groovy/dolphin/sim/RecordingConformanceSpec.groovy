@@ -17,7 +17,8 @@ import spock.lang.Specification
  * and after 15 s, both ending in a landing, a disarm and the mission started over; a fence breach
  * ending in RTL, the mission stopped, the copter still descending; a rover's square ending COMPLETE; a
  * plane's circuit ending in its own RTL; a boat's square, driven as the rover drives it; every mission command, then a second mission uploaded over
- * the first, which keeps its current item; a sub armed before its position estimate, refused AUTO
+ * the first, which keeps its current item; a survey with its camera triggers (DO_SET_CAM_TRIGG_DIST between
+ * the waypoints, which MISSION_CURRENT never names), ending as the first flight ends; a sub armed before its position estimate, refused AUTO
  * until it had one, then three waypoints at 10 m depth, COMPLETE, and a disarm at depth that resets
  * the mission; dolphin's AMSL items refused by a sub ("Bad alt frame"), on DO_SET_MISSION_CURRENT and
  * again on AUTO, the mission COMPLETE at once (docs/mavlink.md, "The simulated fleet and real ArduPilot").
@@ -88,6 +89,9 @@ class RecordingConformanceSpec extends Specification {
         'boat-square'                 | VehicleKind.BOAT   || ['HEARTBEAT armed=1 mode=10', 'MISSION_ITEM_REACHED seq=3',
                                                                'MISSION_CURRENT seq=4 total=4 state=3', 'MISSION_ITEM_REACHED seq=4',
                                                                'MISSION_CURRENT seq=4 total=4 state=5']
+        'copter-survey'               | VehicleKind.COPTER || ['MISSION_CURRENT seq=24 total=24 state=3', 'EXTENDED_SYS_STATE landed_state=4',
+                                                               'STATUSTEXT SIM Hit ground', 'STATUSTEXT Disarming motors',
+                                                               'MISSION_CURRENT seq=1 total=24 state=3', 'HEARTBEAT armed=0 mode=3']
         'sub-dive-mission'            | VehicleKind.SUB    || ['HEARTBEAT armed=1 mode=19', 'COMMAND_ACK command=176 result=4',
                                                                'STATUSTEXT Mode change failed: Auto requires position',
                                                                'HEARTBEAT armed=1 mode=3', 'MISSION_CURRENT seq=1 total=3 state=3',
