@@ -28,12 +28,11 @@ public final class StructureBuilder extends MappingBuilder {
     private double bottom;
     private double entrance = Double.NaN;
     private boolean fromTop = true;
-    private double pitch;
     private double layerHeight = Double.NaN;
 
     StructureBuilder(Supplier<Fence> fence) {
         super("structureScan", Set.of("polygon", "height", "bottom", "distance", "layerHeight", "startFromTop",
-                "entranceAltitude", "gimbalPitch"), fence);
+                "entranceAltitude"), fence);
     }
 
     @Word(POLYGON)
@@ -88,11 +87,6 @@ public final class StructureBuilder extends MappingBuilder {
         entrance = Args.positive(word, "entrance altitude", metres);
     }
 
-    @Word("The gimbal's pitch, degrees, without a camera (QGroundControl sets 0 with one)")
-    public void gimbalPitch(Number degrees) {
-        pitch = Args.number(word, "gimbal pitch", degrees);
-    }
-
     @Override
     String manualWords(String altitudeWord) {
         return "'distance METRES', 'layerHeight METRES' and 'triggerDistance METRES' (photos along a ring)";
@@ -125,7 +119,7 @@ public final class StructureBuilder extends MappingBuilder {
         PhotoGrid grid = photoGrid("distance");
         try {
             return new StructureScan("structureScan", polygon, grid, structureHeight, bottom,
-                    Double.isNaN(entrance) ? structureHeight : entrance, fromTop, grid.manual() ? pitch : 0);
+                    Double.isNaN(entrance) ? structureHeight : entrance, fromTop, 0);
         } catch (IllegalArgumentException e) {
             throw new DslException("structureScan: " + e.getMessage());
         }

@@ -1,5 +1,6 @@
 package dolphin.mission.survey;
 
+import dolphin.dsl.vocabulary.Suggestions;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
@@ -89,29 +90,10 @@ public final class Cameras {
         if (candidate.contains(typed) || typed.contains(candidate)) {
             return 0;
         }
-        return editDistance(candidate, typed);
+        return Suggestions.distance(candidate, typed);
     }
 
     private static String normal(String s) {
         return s.toLowerCase(Locale.ROOT).replaceAll("[\\s_-]+", " ").trim();
-    }
-
-    private static int editDistance(String a, String b) {
-        int[] prev = new int[b.length() + 1];
-        int[] cur = new int[b.length() + 1];
-        for (int j = 0; j <= b.length(); j++) {
-            prev[j] = j;
-        }
-        for (int i = 1; i <= a.length(); i++) {
-            cur[0] = i;
-            for (int j = 1; j <= b.length(); j++) {
-                int cost = a.charAt(i - 1) == b.charAt(j - 1) ? 0 : 1;
-                cur[j] = Math.min(Math.min(cur[j - 1] + 1, prev[j] + 1), prev[j - 1] + cost);
-            }
-            int[] swap = prev;
-            prev = cur;
-            cur = swap;
-        }
-        return prev[b.length()];
     }
 }

@@ -188,15 +188,18 @@ public final class StructureScan extends MappingItem {
         return out;
     }
 
-    /** §3.2: entrance, ROI, per layer a closed ring with the trigger on round it, ROI off, entrance. */
+    /** §3.2: entrance, region of interest, per layer a closed ring with the trigger on round it, ROI off, entrance. */
     @Override
     public List<MissionItem> items(int seq) {
         List<MissionItem> out = new ArrayList<>();
         GeoPoint entrance = ring.get(0);
         out.add(waypoint(seq++, entrance, entranceAltitude));
-        // params 5-7 of MAV_CMD_DO_SET_ROI_WPNEXT_OFFSET: pitch, roll, yaw offsets; x and y carry degE7 like a plan file's
-        out.add(new MissionItem(seq++, MAV_CMD.MAV_CMD_DO_SET_ROI_WPNEXT_OFFSET, MissionItem.MISSION, 0, 0, 0, 0,
-                MissionItem.degE7(gimbalPitch), 0, 90, true));
+        // QGC's DO_SET_ROI_WPNEXT_OFFSET is one ArduPilot refuses at upload (docs/decisions.md, "Camera triggers on
+        // ArduPilot"): the camera faces the structure's centre at mid-height instead, ArduPilot's way
+        GeoPoint centre = centre(polygon);
+        out.add(new MissionItem(seq++, MAV_CMD.MAV_CMD_DO_SET_ROI_LOCATION, MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT,
+                0, 0, 0, 0, MissionItem.degE7(centre.lat()), MissionItem.degE7(centre.lon()),
+                (float) ((scanBottom + structureHeight) / 2), true));
         float trigger = (float) photoGrid().spacing();
         for (int layer = 0; layer < layers; layer++) {
             double alt = layerAltitude(layer);
@@ -211,6 +214,17 @@ public final class StructureScan extends MappingItem {
         out.add(MissionItem.command(seq++, MAV_CMD.MAV_CMD_DO_SET_ROI_NONE, 0, 0, 0, 0));
         out.add(waypoint(seq, entrance, entranceAltitude));
         return List.copyOf(out);
+    }
+
+    /** The mean of the footprint's vertices: inside any building a structure scan goes round. */
+    private static GeoPoint centre(List<GeoPoint> polygon) {
+        double lat = 0;
+        double lon = 0;
+        for (GeoPoint p : polygon) {
+            lat += p.lat();
+            lon += p.lon();
+        }
+        return new GeoPoint(lat / polygon.size(), lon / polygon.size());
     }
 
     /** Waypoints above home whatever the grid says, as QGC emits them (§3.2). */

@@ -82,7 +82,9 @@ class CorridorAndStructureSpec extends Specification {
         (0..3).collect { s.layerAltitude(it) } == altitudes
         wps*.z() == [40f] + altitudes.collectMany { [it as float] * 5 } + [40f]
         wps*.frame().unique() == [MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT]
-        items[1].command() == MAV_CMD.MAV_CMD_DO_SET_ROI_WPNEXT_OFFSET && items[1].z() == 90f
+        // ArduPilot's region of interest instead of QGC's WPNEXT_OFFSET: the centre, half-way up the 10 to 30 m band
+        items[1].command() == MAV_CMD.MAV_CMD_DO_SET_ROI_LOCATION && items[1].z() == 20f
+        items[1].frame() == MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT
         items[-2].command() == MAV_CMD.MAV_CMD_DO_SET_ROI_NONE
         items.findAll { it.command() == TRIG }.collect { [it.param1(), it.param3()] } == [[8f, 1f], [0f, 0f]] * 4
         items[2..4]*.command() == [WP, TRIG, WP]
