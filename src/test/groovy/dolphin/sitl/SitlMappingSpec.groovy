@@ -34,9 +34,10 @@ import static dolphin.testing.ScriptLines.inOrder
  * camera (CAM1_TYPE 1 from a parameter file): a survey and a corridor scan flown to the landing,
  * every camera trigger item run and every photo reported in CAMERA_FEEDBACK; and the corpus'
  * structure scan, whose plan stores no items, rebuilt by the plan reader and uploaded: ArduCopter
- * refuses the two commands it has no mission item for and stores the rest as built (docs/decisions.md,
- * "Camera triggers on ArduPilot"). Runs only when ARDUPILOT_SITL_BIN names an arducopter binary;
- * the structure scan also needs the corpus beside the repository (-Ddolphin.missionFiles).
+ * refuses the plan's SET_CAMERA_MODE and QGroundControl's DO_SET_ROI_WPNEXT_OFFSET, and stores the
+ * scan as Dolphin builds it (docs/decisions.md, "Camera triggers on ArduPilot"). Runs only when
+ * ARDUPILOT_SITL_BIN names an arducopter binary; the structure scan also needs the corpus beside
+ * the repository (-Ddolphin.missionFiles).
  */
 @Requires({ env.ARDUPILOT_SITL_BIN })
 @Timeout(value = 20, unit = TimeUnit.MINUTES)
@@ -99,7 +100,7 @@ class SitlMappingSpec extends Specification {
     }
 
     @Requires({ System.getProperty('dolphin.missionFiles') })
-    def "the corpus' structure scan, rebuilt from its plan: refused at the commands ArduCopter has no item for, the rest stored as built"() {
+    def "the corpus' structure scan, rebuilt from its plan: stored as built once its SET_CAMERA_MODE is left out; QGroundControl's DO_SET_ROI_WPNEXT_OFFSET would be refused"() {
         given:
         Path plan = Path.of(System.getProperty('dolphin.missionFiles')).resolve(STRUCTURE_SCAN)
         assert Files.isRegularFile(plan): "the corpus has no ${STRUCTURE_SCAN}"
@@ -107,9 +108,12 @@ class SitlMappingSpec extends Specification {
         SitlHarness.within(300) { assert sitl.comms.nodes().any { it.mavLinkId == SYSID && it.home != null } }
         MAVLinkNode node = sitl.comms.node("${SYSID}")
         int cameraMode = items.findIndexOf { it.command() == MAV_CMD.MAV_CMD_SET_CAMERA_MODE }
-        List<MissionItem> withoutCameraMode = renumbered(items.findAll { it.command() != MAV_CMD.MAV_CMD_SET_CAMERA_MODE })
-        int roi = withoutCameraMode.findIndexOf { it.command() == MAV_CMD.MAV_CMD_DO_SET_ROI_WPNEXT_OFFSET }
-        List<MissionItem> forArduCopter = renumbered(withoutCameraMode.findAll { it.command() != MAV_CMD.MAV_CMD_DO_SET_ROI_WPNEXT_OFFSET })
+        List<MissionItem> forArduCopter = renumbered(items.findAll { it.command() != MAV_CMD.MAV_CMD_SET_CAMERA_MODE })
+        int roi = forArduCopter.findIndexOf { it.command() == MAV_CMD.MAV_CMD_DO_SET_ROI_LOCATION }
+        // QGroundControl's item where Dolphin puts the region of interest: params 5-7 pitch 0, roll 0, yaw 90
+        List<MissionItem> asQgc = forArduCopter.collect {
+            it.seq() == roi ? new MissionItem(roi, MAV_CMD.MAV_CMD_DO_SET_ROI_WPNEXT_OFFSET, MissionItem.MISSION, 0, 0, 0, 0, 0, 0, 90, true) : it
+        }
 
         expect: 'the plan rebuilt: 6 simple items, then the scan of 10 layers round 4 vertices ((4 + 3) x 10 + 4 items), then the landing'
         items.size() == 1 + 6 + 74 + 1
@@ -117,7 +121,7 @@ class SitlMappingSpec extends Specification {
         cameraMode == 1
         roi > 0
 
-        when: 'as read: SET_CAMERA_MODE, with its reserved params NaN, is refused by AP_Mission::sanity_check_params'
+        when: 'as read: SET_CAMERA_MODE (a PX4 plan\'s), with its reserved params NaN, is refused by AP_Mission::sanity_check_params'
         TransferResult asRead = sitl.upload(node, items)
 
         then:
@@ -125,24 +129,24 @@ class SitlMappingSpec extends Specification {
         asRead.error().contains("item 1 (")
         asRead.error().contains('MAV_MISSION_INVALID_PARAM3')
 
-        when: 'without it: DO_SET_ROI_WPNEXT_OFFSET is not a mission command on ArduPilot'
-        TransferResult noCameraMode = sitl.upload(node, withoutCameraMode)
+        when: 'with QGroundControl\'s DO_SET_ROI_WPNEXT_OFFSET, which is not a mission command on ArduPilot'
+        TransferResult qgc = sitl.upload(node, asQgc)
         List<MissionItem> kept = sitl.download(node)
 
         then: 'refused there: the vehicle holds the items before it, then what is left of its last mission (AP_Mission::truncate only shortens)'
-        !noCameraMode.success()
-        noCameraMode.error().contains("item ${roi} (")
-        noCameraMode.error().contains('MAV_MISSION_UNSUPPORTED')
+        !qgc.success()
+        qgc.error().contains("item ${roi} (")
+        qgc.error().contains('MAV_MISSION_UNSUPPORTED')
         kept.size() >= roi
-        MissionVerification.firstDifference(withoutCameraMode.take(roi), kept.take(roi)).orElse(null) == null
+        MissionVerification.firstDifference(forArduCopter.take(roi), kept.take(roi)).orElse(null) == null
 
-        when: 'without both'
+        when: 'as Dolphin builds it, without the SET_CAMERA_MODE'
         TransferResult stored = sitl.upload(node, forArduCopter)
 
-        then: 'ArduCopter takes it and gives it back as built: the layers, the 20 trigger items, DO_SET_ROI_NONE, the landing'
+        then: 'ArduCopter takes it and gives it back as built: the region of interest, the layers, the 20 trigger items, DO_SET_ROI_NONE, the landing'
         stored.success()
         MissionVerification.firstDifference(forArduCopter, sitl.download(node)).orElse(null) == null
-        forArduCopter.size() == items.size() - 2
+        forArduCopter.size() == items.size() - 1
     }
 
     static List<MissionItem> renumbered(List<MissionItem> items) {
