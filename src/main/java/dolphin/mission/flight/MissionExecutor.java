@@ -135,6 +135,10 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             String mode = rules.cutShortMode();
             setMode(mode);
             progress("cut short: " + mode);
+            if (stage.triggersCamera()) {
+                vehicle.command(MAV_CMD.MAV_CMD_DO_SET_CAM_TRIGG_DIST, 0, 0, 0);
+                progress("camera triggering by distance stopped");
+            }
         }
         landed();
     }
@@ -167,6 +171,11 @@ public final class MissionExecutor extends PlatformTaskExecutor {
 
         abstract CompletionState step(long now);
 
+        /** Whether the mission this stage flies sets a camera trigger distance; none before it is planned. */
+        boolean triggersCamera() {
+            return false;
+        }
+
         /** Why the flight fails when the deadline passes. */
         String overdue() {
             return state + " did not finish within its deadline";
@@ -175,6 +184,14 @@ public final class MissionExecutor extends PlatformTaskExecutor {
 
     /** What the flight follows once uploaded: the items, how its end is judged, and the ground-side commands by item. */
     private record Plan(List<MissionItem> items, MissionEnd end, TreeMap<Integer, List<DroneCommand>> keyed) {
+
+        /**
+         * Whether the items set a camera trigger distance: ArduPilot keeps triggering by distance in any mode
+         * until a distance of 0 is set (docs/decisions.md, "Camera triggers on ArduPilot").
+         */
+        boolean triggersCamera() {
+            return items.stream().anyMatch(i -> i.command() == MAV_CMD.MAV_CMD_DO_SET_CAM_TRIGG_DIST && i.param1() > 0);
+        }
     }
 
     /**
@@ -390,6 +407,11 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         }
 
         @Override
+        boolean triggersCamera() {
+            return plan.triggersCamera();
+        }
+
+        @Override
         CompletionState step(long now) {
             var armMode = rules.armMode();
             if (armMode.isPresent() && !armModeSet) {
@@ -479,6 +501,11 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         }
 
         @Override
+        boolean triggersCamera() {
+            return plan.triggersCamera();
+        }
+
+        @Override
         CompletionState step(long now) {
             if (steps.run(now)) {
                 progress("started");
@@ -503,6 +530,11 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             this.plan = plan;
             plan.keyed().values().forEach(cmds -> cmds.stream().filter(c -> c instanceof JumpToItem)
                     .forEach(c -> jumpsLeft.put((JumpToItem) c, ((JumpToItem) c).repetitions())));
+        }
+
+        @Override
+        boolean triggersCamera() {
+            return plan.triggersCamera();
         }
 
         @Override

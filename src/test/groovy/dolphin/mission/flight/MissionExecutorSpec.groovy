@@ -589,6 +589,50 @@ class MissionExecutorSpec extends MissionFlights {
         vehicle.executors == ['flying stay', 'landed stay']
     }
 
+    def "a survey cut short stops the camera's triggering by distance, which ArduPilot would keep on all the way home"() {
+        given:
+        vehicle.ready()
+        vehicle.autopilot = true
+        def task = MissionDsl.mission {
+            name 'map'
+            home 40.444233, -7.375234, 820
+            takeOff Position.fromDegrees(40.444233, -7.375234, 860)
+            survey {
+                polygon Position.fromDegrees(40.4445, -7.3752, 0), Position.fromDegrees(40.4455, -7.3752, 0),
+                        Position.fromDegrees(40.4455, -7.3740, 0)
+                altitude 40
+                spacing 30
+                triggerDistance 15
+            }
+        }
+        launch(task)
+        stepUntil(FlightState.RUNNING)
+        vehicle.landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR)
+
+        when:
+        executor.stop()
+
+        then: 'RTL, then a trigger distance of 0'
+        vehicle.commandLines().takeRight(2)*.replaceFirst(/^\S+ /, '') == ['DO_SET_MODE RTL', 'DO_SET_CAM_TRIGG_DIST']
+        vehicle.commands.last().params as List == [0f, 0f, 0f]
+        messages.takeRight(2) == ['mission map on vehicle 1: cut short: RTL', 'mission map on vehicle 1: camera triggering by distance stopped']
+    }
+
+    def "a mission without camera triggers cut short sends only the RTL"() {
+        given:
+        vehicle.ready()
+        vehicle.autopilot = true
+        launch(hop())
+        stepUntil(FlightState.RUNNING)
+
+        when:
+        executor.stop()
+
+        then:
+        vehicle.commandLines().last().endsWith('DO_SET_MODE RTL')
+        !vehicle.commandLines().any { it.contains('CAM_TRIGG') }
+    }
+
     @Unroll
     def "stop() in #state: #outcome"() {
         given: 'a vehicle ready for all but PREPARE, answering what the executor waits for until it is in the state'
