@@ -437,7 +437,9 @@ class MissionBuilder {
         }
         if (hae == null) {
             lastRegistered = null
-            unknownEnd = "${word} ends at a height above ${item.heightReference() == HeightReference.ABOVE_HOME ? 'home, and the mission names no home' : 'the terrain'}"
+            String above = item.heightReference() == HeightReference.ABOVE_HOME ? 'home, and the mission names no home'
+                    : 'the terrain'
+            unknownEnd = "${word} ends at a height above ${above}"
         } else {
             register(Position.fromDegrees(end.latitude(), end.longitude(), hae))
         }
