@@ -89,7 +89,7 @@ public abstract class MappingBuilder extends ClosureDelegate {
             throw new DslException(word + ": camera: unknown " + given.keySet() + ": expected " + CAMERA_KEYS);
         }
         try {
-            camera = new Camera(numbers.containsKey("name") ? String.valueOf(numbers.get("name")) : "Custom Camera",
+            camera = new Camera(numbers.containsKey("name") ? String.valueOf(numbers.get("name")) : Camera.CUSTOM,
                     cameraNumber(numbers, "sensorWidth", "mm"), cameraNumber(numbers, "sensorHeight", "mm"),
                     (int) pixels(numbers, "imageWidth"), (int) pixels(numbers, "imageHeight"),
                     cameraNumber(numbers, "focalLength", "mm"),

@@ -44,8 +44,6 @@ final class PlanComplexItems {
     static final int STRUCTURE_VERSION = 3;
     static final int TRANSECT_STYLE_VERSION = 2;
     static final int CAMERA_CALC_VERSION = 2;
-    static final String MANUAL_CAMERA = "Manual (no camera specs)";
-    static final String CUSTOM_CAMERA = "Custom Camera";
 
     /** QGroundControl's AltMode CalcAboveTerrain, after which it flies no refly pass. */
     private static final int MODE_CALC_ABOVE_TERRAIN = 3;
@@ -148,7 +146,7 @@ final class PlanComplexItems {
         if (!(name instanceof String cameraName)) {
             throw new IllegalArgumentException(where + ".CameraName: expected a camera name, found " + (name == null ? "nothing" : name));
         }
-        if (!MANUAL_CAMERA.equals(cameraName) && calc.get("SensorWidth") != null) {
+        if (!Camera.MANUAL.equals(cameraName) && calc.get("SensorWidth") != null) {
             try {
                 Camera camera = new Camera(cameraName,
                         PlanJson.toDouble(calc.get("SensorWidth"), where + ".SensorWidth"),
@@ -285,7 +283,7 @@ final class PlanComplexItems {
         json.put("version", CAMERA_CALC_VERSION);
         Camera c = g.camera();
         // QGroundControl knows a camera by its canonical name; any other is its Custom Camera with the same numbers.
-        json.put("CameraName", g.manual() ? MANUAL_CAMERA : Cameras.named(c.name()).isPresent() ? c.name() : CUSTOM_CAMERA);
+        json.put("CameraName", g.manual() ? Camera.MANUAL : Cameras.named(c.name()).isPresent() ? c.name() : Camera.CUSTOM);
         json.put("DistanceToSurface", number(g.altitude()));
         json.put("DistanceMode", height.qgcDistanceMode());
         json.put("AdjustedFootprintSide", number(g.spacing()));

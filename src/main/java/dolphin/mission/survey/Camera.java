@@ -10,6 +10,12 @@ import java.util.Objects;
 public record Camera(String name, double sensorWidth, double sensorHeight, int imageWidth, int imageHeight,
                      double focalLength, double minTriggerInterval, boolean fixedOrientation) {
 
+    /** QGroundControl's name for a camera given by its numbers. */
+    public static final String CUSTOM = "Custom Camera";
+    /** QGroundControl's name for no camera: the spacing and trigger distance typed in (docs/qgc-surveys.md §1.3). */
+    public static final String MANUAL = "Manual (no camera specs)";
+
+
     public Camera {
         Objects.requireNonNull(name, "name");
         if (name.isBlank()) {
