@@ -356,20 +356,9 @@ public final class PolygonFile {
         return l.get(0);
     }
 
+    /** GeoJSON's [longitude, latitude(, altitude)] positions. */
     private static VerticesFound lonLats(Object array, String where) {
-        List<?> l = PlanJson.list(array, where);
-        List<Position> points = new ArrayList<>();
-        for (int i = 0; i < l.size(); i++) {
-            String w = where + "[" + i + "]";
-            List<?> p = PlanJson.list(l.get(i), w);
-            if (p.size() < 2 || p.size() > 3) {
-                throw new IllegalArgumentException(w + ": expected [longitude, latitude] or [longitude, latitude, altitude],"
-                        + " found " + p.size() + " values");
-            }
-            points.add(Position.fromDegrees(PlanJson.degrees(p.get(1), 90, w + "[1] (latitude)"),
-                    PlanJson.degrees(p.get(0), 180, w + "[0] (longitude)"), 0));
-        }
-        return new VerticesFound(points, where);
+        return positions(array, where, true);
     }
 
     /** A plan's first survey or structure scan polygon, else its first fence polygon; or its first corridor's polyline. */
@@ -399,17 +388,26 @@ public final class PolygonFile {
                 : "the plan has no polyline: no corridor scan in mission.items");
     }
 
+    /** A plan's [latitude, longitude] positions. */
     private static VerticesFound latLons(Object array, String where) {
+        return positions(array, where, false);
+    }
+
+    private static VerticesFound positions(Object array, String where, boolean longitudeFirst) {
+        String order = longitudeFirst ? "[longitude, latitude]" : "[latitude, longitude]";
+        int lat = longitudeFirst ? 1 : 0;
+        int lon = 1 - lat;
         List<?> l = PlanJson.list(array, where);
         List<Position> points = new ArrayList<>();
         for (int i = 0; i < l.size(); i++) {
             String w = where + "[" + i + "]";
             List<?> p = PlanJson.list(l.get(i), w);
             if (p.size() < 2 || p.size() > 3) {
-                throw new IllegalArgumentException(w + ": expected [latitude, longitude], found " + p.size() + " values");
+                throw new IllegalArgumentException(w + ": expected " + order + (longitudeFirst
+                        ? " or [longitude, latitude, altitude]" : "") + ", found " + p.size() + " values");
             }
-            points.add(Position.fromDegrees(PlanJson.degrees(p.get(0), 90, w + "[0] (latitude)"),
-                    PlanJson.degrees(p.get(1), 180, w + "[1] (longitude)"), 0));
+            points.add(Position.fromDegrees(PlanJson.degrees(p.get(lat), 90, w + "[" + lat + "] (latitude)"),
+                    PlanJson.degrees(p.get(lon), 180, w + "[" + lon + "] (longitude)"), 0));
         }
         return new VerticesFound(points, where);
     }
