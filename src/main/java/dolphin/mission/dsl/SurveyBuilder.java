@@ -29,7 +29,7 @@ public final class SurveyBuilder extends TransectBuilder {
     private boolean refly;
 
     SurveyBuilder(Supplier<Fence> fence) {
-        super("survey", Set.of("polygon", "angle", "fewestPasses", "alternateTransects", "reflyCrosswise"), fence);
+        super("survey", Set.of("polygon", "angle", "fewestPasses", "alternateTransects", "reflyCrosswise", "hoverAndCapture"), fence);
     }
 
     @Word(POLYGON)
@@ -54,6 +54,11 @@ public final class SurveyBuilder extends TransectBuilder {
     public void fewestPasses() {
         once("angle");
         fewestPasses = true;
+    }
+
+    @Word("Stops at each photo and takes it (multirotors, not planes), instead of triggering by distance on the move")
+    public void hoverAndCapture() {
+        hover();
     }
 
     @Word("true: flies every other line, then the ones between on the way back (planes turn wider)")

@@ -29,7 +29,7 @@ public abstract class TransectBuilder extends MappingBuilder {
 
     private static Set<String> with(Set<String> words) {
         Set<String> all = new HashSet<>(words);
-        all.addAll(Set.of("spacing", "heightAbove", "entry", "turnaround", "hoverAndCapture", "triggerInTurnarounds"));
+        all.addAll(Set.of("spacing", "heightAbove", "entry", "turnaround", "triggerInTurnarounds"));
         return all;
     }
 
@@ -47,8 +47,8 @@ public abstract class TransectBuilder extends MappingBuilder {
         options = options.withTurnaround(Args.notNegative(word, "turnaround distance", metres));
     }
 
-    @Word("Stops at each photo and takes it (multirotors), instead of triggering by distance on the move")
-    public void hoverAndCapture() {
+    /** Photos taken at stops instead of by distance (QGroundControl offers it for surveys). */
+    final void hover() {
         options = options.withHoverAndCapture(true).withTriggerInTurnarounds(false);
     }
 

@@ -32,6 +32,11 @@ public interface FlightRules {
         return false;
     }
 
+    /** Whether the vehicle can stop where it is, as hover-and-capture surveys need; a plane cannot. */
+    default boolean stops() {
+        return true;
+    }
+
     /** The items as this family must receive them; by default as the mission made them (heights above mean sea level). */
     default List<MissionItem> onBoard(List<MissionItem> items, Underwater water) {
         return items;
@@ -101,6 +106,11 @@ public interface FlightRules {
         @Override
         public String holdMode() {
             return "LOITER";
+        }
+
+        @Override
+        public boolean stops() {
+            return false;
         }
 
         @Override

@@ -19,6 +19,7 @@ import dolphin.mission.model.JumpToItem;
 import dolphin.mission.model.Mission;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
+import dolphin.mission.survey.PolygonSurvey;
 import dolphin.mission.transfer.MissionVerification;
 import dolphin.mission.transfer.TransferResult;
 import java.time.Duration;
@@ -285,13 +286,24 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             }
         }
 
-        /** An underwater mission on a vehicle that does not dive, or the other way round. */
+        /**
+         * An underwater mission on a vehicle that does not dive, or the other way round; a survey that
+         * stops for its photos on one that cannot stop.
+         */
         private Optional<String> wrongVehicle() {
+            String v = "vehicle " + vehicle.vehicleId() + " (" + vehicle.state().family() + ")";
+            if (!rules.stops()) {
+                for (DroneCommand c : mission.getCommandList()) {
+                    if (c instanceof PolygonSurvey s && s.hoversToShoot()) {
+                        return Optional.of(v + " cannot stop in the air to take its photos: the survey says"
+                                + " hoverAndCapture(); leave it out, and the camera triggers by distance on the move");
+                    }
+                }
+            }
             boolean underwater = mission.underwater().isPresent();
             if (underwater == rules.underwater()) {
                 return Optional.empty();
             }
-            String v = "vehicle " + vehicle.vehicleId() + " (" + vehicle.state().family() + ")";
             return Optional.of(underwater ? "an underwater mission (maxDepth) for " + v + ", which does not dive"
                     : v + " goes under water: its mission must say how deep it may go, 'maxDepth METRES'"
                     + " (docs/underwater.md)");

@@ -121,7 +121,7 @@ public final class PolygonSurvey extends MappingItem {
         if (td == 0) {
             return 0;
         }
-        if (hovering()) {
+        if (hoversToShoot()) {
             return PhotoLayout.transectShots(transects, td, true).size();
         }
         if (options.triggerInTurnarounds()) {
@@ -134,7 +134,8 @@ public final class PolygonSurvey extends MappingItem {
         return shots;
     }
 
-    private boolean hovering() {
+    /** Whether the vehicle stops at each photo (hover and capture with photos to take). */
+    public boolean hoversToShoot() {
         return options.hoverAndCapture() && photoGrid().triggerDistance() != 0;
     }
 
@@ -144,7 +145,7 @@ public final class PolygonSurvey extends MappingItem {
         if (g.manual()) {
             return List.of();
         }
-        return PhotoLayout.transectShots(transects, g.triggerDistance(), hovering()).stream()
+        return PhotoLayout.transectShots(transects, g.triggerDistance(), hoversToShoot()).stream()
                 .map(s -> PhotoLayout.rectangle(s, g.footprintSide(), g.footprintFrontal()))
                 .toList();
     }

@@ -618,6 +618,40 @@ class MissionExecutorSpec extends MissionFlights {
         messages.takeRight(2) == ['mission map on vehicle 1: cut short: RTL', 'mission map on vehicle 1: camera triggering by distance stopped']
     }
 
+    def "a survey that hovers for its photos is refused for a plane before anything is uploaded; a copter flies it"() {
+        given:
+        def task = MissionDsl.mission {
+            name 'hover'
+            survey {
+                polygon Position.fromDegrees(40.4445, -7.3752, 0), Position.fromDegrees(40.4455, -7.3752, 0),
+                        Position.fromDegrees(40.4455, -7.3740, 0)
+                altitude 40
+                spacing 30
+                triggerDistance 15
+                hoverAndCapture()
+            }
+        }
+        vehicle = new FakeFlightVehicle(clock, '1', family)
+        fleet['1'] = vehicle
+        vehicle.ready()
+        vehicle.autopilot = true
+
+        when:
+        launch(task)
+        def outcome = runTo(1)
+
+        then:
+        (outcome.type == CompletionState.Type.ERROR) == refused
+        !refused || outcome.message == ('mission hover on vehicle 1: vehicle 1 (ArduPlane) cannot stop in the air to take its'
+                + ' photos: the survey says hoverAndCapture(); leave it out, and the camera triggers by distance on the move')
+        vehicle.transfers.empty == refused
+
+        where:
+        family               || refused
+        VehicleFamily.PLANE  || true
+        VehicleFamily.COPTER || false
+    }
+
     def "a mission without camera triggers cut short sends only the RTL"() {
         given:
         vehicle.ready()
