@@ -2,10 +2,8 @@ package dolphin.cli;
 
 import com.MAVLink.enums.MAV_TYPE;
 import dolphin.mission.model.ChangeSpeed;
-import dolphin.mission.model.DroneCommand;
 import dolphin.mission.model.ItemText;
 import dolphin.mission.model.Mission;
-import dolphin.mission.model.MissionPoint;
 import dolphin.mission.survey.Coverage;
 import dolphin.mission.survey.MappingItem;
 import java.util.ArrayList;
@@ -31,21 +29,15 @@ final class CoverageLines {
     static List<String> of(Mission m) {
         List<String> lines = new ArrayList<>();
         double speed = Double.NaN;
-        int seq = 1;
-        for (DroneCommand c : m.getCommandList()) {
-            if (c instanceof ChangeSpeed s) {
+        for (Mission.NumberedPoint n : m.numberedPoints()) {
+            if (n.point() instanceof ChangeSpeed s) {
                 speed = s.speed();
             }
-            if (!(c instanceof MissionPoint p)) {
-                continue;
-            }
-            int count = p.messageCount();
-            if (p instanceof MappingItem item) {
+            if (n.point() instanceof MappingItem item) {
                 boolean given = !Double.isNaN(speed);
                 double v = given ? speed : planSpeed(m);
-                lines.add(line(item, seq, seq + count - 1, v, given));
+                lines.add(line(item, n.firstSeq(), n.firstSeq() + item.messageCount() - 1, v, given));
             }
-            seq += count;
         }
         return lines;
     }

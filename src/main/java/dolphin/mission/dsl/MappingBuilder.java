@@ -61,7 +61,8 @@ public abstract class MappingBuilder extends ClosureDelegate {
         this.fence = fence;
     }
 
-    private static Set<String> union(Set<String> a, Set<String> b) {
+    /** The words of a block and of the blocks it extends, for {@link ClosureDelegate}. */
+    static Set<String> union(Set<String> a, Set<String> b) {
         Set<String> all = new HashSet<>(a);
         all.addAll(b);
         return all;

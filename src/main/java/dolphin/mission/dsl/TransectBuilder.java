@@ -7,7 +7,6 @@ import dolphin.mission.survey.EntryCorner;
 import dolphin.mission.survey.HeightReference;
 import dolphin.mission.survey.PhotoGrid;
 import dolphin.mission.survey.TransectOptions;
-import java.util.HashSet;
 import java.util.Locale;
 import java.util.Set;
 import java.util.function.Supplier;
@@ -24,13 +23,7 @@ public abstract class TransectBuilder extends MappingBuilder {
     private HeightReference height = HeightReference.ABOVE_HOME;
 
     TransectBuilder(String word, Set<String> words, Supplier<Fence> fence) {
-        super(word, with(words), fence);
-    }
-
-    private static Set<String> with(Set<String> words) {
-        Set<String> all = new HashSet<>(words);
-        all.addAll(Set.of("spacing", "heightAbove", "entry", "turnaround", "triggerInTurnarounds"));
-        return all;
+        super(word, union(words, Set.of("spacing", "heightAbove", "entry", "turnaround", "triggerInTurnarounds")), fence);
     }
 
     @Word("Where the flight starts: 'topLeft' (the default), 'topRight', 'bottomLeft' or 'bottomRight', as QGroundControl names them")

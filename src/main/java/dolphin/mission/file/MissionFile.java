@@ -1,10 +1,8 @@
 package dolphin.mission.file;
 
-import dolphin.mission.model.DroneCommand;
 import dolphin.mission.model.Fence;
 import dolphin.mission.model.Mission;
 import dolphin.mission.model.MissionItem;
-import dolphin.mission.model.MissionPoint;
 import dolphin.mission.model.RallyPoints;
 import dolphin.mission.model.VehicleProfile;
 import dolphin.mission.survey.MappingItem;
@@ -45,13 +43,9 @@ public record MissionFile(List<MissionItem> mission, Fence fence, RallyPoints ra
      */
     public static MissionFile of(Mission mission, List<MissionItem> items) {
         Map<Integer, MappingItem> mapping = new HashMap<>();
-        int seq = 1;
-        for (DroneCommand c : mission.getCommandList()) {
-            if (c instanceof MappingItem m) {
-                mapping.put(seq, m);
-            }
-            if (c instanceof MissionPoint p) {
-                seq += p.messageCount();
+        for (Mission.NumberedPoint n : mission.numberedPoints()) {
+            if (n.point() instanceof MappingItem m) {
+                mapping.put(n.firstSeq(), m);
             }
         }
         return new MissionFile(items, mission.fence(), mission.rally(), mission.vehicleProfile(), mapping);

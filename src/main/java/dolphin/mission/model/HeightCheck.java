@@ -100,18 +100,13 @@ public final class HeightCheck {
 
     /** The first item the rule has something to say about. */
     private static Optional<Unsafe> first(Mission mission, BiFunction<MissionPoint, MissionItem, String> rule) {
-        int seq = 1;
-        for (DroneCommand c : mission.getCommandList()) {
-            if (!(c instanceof MissionPoint p)) {
-                continue;
-            }
-            for (MissionItem item : p.items(seq)) {
-                String problem = rule.apply(p, item);
+        for (Mission.NumberedPoint n : mission.numberedPoints()) {
+            for (MissionItem item : n.point().items(n.firstSeq())) {
+                String problem = rule.apply(n.point(), item);
                 if (problem != null) {
-                    return Optional.of(new Unsafe(p, item.seq(), problem));
+                    return Optional.of(new Unsafe(n.point(), item.seq(), problem));
                 }
             }
-            seq += p.messageCount();
         }
         return Optional.empty();
     }

@@ -108,6 +108,23 @@ public final class Mission {
         return id;
     }
 
+    /** A mission point and the seq of its first item. */
+    public record NumberedPoint(int firstSeq, MissionPoint point) {
+    }
+
+    /** The mission points in order, each with the seq of its first item: the first point's is 1, home being 0. */
+    public List<NumberedPoint> numberedPoints() {
+        List<NumberedPoint> out = new ArrayList<>();
+        int seq = 1;
+        for (DroneCommand c : droneCommands) {
+            if (c instanceof MissionPoint p) {
+                out.add(new NumberedPoint(seq, p));
+                seq += p.messageCount();
+            }
+        }
+        return out;
+    }
+
     /** The number of items, the home placeholder included: what MISSION_COUNT says. */
     public int missionPoints() {
         return 1 + droneCommands.stream().filter(c -> c instanceof MissionPoint).mapToInt(c -> ((MissionPoint) c).messageCount()).sum();

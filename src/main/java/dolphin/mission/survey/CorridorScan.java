@@ -91,13 +91,7 @@ public final class CorridorScan extends MappingItem {
 
     @Override
     public List<List<Position>> footprints() {
-        PhotoGrid g = photoGrid();
-        if (g.manual()) {
-            return List.of();
-        }
-        return PhotoLayout.transectShots(transects, g.triggerDistance(), false).stream()
-                .map(s -> PhotoLayout.rectangle(s, g.footprintSide(), g.footprintFrontal()))
-                .toList();
+        return PhotoLayout.footprints(photoGrid(), transects, false);
     }
 
     @Override

@@ -86,8 +86,18 @@ final class PhotoLayout {
         return shots;
     }
 
+    /** The ground each photo of a transect survey covers; none without a camera (its footprint is unknown). */
+    static List<List<Position>> footprints(PhotoGrid grid, List<List<TransectPoint>> transects, boolean hover) {
+        if (grid.manual()) {
+            return List.of();
+        }
+        return transectShots(transects, grid.triggerDistance(), hover).stream()
+                .map(s -> rectangle(s, grid.footprintSide(), grid.footprintFrontal()))
+                .toList();
+    }
+
     /** A ground rectangle {@code across} × {@code along} m centred on the shot, long side {@code along} on its heading. */
-    static List<Position> rectangle(Shot shot, double across, double along) {
+    private static List<Position> rectangle(Shot shot, double across, double along) {
         GeoPoint front = QgcGeo.destination(shot.centre(), along / 2, shot.heading());
         GeoPoint back = QgcGeo.destination(shot.centre(), -along / 2, shot.heading());
         double right = shot.heading() + 90;

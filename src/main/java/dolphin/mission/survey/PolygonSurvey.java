@@ -141,13 +141,7 @@ public final class PolygonSurvey extends MappingItem {
 
     @Override
     public List<List<Position>> footprints() {
-        PhotoGrid g = photoGrid();
-        if (g.manual()) {
-            return List.of();
-        }
-        return PhotoLayout.transectShots(transects, g.triggerDistance(), hoversToShoot()).stream()
-                .map(s -> PhotoLayout.rectangle(s, g.footprintSide(), g.footprintFrontal()))
-                .toList();
+        return PhotoLayout.footprints(photoGrid(), transects, hoversToShoot());
     }
 
     @Override
