@@ -27,6 +27,8 @@ final class CommandSender {
         final CompletableFuture<CommandResult> result = new CompletableFuture<>();
         int attempts;
         long deadline;
+        long sentAt;
+        boolean inProgress;
 
         Pending(MAVLinkNode node, msg_command_long command) {
             this.node = node;
@@ -64,9 +66,13 @@ final class CommandSender {
         Pending head = q.peek();
         if (ack.result == MAV_RESULT.MAV_RESULT_IN_PROGRESS) {
             head.deadline = now + timeoutNanos;
+            head.inProgress = true;
             return;
         }
         q.poll();
+        if (head.attempts == 1 && !head.inProgress) {
+            node.roundTrip().sample(now - head.sentAt);      // sent once, answered at once: a clean sample (Karn)
+        }
         head.result.complete(new CommandResult(ack.command, ack.result, head.attempts));
         next(k, q, now);
     }
@@ -110,6 +116,7 @@ final class CommandSender {
         p.command.confirmation = (short) Math.min(255, p.attempts);
         p.attempts++;
         p.deadline = now + timeoutNanos;
+        p.sentAt = now;
         transmit.send(p.node, p.command);
     }
 

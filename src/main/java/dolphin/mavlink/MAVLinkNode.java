@@ -32,6 +32,7 @@ public final class MAVLinkNode extends AbstractNode {
     private final int autopilotCompid;
     private final Clock clock;
     private final AtomicReference<VehicleState> state;
+    private final RoundTrip roundTrip = new RoundTrip();
     private volatile SocketAddress address;
     /** What a fleet file says of the vehicle, when it says it (docs/sensors.md, "Fleet files"). */
     private volatile String name;
@@ -62,6 +63,11 @@ public final class MAVLinkNode extends AbstractNode {
 
     public int getAutopilotCompid() {
         return autopilotCompid;
+    }
+
+    /** The measured round trip of the vehicle's link (command ACKs, mission transfers, FTP). */
+    public RoundTrip roundTrip() {
+        return roundTrip;
     }
 
     public Link getLink() {

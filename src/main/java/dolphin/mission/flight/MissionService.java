@@ -9,7 +9,7 @@ import dolphin.mavlink.MAVLinkNode;
 import dolphin.mavlink.MessageHandler;
 import dolphin.mission.transfer.MissionTransferConfig;
 import dolphin.mission.transfer.MissionTransfers;
-import dolphin.mission.transfer.ProtocolTimers;
+import dolphin.mavlink.ProtocolTimers;
 import java.time.Duration;
 import java.util.Map;
 import java.util.Objects;
@@ -41,6 +41,11 @@ public final class MissionService {
             @Override
             public void schedule(Duration delay, Runnable action) {
                 comms.schedule(delay, action);
+            }
+
+            @Override
+            public long nanoTime() {
+                return comms.clock().nanoTime();
             }
         };
         route(comms.messageHandler());

@@ -3,12 +3,14 @@ package dolphin.mission.flight;
 import com.MAVLink.Messages.MAVLinkMessage;
 import dolphin.mavlink.CommandResult;
 import dolphin.mavlink.MAVLinkNode;
+import dolphin.mavlink.RoundTrip;
 import dolphin.mavlink.VehicleState;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
 import dolphin.mission.transfer.MissionTransfers;
 import dolphin.mission.transfer.TransferResult;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.atomic.AtomicReference;
 
@@ -92,6 +94,16 @@ public final class VehicleMissions implements MissionVehicle {
     @Override
     public int groundSystem() {
         return node.communications().config().sysid();
+    }
+
+    @Override
+    public RoundTrip roundTrip() {
+        return node.roundTrip();
+    }
+
+    @Override
+    public Optional<Boolean> offersFtp() {
+        return Optional.empty();
     }
 
     @Override

@@ -1,5 +1,6 @@
 package dolphin.mission.transfer;
 
+import dolphin.mavlink.ProtocolTimers;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
 import com.MAVLink.Messages.MAVLinkMessage;
@@ -124,7 +125,7 @@ public final class MissionDownloadProtocol {
                 if (count < 0) {            // a later COUNT answers a duplicated REQUEST_LIST: ignored
                     count = c.count;
                     tries = 0;
-                    progress.progress(0, count);
+                    report(0, count);
                     if (count == 0) {
                         finishDownload();
                     } else {
@@ -149,7 +150,7 @@ public final class MissionDownloadProtocol {
             }
             items.add(item);
             tries = 0;
-            progress.progress(items.size(), count);
+            report(items.size(), count);
             if (items.size() == count) {
                 finishDownload();
             } else {

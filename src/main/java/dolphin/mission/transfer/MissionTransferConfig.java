@@ -1,5 +1,6 @@
 package dolphin.mission.transfer;
 
+import dolphin.mavlink.LinkTimeouts;
 import java.time.Duration;
 
 /**
@@ -10,12 +11,16 @@ import java.time.Duration;
  * @param tries how many times a message (MISSION_COUNT, an item, MISSION_REQUEST_LIST, a request) is sent
  *              without an answer before the transfer fails
  */
-public record MissionTransferConfig(Duration timeout, int tries) {
+public record MissionTransferConfig(Duration timeout, int tries, LinkTimeouts timeouts, TransferPath path) {
 
     public static final long DEFAULT_TIMEOUT_MILLIS = 1500;
     public static final int DEFAULT_TRIES = 5;
     public static final MissionTransferConfig DEFAULT =
             new MissionTransferConfig(Duration.ofMillis(DEFAULT_TIMEOUT_MILLIS), DEFAULT_TRIES);
+
+    public MissionTransferConfig(Duration timeout, int tries) {
+        this(timeout, tries, LinkTimeouts.DEFAULT, TransferPath.AUTO);
+    }
 
     public MissionTransferConfig {
         if (timeout == null || timeout.isNegative() || timeout.isZero()) {

@@ -1,5 +1,6 @@
 package dolphin.mission.transfer;
 
+import dolphin.mavlink.ProtocolTimers;
 import com.MAVLink.Messages.MAVLinkMessage;
 import com.MAVLink.common.msg_mission_ack;
 import com.MAVLink.common.msg_mission_count;

@@ -1,5 +1,6 @@
 package dolphin.mission.transfer;
 
+import dolphin.mavlink.ProtocolTimers;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
 import com.MAVLink.Messages.MAVLinkMessage;
@@ -183,7 +184,7 @@ public final class MissionUploadProtocol {
             }
             if (seq > highest) {
                 highest = seq;
-                progress.progress(seq, items.size());
+                report(seq, items.size());
             }
             sendItem(seq);
         }
@@ -191,7 +192,7 @@ public final class MissionUploadProtocol {
         private void ack(int result) {
             if (result == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
                 if (items.isEmpty() || (requested && highest == items.size() - 1)) {
-                    progress.progress(items.size(), items.size());
+                    report(items.size(), items.size());
                     succeed(items);
                 } else if (!requested) {
                     ignoredAcks++;      // a late ACK of an earlier transfer

@@ -1,5 +1,6 @@
 package dolphin.mission.transfer;
 
+import dolphin.mavlink.ProtocolTimers;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
 import com.MAVLink.Messages.MAVLinkMessage;
@@ -83,6 +84,11 @@ abstract class Transfer {
         timerGeneration++;
         result.complete(r);
         onDone.run();
+    }
+
+    /** Reports progress over the mission protocol: {@code done} of {@code total} items (-1 while unknown). */
+    final void report(long done, long total) {
+        progress.progress(new TransferStatus(type, what().startsWith("upload"), TransferPath.ITEMS, done, total, resends));
     }
 
     final int tries() {

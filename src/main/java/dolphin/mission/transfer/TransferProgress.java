@@ -1,10 +1,10 @@
 package dolphin.mission.transfer;
 
-/** Progress of a mission transfer, called on the communications thread: {@code done} of {@code total} items. */
+/** Progress of a mission transfer, called on the communications thread. */
 @FunctionalInterface
 public interface TransferProgress {
 
-    TransferProgress NONE = (done, total) -> { };
+    TransferProgress NONE = status -> { };
 
-    void progress(int done, int total);
+    void progress(TransferStatus status);
 }

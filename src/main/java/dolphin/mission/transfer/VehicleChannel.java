@@ -1,6 +1,8 @@
 package dolphin.mission.transfer;
 
 import com.MAVLink.Messages.MAVLinkMessage;
+import dolphin.mavlink.RoundTrip;
+import java.util.Optional;
 
 /**
  * What a transfer needs of the link to its vehicle: where its messages go, the ids they carry, and
@@ -23,6 +25,15 @@ public interface VehicleChannel {
 
     /** The vehicle's name in messages ("1", "2@2"). */
     String vehicleId();
+
+    /** The measured round trip of the vehicle's link, which transfers feed and time their resends by. */
+    RoundTrip roundTrip();
+
+    /**
+     * Whether the vehicle offers MAVLink FTP (MAV_PROTOCOL_CAPABILITY_FTP in its AUTOPILOT_VERSION),
+     * empty while it has not said.
+     */
+    Optional<Boolean> offersFtp();
 
     /** Why the vehicle is not heard ("no heartbeat within 5 s"), or empty while it is. */
     String silence();

@@ -152,6 +152,12 @@ class FakeFlightVehicle implements MissionVehicle {
     String silence() { '' }
 
     @Override
+    dolphin.mavlink.RoundTrip roundTrip() { new dolphin.mavlink.RoundTrip() }
+
+    @Override
+    Optional<Boolean> offersFtp() { Optional.empty() }
+
+    @Override
     int system() { system }
 
     @Override

@@ -1,6 +1,7 @@
 package dolphin.mission.transfer
 
 import dolphin.core.ManualClock
+import dolphin.mavlink.ProtocolTimers
 import java.time.Duration
 
 /**
@@ -23,5 +24,10 @@ class ClockTimers implements ProtocolTimers {
     @Override
     void schedule(Duration delay, Runnable action) {
         clock.schedule(delay, action)
+    }
+
+    @Override
+    long nanoTime() {
+        clock.nanoTime()
     }
 }

@@ -103,7 +103,7 @@ class MissionTransferSpec extends Specification {
         def progress = []
 
         when:
-        def up = timed(transfers.upload().upload(intended(), MissionTransferConfig.DEFAULT, { d, t -> progress << "$d/$t" }))
+        def up = timed(transfers.upload().upload(intended(), MissionTransferConfig.DEFAULT, { TransferStatus s -> progress << "${s.done()}/${s.total()}" }))
 
         then: 'MISSION_COUNT goes out at once, on the caller\'s thread; the rest waits for the vehicle'
         channel.conversation == ['0.0 > COUNT 5']
@@ -142,7 +142,7 @@ class MissionTransferSpec extends Specification {
         def progress = []
 
         when:
-        def up = timed(transfers.upload().upload(intended(), MissionTransferConfig.DEFAULT, { d, t -> progress << d }))
+        def up = timed(transfers.upload().upload(intended(), MissionTransferConfig.DEFAULT, { TransferStatus s -> progress << s.done() }))
         run()
         def r = up.get()
 
@@ -426,7 +426,7 @@ class MissionTransferSpec extends Specification {
         def progress = []
 
         when:
-        def up = transfers.upload().upload([], MissionTransferConfig.DEFAULT, { d, t -> progress << "$d/$t" })
+        def up = transfers.upload().upload([], MissionTransferConfig.DEFAULT, { TransferStatus s -> progress << "${s.done()}/${s.total()}" })
         run()
 
         then:
@@ -458,7 +458,7 @@ class MissionTransferSpec extends Specification {
         def progress = []
 
         when:
-        def down = timed(transfers.download().download(MissionTransferConfig.DEFAULT, { d, t -> progress << "$d/$t" }))
+        def down = timed(transfers.download().download(MissionTransferConfig.DEFAULT, { TransferStatus s -> progress << "${s.done()}/${s.total()}" }))
         run()
         def r = down.get()
 

@@ -9,6 +9,7 @@ import com.MAVLink.common.msg_mission_request
 import com.MAVLink.common.msg_mission_request_int
 import com.MAVLink.common.msg_mission_request_list
 import dolphin.core.ManualClock
+import dolphin.mavlink.RoundTrip
 import dolphin.mission.model.MissionType
 
 /**
@@ -41,6 +42,10 @@ class RecordingChannel implements VehicleChannel {
     int system = 2
     int component = 1
     String vehicleId = '2'
+    /** The link's measured round trip, which the transfers feed. */
+    final RoundTrip roundTrip = new RoundTrip()
+    /** What the vehicle said of MAVLink FTP (empty: nothing yet). */
+    Optional<Boolean> offersFtp = Optional.empty()
     /** Why the vehicle is not heard, or empty; the vehicle side may replace it. */
     Closure<String> silenceText = { '' }
     /** The vehicle side: gets every message sent; null sends them nowhere. */
@@ -53,6 +58,12 @@ class RecordingChannel implements VehicleChannel {
     RecordingChannel(ManualClock clock) {
         this.clock = clock
     }
+
+    @Override
+    RoundTrip roundTrip() { roundTrip }
+
+    @Override
+    Optional<Boolean> offersFtp() { offersFtp }
 
     @Override
     void send(MAVLinkMessage message) {
