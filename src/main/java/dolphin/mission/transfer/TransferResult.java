@@ -11,15 +11,30 @@ import java.util.List;
  *
  * @param resends messages sent again (MISSION_COUNT, items, requests) because of a timeout or a repeated request
  * @param ignoredAcks MAV_MISSION_INVALID_SEQUENCE ACKs ignored during an upload (noisy links, as QGC does)
+ * @param verified an upload whose list the transfer itself read back from the vehicle and found equal
+ *                 ({@link MissionVerification}): nobody needs to download it again to check
+ * @param note how the transfer went when a user may want to know ("over FTP", "the final ACK was
+ *             lost; the download shows the whole mission on the vehicle"), or empty
  */
-public record TransferResult(boolean success, String error, List<MissionItem> items, int resends, int ignoredAcks) {
+public record TransferResult(boolean success, String error, List<MissionItem> items, int resends, int ignoredAcks,
+                             boolean verified, String note) {
 
     public TransferResult {
         items = items == null ? List.of() : List.copyOf(items);
+        note = note == null ? "" : note;
+    }
+
+    public TransferResult(boolean success, String error, List<MissionItem> items, int resends, int ignoredAcks) {
+        this(success, error, items, resends, ignoredAcks, false, "");
     }
 
     static TransferResult ok(List<MissionItem> items, int resends, int ignoredAcks) {
         return new TransferResult(true, null, items, resends, ignoredAcks);
+    }
+
+    /** An upload read back and found equal, with how it went. */
+    static TransferResult verified(List<MissionItem> items, int resends, int ignoredAcks, String note) {
+        return new TransferResult(true, null, items, resends, ignoredAcks, true, note);
     }
 
     static TransferResult failed(String error, int resends, int ignoredAcks) {
