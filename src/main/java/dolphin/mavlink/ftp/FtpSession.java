@@ -34,12 +34,12 @@ final class FtpSession {
         void failed(FtpException e);
     }
 
-    private static final class Pending {
+    private static final class OutstandingRequest {
         final FtpPayload request;
         int sends;
         long sentAt;
 
-        Pending(FtpPayload request) {
+        OutstandingRequest(FtpPayload request) {
             this.request = request;
         }
     }
@@ -50,7 +50,7 @@ final class FtpSession {
     private final int id;
     private final String path;
     private final Runnable onEnd;
-    private final List<Pending> pending = new ArrayList<>();
+    private final List<OutstandingRequest> pending = new ArrayList<>();
     private Owner owner;
     private int nextSeq;
     private long lastProgress;
@@ -118,13 +118,13 @@ final class FtpSession {
         // the replies to a burst are numbered on from its seq: a later request must not look like
         // a repeat of the one ArduPilot answered last, or it gets that reply again
         nextSeq = (nextSeq + (opcode == FtpPayload.BURST_READ_FILE ? BURST_REPLIES + 1 : 1)) & 0xffff;
-        Pending p = new Pending(request);
+        OutstandingRequest p = new OutstandingRequest(request);
         pending.add(p);
         transmit(p);
         return request;
     }
 
-    private void transmit(Pending p) {
+    private void transmit(OutstandingRequest p) {
         p.sends++;
         p.sentAt = timers.nanoTime();
         int sends = p.sends;
@@ -136,7 +136,7 @@ final class FtpSession {
         });
     }
 
-    private void timedOut(Pending p) {
+    private void timedOut(OutstandingRequest p) {
         timeoutsInARow++;
         if (timers.nanoTime() - lastProgress >= timeouts.giveUp().toNanos()) {
             fail(FtpException.noAnswer(path, p.request, p.sends, timeouts.giveUp(), answered));
@@ -158,7 +158,7 @@ final class FtpSession {
             return;
         }
         answered = true;
-        Pending p = match(reply);
+        OutstandingRequest p = match(reply);
         if (p == null) {
             owner.unmatched(reply);
             return;
@@ -171,8 +171,8 @@ final class FtpSession {
         owner.answered(p.request, reply);
     }
 
-    private Pending match(FtpPayload reply) {
-        for (Pending p : pending) {
+    private OutstandingRequest match(FtpPayload reply) {
+        for (OutstandingRequest p : pending) {
             FtpPayload q = p.request;
             if (reply.reqOpcode() != q.opcode()) {
                 continue;

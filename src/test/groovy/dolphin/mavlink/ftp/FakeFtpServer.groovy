@@ -28,6 +28,8 @@ class FakeFtpServer {
     final Map<String, byte[]> files = [:]
     /** Whether a parsed @MISSION list is refused when converted (a bad DO_JUMP, say): path, bytes. */
     Closure<Boolean> refuseList = { String path, byte[] bytes -> false }
+    /** What the vehicle keeps of a file written and accepted (ArduPilot stores a list its own way): path, bytes. */
+    Closure<byte[]> keep = { String path, byte[] bytes -> bytes }
     Duration latency = Duration.ofMillis(20)
     Duration serviceTime = Duration.ofMillis(1)
     /** Extra random delay of each packet, which reorders them. */
@@ -229,7 +231,7 @@ class FakeFtpServer {
         if (mission(s.path) && !acceptable(s.path, b)) {
             return 22
         }
-        files[s.path] = b
+        files[s.path] = keep(s.path, b)
         null
     }
 
