@@ -20,6 +20,7 @@ public final class FtpClient {
     private final ProtocolTimers timers;
     private final Map<Integer, FtpSession> sessions = new HashMap<>();
     private int lastSession;
+    private boolean heard;
 
     public FtpClient(FtpChannel channel, ProtocolTimers timers) {
         this.channel = channel;
@@ -69,7 +70,7 @@ public final class FtpClient {
             lastSession = lastSession % 255 + 1;
         } while (sessions.containsKey(lastSession));
         int id = lastSession;
-        FtpSession s = new FtpSession(channel, timers, timeouts, id, path, () -> sessions.remove(id));
+        FtpSession s = new FtpSession(channel, timers, timeouts, id, path, () -> heard, () -> sessions.remove(id));
         sessions.put(id, s);
         return s;
     }
@@ -83,6 +84,7 @@ public final class FtpClient {
         if (reply.opcode() != FtpPayload.ACK && reply.opcode() != FtpPayload.NAK) {
             return;
         }
+        heard = true;
         FtpSession s = sessions.get(reply.session());
         if (s != null) {
             s.handle(reply);

@@ -112,9 +112,10 @@ final class FtpRead implements FtpSession.Owner {
             bursting = false;
             return;
         }
-        // the burst ends when its packets stop coming: the lost ones are read one by one
+        // the burst ends when its packets stop coming for twice the RTO (ArduPilot paces them on slow
+        // links): the lost ones are then read one by one
         int generation = ++burstGeneration;
-        session.timers().schedule(session.timeouts().timeout(session.roundTrip(), 0), () -> {
+        session.timers().schedule(session.timeouts().timeout(session.roundTrip(), 1), () -> {
             if (bursting && generation == burstGeneration && !session.ended()) {
                 bursting = false;
                 advance();

@@ -50,22 +50,28 @@ final class FtpSession {
     private final int id;
     private final String path;
     private final Runnable onEnd;
+    private final java.util.function.BooleanSupplier heard;
     private final List<OutstandingRequest> pending = new ArrayList<>();
     private Owner owner;
     private int nextSeq;
     private long lastProgress;
     private int timeoutsInARow;
     private int resends;
-    private boolean answered;
     private boolean ended;
 
-    FtpSession(FtpChannel channel, ProtocolTimers timers, LinkTimeouts timeouts, int id, String path, Runnable onEnd) {
+    /**
+     * @param heard whether the vehicle ever answered over FTP, this session or an earlier one
+     * @param onEnd runs once the session has ended
+     */
+    FtpSession(FtpChannel channel, ProtocolTimers timers, LinkTimeouts timeouts, int id, String path,
+               java.util.function.BooleanSupplier heard, Runnable onEnd) {
         this.channel = channel;
         this.timers = timers;
         this.timeouts = timeouts;
         this.id = id;
         this.path = path;
         this.onEnd = onEnd;
+        this.heard = heard;
         this.lastProgress = timers.nanoTime();
     }
 
@@ -139,7 +145,7 @@ final class FtpSession {
     private void timedOut(OutstandingRequest p) {
         timeoutsInARow++;
         if (timers.nanoTime() - lastProgress >= timeouts.giveUp().toNanos()) {
-            fail(FtpException.noAnswer(path, p.request, p.sends, timeouts.giveUp(), answered));
+            fail(FtpException.noAnswer(path, p.request, p.sends, timeouts.giveUp(), heard.getAsBoolean()));
             return;
         }
         resends++;
@@ -157,7 +163,6 @@ final class FtpSession {
         if (ended || owner == null) {
             return;
         }
-        answered = true;
         OutstandingRequest p = match(reply);
         if (p == null) {
             owner.unmatched(reply);

@@ -196,6 +196,23 @@ class FtpMissionTransferSpec extends Specification {
         vehicle.stored == intended()
     }
 
+    def "FTP that answered and then fell silent (the read-back lost): AUTO falls back, but the next upload tries FTP again"() {
+        given:
+        server.dropRequest = { p, int n -> p.opcode() == 4 }     // every OpenFileRO
+
+        when:
+        TransferResult first = settle(upload(TransferPath.AUTO))
+        int asked = ftpMessages()
+        server.dropRequest = { p, int n -> false }
+        TransferResult second = settle(upload(TransferPath.AUTO))
+
+        then:
+        first.success()
+        !first.verified()
+        second.verified()
+        ftpMessages() > asked
+    }
+
     def "FTP forced on a vehicle that never answers it: a clear error after 10 s"() {
         given:
         server.silent = true
