@@ -28,7 +28,7 @@ final class MissionFiles {
     static final int MAX_OPEN = 4;
     static final long IDLE_NANOS = 30_000_000_000L;
 
-    private static final class OpenFile {
+    private static final class MissionFileSlot {
         MissionType type;
         int items;
         long offset;
@@ -39,7 +39,7 @@ final class MissionFiles {
 
     private final Function<MissionType, ItemStore> stores;
     private final MissionFileLoader loader;
-    private final OpenFile[] files = new OpenFile[MAX_OPEN];
+    private final MissionFileSlot[] files = new MissionFileSlot[MAX_OPEN];
 
     MissionFiles(Function<MissionType, ItemStore> stores, MissionFileLoader loader) {
         this.stores = stores;
@@ -72,7 +72,7 @@ final class MissionFiles {
         }
         int fd = 0;
         for (; fd < MAX_OPEN; fd++) {
-            OpenFile f = files[fd];
+            MissionFileSlot f = files[fd];
             if (f != null && now - f.lastOp > IDLE_NANOS) {
                 files[fd] = null;
                 f = null;
@@ -88,7 +88,7 @@ final class MissionFiles {
         if (fd == MAX_OPEN) {
             return -SimFtpPacket.ENFILE;
         }
-        OpenFile f = new OpenFile();
+        MissionFileSlot f = new MissionFileSlot();
         f.type = type;
         f.items = stores.apply(type).count();
         f.lastOp = now;
@@ -99,7 +99,7 @@ final class MissionFiles {
 
     /** Up to {@code count} bytes at {@code offset}: fewer at the end, none past it; or null for a bad descriptor. */
     byte[] read(int fd, long offset, int count, long now) {
-        OpenFile f = file(fd);
+        MissionFileSlot f = file(fd);
         if (f == null || f.written != null) {
             return null;
         }
@@ -136,7 +136,7 @@ final class MissionFiles {
 
     /** Writes at {@code offset}: 0, or -errno. */
     int write(int fd, long offset, byte[] bytes, long now) {
-        OpenFile f = file(fd);
+        MissionFileSlot f = file(fd);
         if (f == null || f.written == null) {
             return -SimFtpPacket.EBADF;
         }
@@ -164,7 +164,7 @@ final class MissionFiles {
 
     /** Closes the file; a file written is loaded into the lists: 0, or -EINVAL when refused, -EBADF for a bad descriptor. */
     int close(int fd) {
-        OpenFile f = file(fd);
+        MissionFileSlot f = file(fd);
         if (f == null) {
             return -SimFtpPacket.EBADF;
         }
@@ -175,7 +175,7 @@ final class MissionFiles {
         return 0;
     }
 
-    private OpenFile file(int fd) {
+    private MissionFileSlot file(int fd) {
         return fd >= 0 && fd < MAX_OPEN ? files[fd] : null;
     }
 

@@ -52,7 +52,7 @@ final class SimFtpServer {
             session.push(last, link, now);
             return;
         }
-        SimFtpSession.Handled handled = session.handle(request, link, now);
+        SimFtpSession.SimFtpOutcome handled = session.handle(request, link, now);
         last = handled.reply();
         if (!handled.sent()) {
             session.push(last, link, now);

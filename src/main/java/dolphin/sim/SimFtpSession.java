@@ -57,35 +57,35 @@ final class SimFtpSession {
      * Answers one request (GCS_FTP::Session::handle_request); the reply to remember, which the
      * caller sends unless {@code sent} says it went out already (a burst) or nothing is to be sent.
      */
-    Handled handle(SimFtpPacket request, Consumer<SimFtpPacket> link, long now) {
+    SimFtpOutcome handle(SimFtpPacket request, Consumer<SimFtpPacket> link, long now) {
         SimFtpPacket reply = request.reply();
         if (request.size() > SimFtpPacket.DATA_BYTES) {
-            return new Handled(reply.nak(SimFtpPacket.INVALID_DATA_SIZE), false);
+            return new SimFtpOutcome(reply.nak(SimFtpPacket.INVALID_DATA_SIZE), false);
         }
         return switch (request.opcode()) {
-            case SimFtpPacket.NONE -> new Handled(reply.ack(0, new byte[0], 0), false);
+            case SimFtpPacket.NONE -> new SimFtpOutcome(reply.ack(0, new byte[0], 0), false);
             case SimFtpPacket.TERMINATE_SESSION -> {
                 int result = close();
-                yield new Handled(result < 0 ? reply.nak(SimFtpPacket.FAIL_ERRNO, -result) : reply.ack(0, new byte[0], 0), false);
+                yield new SimFtpOutcome(result < 0 ? reply.nak(SimFtpPacket.FAIL_ERRNO, -result) : reply.ack(0, new byte[0], 0), false);
             }
-            case SimFtpPacket.OPEN_FILE_RO -> new Handled(openRead(request, reply, now), false);
-            case SimFtpPacket.READ_FILE -> new Handled(read(request, reply, now), false);
+            case SimFtpPacket.OPEN_FILE_RO -> new SimFtpOutcome(openRead(request, reply, now), false);
+            case SimFtpPacket.READ_FILE -> new SimFtpOutcome(read(request, reply, now), false);
             case SimFtpPacket.BURST_READ_FILE -> burst(request, reply, link, now);
-            case SimFtpPacket.CREATE_FILE, SimFtpPacket.OPEN_FILE_WO -> new Handled(openWrite(request, reply, now), false);
-            case SimFtpPacket.WRITE_FILE -> new Handled(write(request, reply, now), false);
+            case SimFtpPacket.CREATE_FILE, SimFtpPacket.OPEN_FILE_WO -> new SimFtpOutcome(openWrite(request, reply, now), false);
+            case SimFtpPacket.WRITE_FILE -> new SimFtpOutcome(write(request, reply, now), false);
             // eaten: a client's ACK or NAK is not a request
-            case SimFtpPacket.ACK, SimFtpPacket.NAK -> new Handled(reply, true);
+            case SimFtpPacket.ACK, SimFtpPacket.NAK -> new SimFtpOutcome(reply, true);
             // paths outside @MISSION: the simulated vehicle has no other files or directories
             case SimFtpPacket.LIST_DIRECTORY, SimFtpPacket.REMOVE_FILE, SimFtpPacket.CREATE_DIRECTORY,
                     SimFtpPacket.REMOVE_DIRECTORY, SimFtpPacket.CALC_FILE_CRC32, SimFtpPacket.RENAME ->
-                    new Handled(reply.nak(request.nameLengthValid() ? SimFtpPacket.FILE_NOT_FOUND : SimFtpPacket.INVALID_DATA_SIZE),
+                    new SimFtpOutcome(reply.nak(request.nameLengthValid() ? SimFtpPacket.FILE_NOT_FOUND : SimFtpPacket.INVALID_DATA_SIZE),
                             false);
-            default -> new Handled(reply.nak(SimFtpPacket.FAIL), false);
+            default -> new SimFtpOutcome(reply.nak(SimFtpPacket.FAIL), false);
         };
     }
 
     /** The reply to remember, and whether it was sent already (or is not to be sent). */
-    record Handled(SimFtpPacket reply, boolean sent) {
+    record SimFtpOutcome(SimFtpPacket reply, boolean sent) {
     }
 
     private SimFtpPacket openRead(SimFtpPacket request, SimFtpPacket reply, long now) {
@@ -128,10 +128,10 @@ final class SimFtpSession {
      * seq; the one short of {@code size} has burst_complete, and the read after it, at the end, is
      * the NAK EOF that ends every burst (ArduPilot keeps reading after a short read).
      */
-    private Handled burst(SimFtpPacket request, SimFtpPacket reply, Consumer<SimFtpPacket> link, long now) {
+    private SimFtpOutcome burst(SimFtpPacket request, SimFtpPacket reply, Consumer<SimFtpPacket> link, long now) {
         SimFtpPacket refused = readRefusal(reply);
         if (refused != null) {
-            return new Handled(refused, false);
+            return new SimFtpOutcome(refused, false);
         }
         int most = request.size() == 0 ? SimFtpPacket.DATA_BYTES : request.size();
         SimFtpPacket next = reply;
@@ -139,10 +139,10 @@ final class SimFtpSession {
         for (int i = 0; i < BURST_LIMIT; i++) {
             byte[] bytes = files.read(fd, at, most, now);
             if (bytes == null) {
-                return new Handled(next.cleared().nak(SimFtpPacket.FAIL_ERRNO, SimFtpPacket.EBADF), false);
+                return new SimFtpOutcome(next.cleared().nak(SimFtpPacket.FAIL_ERRNO, SimFtpPacket.EBADF), false);
             }
             if (bytes.length == 0) {
-                return new Handled(next.cleared().nak(SimFtpPacket.EOF), false);
+                return new SimFtpOutcome(next.cleared().nak(SimFtpPacket.EOF), false);
             }
             next = next.withBurstComplete(bytes.length < most || i == BURST_LIMIT - 1).ack(bytes.length, bytes, at);
             push(next, link, now);
@@ -150,7 +150,7 @@ final class SimFtpSession {
             // the NAK after a short read is at the end of the file
             next = (bytes.length < most ? next.withOffset(at) : next).withSeq(next.seq() + 1);
         }
-        return new Handled(next, true);
+        return new SimFtpOutcome(next, true);
     }
 
     private SimFtpPacket readRefusal(SimFtpPacket reply) {

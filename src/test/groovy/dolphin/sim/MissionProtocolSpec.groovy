@@ -1,5 +1,6 @@
 package dolphin.sim
 
+import com.MAVLink.common.msg_file_transfer_protocol
 import com.MAVLink.common.msg_mission_ack
 import com.MAVLink.common.msg_mission_clear_all
 import com.MAVLink.common.msg_mission_count
@@ -16,6 +17,8 @@ import com.MAVLink.enums.MAV_MODE_FLAG
 import com.MAVLink.enums.MAV_RESULT
 import dolphin.core.Position
 import dolphin.mission.model.MissionItem
+import dolphin.mission.model.MissionType
+import dolphin.mission.transfer.MissionFtpFile
 import spock.lang.AutoCleanup
 import spock.lang.Specification
 
@@ -152,6 +155,27 @@ class MissionProtocolSpec extends Specification {
         gcs.since(from, msg_mission_request).every { it.seq == 0 }
         gcs.await(from, msg_statustext) { it.text == 'Mission upload timeout' }
         !gcs.vehicle().missionUploading()
+    }
+
+    def "a mission written over MAVLink FTP by a bare client is stored, with no item protocol on the link"() {
+        given:
+        def items = plan()
+        byte[] file = MissionFtpFile.encode(MissionType.MISSION, items)
+        int from = gcs.mark()
+
+        when: 'CreateFile, one WriteFile (the whole file is 238 bytes), TerminateSession'
+        def replies = [[0, SimFtpPacket.CREATE_FILE, [data: MissionFtpFile.path(MissionType.MISSION)]],
+                       [2, SimFtpPacket.WRITE_FILE, [data: file]],
+                       [4, SimFtpPacket.TERMINATE_SESSION, [:]]].collect { int seq, int opcode, Map fields ->
+            int mark = gcs.mark()
+            gcs.send(SimFtpServerSpec.ftpRequest(seq, opcode, fields))
+            SimFtpPacket.of(gcs.await(mark, msg_file_transfer_protocol) { SimFtpPacket.of(it).seq() == seq + 1 })
+        }
+
+        then:
+        replies*.opcode() == [SimFtpPacket.ACK] * 3
+        gcs.vehicle().mission().drop(1) == items.drop(1)
+        gcs.since(from, msg_mission_request).isEmpty()
     }
 
     def "item checks: #what is answered #expected and ends the upload"() {

@@ -32,8 +32,8 @@ class SimFtpServerSpec extends Specification {
 
     SimDriver d = new SimDriver(VehicleKind.COPTER)
 
-    /** Sends one request from (255, 190); the replies it got. */
-    List<SimFtpPacket> ftp(int seq, int opcode, Map fields = [:]) {
+    /** A request to vehicle 1: data a path or bytes; size (the data's length unless given), offset, session. */
+    static def ftpRequest(int seq, int opcode, Map fields = [:]) {
         byte[] data = fields.data instanceof String ? (fields.data as String).getBytes('ISO-8859-1') : (fields.data ?: new byte[0]) as byte[]
         int size = fields.containsKey('size') ? fields.size as int : data.length
         def m = new msg_file_transfer_protocol(target_system: 1, target_component: 1)
@@ -41,8 +41,13 @@ class SimFtpServerSpec extends Specification {
         header.putShort((short) seq).put((byte) (fields.session ?: 0)).put((byte) opcode).put((byte) size).put((byte) 0)
                 .put((byte) 0).put((byte) 0).putInt((fields.offset ?: 0) as int)
         ((header.array() as List) + (data as List)).eachWithIndex { b, i -> m.payload[i] = (short) (b & 0xff) }
+        m
+    }
+
+    /** Sends one request from (255, 190); the replies it got. */
+    List<SimFtpPacket> ftp(int seq, int opcode, Map fields = [:]) {
         int from = d.mark()
-        d.handle(m, (fields.sysid ?: 255) as int, 190)
+        d.handle(ftpRequest(seq, opcode, fields), 255, 190)
         d.since(from, msg_file_transfer_protocol).collect { SimFtpPacket.of(it) }
     }
 
@@ -320,7 +325,7 @@ class SimFtpServerSpec extends Specification {
         ((versions[0].capabilities & MAV_PROTOCOL_CAPABILITY.MAV_PROTOCOL_CAPABILITY_FTP) != 0) == ftp
         d.indexOf(from) { it instanceof msg_command_ack } < d.indexOf(from) { it instanceof msg_autopilot_version }
 
-        where: 'as ArduPilot 64a9c78 SITL reported them'
+        where: 'as ArduPilot 64a9c78 SITL reported them (plane: from its GCS_MAVLINK_Plane::capabilities())'
         kind               | ftp   | command || capabilities
         VehicleKind.COPTER | true  | 520     || 64495
         VehicleKind.COPTER | true  | 512     || 64495
