@@ -1,6 +1,7 @@
 package dolphin.sim;
 
 import com.MAVLink.common.msg_file_transfer_protocol;
+import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 
 /**
@@ -25,9 +26,9 @@ record SimFtpPacket(int sysid, int compid, int seq, int session, int opcode, int
     static final int CREATE_DIRECTORY = 9;
     static final int REMOVE_DIRECTORY = 10;
     static final int OPEN_FILE_WO = 11;
+    static final int RENAME = 13;
     static final int CALC_FILE_CRC32 = 14;
     static final int BURST_READ_FILE = 15;
-    static final int RENAME = 13;
     static final int ACK = 128;
     static final int NAK = 129;
 
@@ -116,7 +117,7 @@ record SimFtpPacket(int sysid, int compid, int seq, int session, int opcode, int
         while (n < DATA_BYTES - 1 && data[n] != 0) {
             n++;
         }
-        return new String(data, 0, n, java.nio.charset.StandardCharsets.ISO_8859_1);
+        return new String(data, 0, n, StandardCharsets.ISO_8859_1);
     }
 
     /** GCS_FTP::Session::check_name_len: size is the name's length, or one more with the last data byte NUL. */

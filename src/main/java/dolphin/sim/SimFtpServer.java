@@ -34,7 +34,7 @@ final class SimFtpServer {
         SimFtpPacket request = SimFtpPacket.of(m);
         if (request.opcode() == SimFtpPacket.RESET_SESSIONS) {
             for (SimFtpSession s : sessions) {
-                if (s.sysid == request.sysid() && s.compid == request.compid()) {
+                if (s.ownedBy(request.sysid(), request.compid())) {
                     s.close();
                 }
             }
@@ -62,40 +62,29 @@ final class SimFtpServer {
     /** Closes sessions with no reply for 20 s (a file written is loaded then, as ArduPilot's close does). */
     void tick(long now) {
         for (SimFtpSession s : sessions) {
-            if (s.active && now - s.lastSend > KILL_NANOS) {
-                s.close();
-            }
+            s.closeIfIdle(now, KILL_NANOS);
         }
     }
 
     /** The request's session, claimed if new; null when all are busy (the NAK sent). */
     private SimFtpSession session(SimFtpPacket request, long now) {
         for (SimFtpSession s : sessions) {
-            if (s.claimed && s.matches(request)) {
+            if (s.owns(request)) {
                 return s;
             }
         }
         SimFtpSession oldest = sessions[0];
         for (SimFtpSession s : sessions) {
-            if (idle(s, now) > idle(oldest, now)) {
+            if (s.idle(now) > oldest.idle(now)) {
                 oldest = s;
             }
         }
-        if (oldest.active && now - oldest.lastSend < SimFtpSession.STALE_NANOS) {
+        if (oldest.idle(now) < SimFtpSession.STALE_NANOS) {
             last = request.reply().nak(SimFtpPacket.NO_SESSIONS_AVAILABLE);
             link.accept(last);
             return null;
         }
-        oldest.close();
-        oldest.claimed = true;
-        oldest.id = request.session();
-        oldest.sysid = request.sysid();
-        oldest.compid = request.compid();
+        oldest.claim(request);
         return oldest;
-    }
-
-    /** How long since the session's last reply; a session that never sent or was closed counts as idle for ever. */
-    private static long idle(SimFtpSession s, long now) {
-        return s.active ? now - s.lastSend : Long.MAX_VALUE;
     }
 }

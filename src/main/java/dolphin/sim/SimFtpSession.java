@@ -1,5 +1,6 @@
 package dolphin.sim;
 
+import java.util.Arrays;
 import java.util.function.Consumer;
 
 /**
@@ -17,22 +18,41 @@ final class SimFtpSession {
 
     private final MissionFiles files;
     /** Whether a client took the session: its id, system and component are set. */
-    boolean claimed;
-    int id;
-    int sysid;
-    int compid;
+    private boolean claimed;
+    private int id;
+    private int sysid;
+    private int compid;
     private int fd = -1;
     private boolean writing;
     /** Whether a reply went out since the session was last closed (GCS_FTP's last_send_ms != 0). */
-    boolean active;
-    long lastSend;
+    private boolean active;
+    private long lastSend;
 
     SimFtpSession(MissionFiles files) {
         this.files = files;
     }
 
-    boolean matches(SimFtpPacket request) {
-        return request.sysid() == sysid && request.compid() == compid && request.session() == id;
+    /** Whether the request is this session's: its client's system, component and session id. */
+    boolean owns(SimFtpPacket request) {
+        return claimed && request.sysid() == sysid && request.compid() == compid && request.session() == id;
+    }
+
+    boolean ownedBy(int system, int component) {
+        return claimed && system == sysid && component == compid;
+    }
+
+    /** Closes what the session had open and gives it to the request's client. */
+    void claim(SimFtpPacket request) {
+        close();
+        claimed = true;
+        id = request.session();
+        sysid = request.sysid();
+        compid = request.compid();
+    }
+
+    /** How long since the last reply; a session that never sent, or was closed, counts as idle for ever. */
+    long idle(long now) {
+        return active ? now - lastSend : Long.MAX_VALUE;
     }
 
     /** Closes the open file (loading one written): 0, or -errno. */
@@ -44,6 +64,13 @@ final class SimFtpSession {
         }
         active = false;
         return result;
+    }
+
+    /** Closes the session once it sent nothing for more than {@code nanos} (GCS_FTP's kill of dead sessions). */
+    void closeIfIdle(long now, long nanos) {
+        if (active && now - lastSend > nanos) {
+            close();
+        }
     }
 
     /** Sends the reply and notes the time; a reply to TerminateSession makes the session idle. */
@@ -183,7 +210,7 @@ final class SimFtpSession {
         if (!writing) {
             return reply.nak(SimFtpPacket.FAIL);
         }
-        byte[] bytes = java.util.Arrays.copyOf(request.data(), request.size());
+        byte[] bytes = Arrays.copyOf(request.data(), request.size());
         int result = files.write(fd, request.offset(), bytes, now);
         if (result < 0) {
             return reply.nak(SimFtpPacket.FAIL_ERRNO, -result);
