@@ -97,15 +97,13 @@ final class MissionFileLoader {
             return false;
         }
         store.truncate(0);
-        boolean whole = true;
         for (MissionItem item : contents.items()) {
             if (store.check(item) != MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
-                whole = false;
-                break;
+                return false;
             }
             store.put(item);
         }
-        return store.complete() == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED && whole;
+        return true;
     }
 
     private static boolean allZero(byte[] file, int from) {

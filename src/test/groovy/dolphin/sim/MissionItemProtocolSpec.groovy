@@ -5,8 +5,10 @@ import com.MAVLink.common.msg_mission_count
 import com.MAVLink.common.msg_mission_request
 import com.MAVLink.common.msg_statustext
 import com.MAVLink.enums.MAV_CMD
+import com.MAVLink.enums.MAV_FRAME
 import com.MAVLink.enums.MAV_MISSION_RESULT
 import dolphin.mission.model.MissionItem
+import dolphin.mission.model.MissionType
 import spock.lang.Specification
 
 import static dolphin.sim.MissionProtocolSpec.plan
@@ -91,6 +93,26 @@ class MissionItemProtocolSpec extends Specification {
         then:
         d.since(from, msg_mission_ack)*.type == [MAV_MISSION_RESULT.MAV_MISSION_INVALID_SEQUENCE, MAV_MISSION_RESULT.MAV_MISSION_DENIED]
         d.vehicle.missionUploading()
+    }
+
+    static MissionItem rallyPoint(int seq, double north) {
+        def p = SimDriver.HOME.displace(north, 0, 0)
+        new MissionItem(seq, MAV_CMD.MAV_CMD_NAV_RALLY_POINT, MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT, 0, 0, 0, 0,
+                MissionItem.degE7(p.latitudeDegrees()), MissionItem.degE7(p.longitudeDegrees()), 30, false)
+    }
+
+    def "rally points are stored as they arrive: a refused one leaves the new ones before it and the old ones after, as MissionItemProtocol_Rally"() {
+        given:
+        def old = (0..3).collect { rallyPoint(it, 100 + it) }
+        assert d.upload(old, MissionType.RALLY) == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
+        def fresh = [rallyPoint(0, 500), rallyPoint(1, 501), MissionItem.command(2, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 0, 0, 0, 0)]
+
+        when:
+        int result = d.upload(fresh, MissionType.RALLY)
+
+        then:
+        result == MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED
+        d.vehicle.rallyPoints().items() == [fresh[0], fresh[1], old[2]]
     }
 
     def "a DO_JUMP to #target in a mission of 6 is #expected"() {
