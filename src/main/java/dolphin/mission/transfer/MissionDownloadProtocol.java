@@ -20,7 +20,9 @@ import java.util.concurrent.CompletableFuture;
  * Downloads a vehicle's mission (unlike the original's, it keeps the items and has timeouts and retries): MISSION_REQUEST_LIST
  * until MISSION_COUNT, then MISSION_REQUEST_INT for each seq, again on timeout, accepting
  * MISSION_ITEM_INT (or float MISSION_ITEM, converted), and the final MISSION_ACK ACCEPTED.
- * The result's items include item 0 (ArduPilot's home).
+ * The result's items include item 0 (ArduPilot's home). Timeouts follow the link's round trip,
+ * which answers to messages sent once feed; it gives up after a time without progress
+ * (docs/decisions.md, "Transfers on lossy links").
  */
 public final class MissionDownloadProtocol {
 
@@ -63,11 +65,15 @@ public final class MissionDownloadProtocol {
         return new MissionItem(m.seq, m.command, m.frame, m.param1, m.param2, m.param3, m.param4, x, y, m.z, m.autocontinue != 0);
     }
 
-    /** The state machine of one download; communications thread only. */
-    private static final class Download extends Transfer {
+    /**
+     * The state machine of one download; communications thread only. Stop-and-wait: one request
+     * outstanding, sent again at each timeout; the upload uses it too, to read its list back.
+     */
+    static final class Download extends Transfer {
         private final List<MissionItem> items = new ArrayList<>();
         private int count = -1;        // -1 until MISSION_COUNT
-        private int tries;
+        private int sends;             // sends of the current message (REQUEST_LIST or the request) without progress
+        private long sentAt;           // when it was last sent
 
         Download(VehicleChannel vehicle, ProtocolTimers timers, MissionTransferConfig config, TransferProgress progress,
                  MissionType type) {
@@ -89,12 +95,12 @@ public final class MissionDownloadProtocol {
             m.target_system = (short) vehicle.system();
             m.target_component = (short) vehicle.component();
             m.mission_type = (short) type.wire();
-            tries++;
-            send(m);
+            sent(m);
             arm(() -> {
-                if (tries >= tries()) {
-                    fail("no MISSION_COUNT after " + sent(tries, "MISSION_REQUEST_LIST"));
+                if (!patient()) {
+                    fail(waited("MISSION_COUNT", "MISSION_REQUEST_LIST", sends));
                 } else {
+                    backOff();
                     resends++;
                     sendList();
                 }
@@ -107,24 +113,39 @@ public final class MissionDownloadProtocol {
             m.target_component = (short) vehicle.component();
             m.seq = items.size();
             m.mission_type = (short) type.wire();
-            tries++;
-            send(m);
+            sent(m);
             arm(() -> {
-                if (tries >= tries()) {
-                    fail("no item " + items.size() + " of " + count + " after " + sent(tries, "MISSION_REQUEST_INT"));
+                if (!patient()) {
+                    fail(waited("item " + items.size() + " of " + count, "MISSION_REQUEST_INT", sends));
                 } else {
+                    backOff();
                     resends++;
                     request();
                 }
             });
         }
 
+        private void sent(MAVLinkMessage m) {
+            sends++;
+            sentAt = timers.nanoTime();
+            send(m);
+        }
+
+        /** The awaited answer came: a clean round trip if its message went once (Karn), and progress. */
+        private void answered() {
+            if (sends == 1) {
+                sample(sentAt);
+            }
+            sends = 0;
+            advanced();
+        }
+
         @Override
         void handle(MAVLinkMessage message) {
             if (message instanceof msg_mission_count c) {
                 if (count < 0) {            // a later COUNT answers a duplicated REQUEST_LIST: ignored
+                    answered();
                     count = c.count;
-                    tries = 0;
                     report(0, count);
                     if (count == 0) {
                         finishDownload();
@@ -148,8 +169,8 @@ public final class MissionDownloadProtocol {
             if (count < 0 || item.seq() != items.size()) {
                 return;                     // a duplicate or a late answer to an earlier request
             }
+            answered();
             items.add(item);
-            tries = 0;
             report(items.size(), count);
             if (items.size() == count) {
                 finishDownload();

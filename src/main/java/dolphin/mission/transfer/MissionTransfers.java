@@ -35,7 +35,7 @@ public final class MissionTransfers {
     private final Deque<Transfer> waiting = new ArrayDeque<>();
     private Transfer active;
 
-    /** @param config the timeout and tries of transfers started from now on (a command line may change them) */
+    /** @param config the timeouts and path of transfers started from now on (a command line may change them) */
     public MissionTransfers(VehicleChannel vehicle, ProtocolTimers timers, Supplier<MissionTransferConfig> config) {
         this.vehicle = vehicle;
         this.timers = timers;
