@@ -102,6 +102,12 @@ public final class MissionUploadProtocol {
      * request for k + 2 does not follow.
      */
     private static final class Upload extends Transfer {
+        /**
+         * ArduPilot asks again for the item it awaits after 1 s without one: an answer later than that
+         * may answer its own repetition, not our message, and is no sample (Karn's rule, both ways).
+         */
+        private static final long VEHICLE_REPEAT_NANOS = 1_000_000_000L;
+
         private final List<MissionItem> items;
         private final int[] sends;      // sends of each item
         private final long[] sentAt;    // when each item was last sent
@@ -218,17 +224,17 @@ public final class MissionUploadProtocol {
                 return;                 // stale (reordered or late): the vehicle asked for a later item since
             }
             if (seq > highest) {
-                // Karn: a clean sample only from an answer to a message sent once
                 if (highest < 0 && countSends == 1) {
-                    sample(countAt);
+                    cleanSample(countAt);
                 } else if (seq > 0 && sends[seq - 1] == 1) {
-                    sample(sentAt[seq - 1]);
+                    cleanSample(sentAt[seq - 1]);
                 }
                 advanced();
                 highest = seq;
                 report(seq, items.size());
             }
             if (seq == ahead) {
+                ahead = -1;             // deferred once: a repeated request means the vehicle lost it
                 long left = sentAt[seq] + timeout().toNanos() - timers.nanoTime();
                 if (left > 0) {         // in flight: wait for the request of the next one
                     arm(Duration.ofNanos(left), this::itemTimedOut);
@@ -245,7 +251,7 @@ public final class MissionUploadProtocol {
             if (result == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
                 if (items.isEmpty()) {
                     if (countSends == 1) {
-                        sample(countAt);
+                        cleanSample(countAt);
                     }
                     report(0, 0);
                     succeed(items);
@@ -253,7 +259,7 @@ public final class MissionUploadProtocol {
                     ignoredAcks++;      // a late ACK of an earlier transfer
                 } else if (sends[last] > 0) {
                     if (sends[last] == 1) {
-                        sample(sentAt[last]);
+                        cleanSample(sentAt[last]);
                     }
                     report(items.size(), items.size());
                     succeed(items);
@@ -269,6 +275,13 @@ public final class MissionUploadProtocol {
                 settle(describe(result, items.get(last), items.size()));
             } else {
                 fail(describe(result, lastSent < 0 ? null : items.get(lastSent), items.size()));
+            }
+        }
+
+        /** The answer to a message sent once (Karn), if it came before the vehicle would have repeated its own message. */
+        private void cleanSample(long sentAt) {
+            if (timers.nanoTime() - sentAt < VEHICLE_REPEAT_NANOS) {
+                sample(sentAt);
             }
         }
 
