@@ -98,8 +98,8 @@ public final class MissionUploadProtocol {
      * timeout, items k and k + 1 go again (ArduPilot accepts an item whose seq is the one it
      * expects, requested or not): whichever of item k or the request for k + 1 was lost, the
      * vehicle moves on within one round trip. A request for that k + 1 arriving while it is still
-     * in flight (sent less than one timeout ago) is not answered; the timer resends if the
-     * request for k + 2 does not follow.
+     * in flight (sent less than one timeout ago) is not answered, once: the timer resends if the
+     * request for k + 2 does not follow, a repeated request at once.
      */
     private static final class Upload extends Transfer {
         /**

@@ -14,7 +14,7 @@ import java.time.Duration
 import static dolphin.mission.transfer.ScriptedMissionVehicle.ack
 import static dolphin.mission.transfer.ScriptedMissionVehicle.count
 import static dolphin.mission.transfer.ScriptedMissionVehicle.itemInt
-import static dolphin.mission.transfer.ScriptedMissionVehicle.requestInt
+import static dolphin.mission.transfer.ScriptedMissionVehicle.request
 
 /**
  * A vehicle that keeps its mission as ArduPilot does (MissionItemProtocol.cpp, docs/mavlink.md),
@@ -116,7 +116,7 @@ class LossyMissionVehicle {
 
     private void ask() {
         lastRequest = clock.nanoTime()
-        reply(requestInt(requestI, uploading))
+        reply(request(requestI, uploading))
     }
 
     /** ArduPilot's MissionItemProtocol::update: the re-request, and the upload timeout. */
