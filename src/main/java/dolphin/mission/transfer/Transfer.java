@@ -19,8 +19,8 @@ import java.util.concurrent.CompletableFuture;
 abstract class Transfer {
 
     /**
-     * The back-off stops at four times the link's timeout: one message (two at most) in flight
-     * cannot congest a radio, whose losses are noise, and each doubling beyond would cost the
+     * The back-off stops at four times the link's timeout: two messages in flight (four in a
+     * download) cannot congest a radio, whose losses are noise, and each doubling beyond would cost the
      * transfer chances to get through before it gives up (at 30 % loss both ways, ten sends in 10 s
      * leave one exchange in a thousand unanswered, twenty one in a million).
      */

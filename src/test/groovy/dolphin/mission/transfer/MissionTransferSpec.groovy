@@ -393,9 +393,9 @@ class MissionTransferSpec extends Specification {
 
         then: 'one transfer: the upload, then the download inside it'
         channel.conversation.drop(10) == ['0.0 > ITEM 4', '0.05 > ITEM 4', '0.05 < ACK ERROR', '0.05 > REQUEST_LIST', '0.05 < COUNT 5',
-                                          '0.05 > REQUEST_INT 0', '0.05 < ITEM 0', '0.05 > REQUEST_INT 1', '0.05 < ITEM 1',
-                                          '0.05 > REQUEST_INT 2', '0.05 < ITEM 2', '0.05 > REQUEST_INT 3', '0.05 < ITEM 3',
-                                          '0.05 > REQUEST_INT 4', '0.05 < ITEM 4', '0.05 > ACK ACCEPTED']
+                                          '0.05 > REQUEST_INT 0', '0.05 > REQUEST_INT 1', '0.05 > REQUEST_INT 2', '0.05 > REQUEST_INT 3',
+                                          '0.05 < ITEM 0', '0.05 > REQUEST_INT 4', '0.05 < ITEM 1', '0.05 < ITEM 2', '0.05 < ITEM 3',
+                                          '0.05 < ITEM 4', '0.05 > ACK ACCEPTED']
         with(r) {
             success()
             verified()
@@ -644,18 +644,19 @@ class MissionTransferSpec extends Specification {
         'an empty mission'  | []             | -1       | []         || 0.0d   | []
     }
 
-    def "a download as ArduPilot answers it: REQUEST_LIST, the COUNT, a MISSION_REQUEST_INT per item, our ACK"() {
+    def "a download as ArduPilot answers it: REQUEST_LIST, the COUNT, a MISSION_REQUEST_INT per item, four at most outstanding, our ACK"() {
         given:
-        vehicle().stored = intended().take(3)
+        vehicle().stored = intended()
 
         when:
         def down = transfers.download().download()
         run()
 
         then:
-        down.get().items() == intended().take(3)
-        channel.conversation == ['0.0 > REQUEST_LIST', '0.0 < COUNT 3', '0.0 > REQUEST_INT 0', '0.0 < ITEM 0', '0.0 > REQUEST_INT 1',
-                                 '0.0 < ITEM 1', '0.0 > REQUEST_INT 2', '0.0 < ITEM 2', '0.0 > ACK ACCEPTED']
+        down.get().items() == intended()
+        channel.conversation == ['0.0 > REQUEST_LIST', '0.0 < COUNT 5', '0.0 > REQUEST_INT 0', '0.0 > REQUEST_INT 1', '0.0 > REQUEST_INT 2',
+                                 '0.0 > REQUEST_INT 3', '0.0 < ITEM 0', '0.0 > REQUEST_INT 4', '0.0 < ITEM 1', '0.0 < ITEM 2', '0.0 < ITEM 3',
+                                 '0.0 < ITEM 4', '0.0 > ACK ACCEPTED']
     }
 
     def "a vehicle that never answers MISSION_REQUEST_LIST fails the download 10 s on, after 7 of them, 1.5 s apart"() {
@@ -685,7 +686,8 @@ class MissionTransferSpec extends Specification {
         runTo(0.049)
 
         then:
-        sentNow() == ['0.0 REQUEST_LIST', '0.0 REQUEST_INT 0', '0.0 REQUEST_INT 1', '0.0 REQUEST_INT 2', '0.0 REQUEST_INT 3']
+        sentNow() == ['0.0 REQUEST_LIST', '0.0 REQUEST_INT 0', '0.0 REQUEST_INT 1', '0.0 REQUEST_INT 2', '0.0 REQUEST_INT 3',
+                      '0.0 REQUEST_INT 4']
 
         when:
         run()
@@ -698,24 +700,24 @@ class MissionTransferSpec extends Specification {
         !sentNow().any { it.contains('ACK') }
     }
 
-    def "a download ignores a second MISSION_COUNT, items it did not ask for, and INVALID_SEQUENCE ACKs (counted)"() {
+    def "a download ignores a second MISSION_COUNT, items it did not ask for, duplicates and INVALID_SEQUENCE ACKs (counted); items may come in any order"() {
         given: 'the spec is the vehicle'
         def down = timed(transfers.download().download())
 
         when:
         channel.receive(count(2))
         channel.receive(count(7))                   // answers a duplicated REQUEST_LIST
-        channel.receive(itemInt(intended()[1]))     // not asked for
+        channel.receive(itemInt(intended()[3]))     // not asked for
         channel.receive(ack(INVALID_SEQUENCE))      // from an earlier upload, late
-        channel.receive(itemInt(intended()[0]))
-        channel.receive(itemInt(intended()[0]))     // a duplicate
+        channel.receive(itemInt(intended()[1]))     // before item 0
+        channel.receive(itemInt(intended()[1]))     // a duplicate
 
         then:
         sentNow() == ['0.0 REQUEST_LIST', '0.0 REQUEST_INT 0', '0.0 REQUEST_INT 1']
         !down.done
 
         when:
-        channel.receive(itemInt(intended()[1]))
+        channel.receive(itemInt(intended()[0]))
 
         then:
         with(down.get()) {
@@ -724,6 +726,43 @@ class MissionTransferSpec extends Specification {
             resends() == 0
         }
         sentNow().last() == '0.0 ACK ACCEPTED'
+    }
+
+    def "a download with four requests outstanding: a lost item's request goes again at the timeout, alone; the window slides past it"() {
+        given: 'the spec is the vehicle, 100 ms away'
+        def down = timed(transfers.download().download())
+        runTo(0.1)
+        channel.receive(count(6))
+
+        when: 'items 1 and 2 come back, out of order; item 0 is lost'
+        runTo(0.2)
+        channel.receive(itemInt(intended()[2]))
+        channel.receive(itemInt(intended()[1]))
+
+        then: 'two more requested as two came'
+        sentNow() == ['0.0 REQUEST_LIST', '0.1 REQUEST_INT 0', '0.1 REQUEST_INT 1', '0.1 REQUEST_INT 2', '0.1 REQUEST_INT 3',
+                      '0.2 REQUEST_INT 4', '0.2 REQUEST_INT 5']
+
+        when: 'item 3 comes: four samples of 100 ms, timeout 184 ms; it passes for item 0 at 0.284 s'
+        channel.receive(itemInt(intended()[3]))
+        runTo(0.35)
+
+        then: 'request 0 goes again, alone: 4 and 5 are not yet due'
+        channel.repeats() == ['0.284 REQUEST_INT 0']
+
+        when:
+        channel.receive(itemInt(intended()[0]))
+        channel.receive(itemInt(intended()[4]))
+        channel.receive(itemInt(intended()[4]))
+        channel.receive(itemInt(MissionItem.command(5, MAV_CMD.MAV_CMD_DO_CHANGE_SPEED, 0, 3, -1, 0)))
+
+        then:
+        with(down.get()) {
+            items()*.seq() == [0, 1, 2, 3, 4, 5]
+            items().take(5) == intended()
+            resends() == 1
+        }
+        sentNow().last() == '0.35 ACK ACCEPTED'
     }
 
     def "an error ACK fails the download, saying what it answered"() {
@@ -743,7 +782,8 @@ class MissionTransferSpec extends Specification {
 
         then:
         failed.get().error() == 'download from vehicle 2 failed: MAV_MISSION_ERROR (answering the request for item 2 of 5)'
-        sentNow() == ['0.0 REQUEST_LIST', '0.0 REQUEST_LIST', '0.0 REQUEST_INT 0', '0.0 REQUEST_INT 1', '0.0 REQUEST_INT 2']
+        sentNow() == ['0.0 REQUEST_LIST', '0.0 REQUEST_LIST', '0.0 REQUEST_INT 0', '0.0 REQUEST_INT 1', '0.0 REQUEST_INT 2',
+                      '0.0 REQUEST_INT 3', '0.0 REQUEST_INT 4']
     }
 
     def "a vehicle answering with the float MISSION_ITEM: its degrees become degE7 (to float precision), the rest as sent"() {
