@@ -86,13 +86,17 @@ def fields(m):
 
 
 def as_reported(item):
-    """An uploaded item as ArduPilot reports it on download: the frame reduced to its altitude
-    reference (GLOBAL, GLOBAL_RELATIVE_ALT or GLOBAL_TERRAIN_ALT), as AP_Mission stores it."""
+    """An uploaded item of build()'s as ArduPilot reports it on download: the frame reduced to its
+    altitude reference (GLOBAL, GLOBAL_RELATIVE_ALT or GLOBAL_TERRAIN_ALT), as AP_Mission stores it,
+    and a NAV_LAND's param4 (its yaw direction, kept as a sign) 1 unless it was negative."""
     reference = {mavlink.MAV_FRAME_GLOBAL_RELATIVE_ALT: mavlink.MAV_FRAME_GLOBAL_RELATIVE_ALT,
                  mavlink.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT: mavlink.MAV_FRAME_GLOBAL_RELATIVE_ALT,
                  mavlink.MAV_FRAME_GLOBAL_TERRAIN_ALT: mavlink.MAV_FRAME_GLOBAL_TERRAIN_ALT,
                  mavlink.MAV_FRAME_GLOBAL_TERRAIN_ALT_INT: mavlink.MAV_FRAME_GLOBAL_TERRAIN_ALT}
-    return dict(item, frame=reference.get(item["frame"], mavlink.MAV_FRAME_GLOBAL))
+    reported = dict(item, frame=reference.get(item["frame"], mavlink.MAV_FRAME_GLOBAL))
+    if item["command"] == mavlink.MAV_CMD_NAV_LAND:
+        reported["param4"] = -1.0 if item["param4"] < 0 else 1.0
+    return reported
 
 
 def upload(gs, sysid, loader, report):

@@ -8,8 +8,8 @@ import java.util.Set;
 
 /**
  * The checks ArduPilot makes on each uploaded item (AP_Mission::mavlink_int_to_mission_cmd), with
- * its MAV_MISSION_RESULT codes: commands it does not know (DO_CHANGE_ALTITUDE and
- * DO_TRIGGER_CONTROL among them) are UNSUPPORTED; commands with a position accept only the global
+ * its MAV_MISSION_RESULT codes: commands it does not know (DO_CHANGE_ALTITUDE,
+ * DO_TRIGGER_CONTROL and CONDITION_CHANGE_ALT among them) are UNSUPPORTED; commands with a position accept only the global
  * frames (and MISSION); latitude, longitude and altitude must be sane.
  */
 final class MissionCheck {
@@ -23,7 +23,7 @@ final class MissionCheck {
 
     /** Commands without a location that ArduPilot stores in a mission. */
     static final Set<Integer> OTHERS = Set.of(MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH, MAV_CMD.MAV_CMD_NAV_DELAY,
-            MAV_CMD.MAV_CMD_CONDITION_DELAY, MAV_CMD.MAV_CMD_CONDITION_CHANGE_ALT, MAV_CMD.MAV_CMD_CONDITION_DISTANCE,
+            MAV_CMD.MAV_CMD_CONDITION_DELAY, MAV_CMD.MAV_CMD_CONDITION_DISTANCE,
             MAV_CMD.MAV_CMD_CONDITION_YAW, MAV_CMD.MAV_CMD_DO_JUMP, MAV_CMD.MAV_CMD_DO_CHANGE_SPEED,
             MAV_CMD.MAV_CMD_DO_SET_RELAY, MAV_CMD.MAV_CMD_DO_REPEAT_RELAY, MAV_CMD.MAV_CMD_DO_SET_SERVO,
             MAV_CMD.MAV_CMD_DO_REPEAT_SERVO, MAV_CMD.MAV_CMD_DO_DIGICAM_CONFIGURE, MAV_CMD.MAV_CMD_DO_DIGICAM_CONTROL,

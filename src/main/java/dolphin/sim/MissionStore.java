@@ -20,10 +20,13 @@ final class MissionStore implements ItemStore {
     private final List<MissionItem> items = new ArrayList<>();
     private final Supplier<Position> home;
     private final int capacity;
+    /** Whether the vehicle is ArduPlane, which keeps other parameters of a NAV_WAYPOINT. */
+    private final boolean plane;
 
-    MissionStore(Supplier<Position> home, int capacity) {
+    MissionStore(Supplier<Position> home, int capacity, boolean plane) {
         this.home = home;
         this.capacity = capacity;
+        this.plane = plane;
         items.add(null);
     }
 
@@ -82,20 +85,10 @@ final class MissionStore implements ItemStore {
         }
     }
 
-    /**
-     * An item as a download reports it: ArduPilot keeps a location's altitude reference, not the
-     * frame it was sent in, and reports MAV_FRAME_GLOBAL or GLOBAL_RELATIVE_ALT (or TERRAIN_ALT)
-     * even in MISSION_ITEM_INT; items without a position come back in MAV_FRAME_GLOBAL too
-     * (AP_Mission::mission_cmd_to_mavlink_int).
-     */
+    /** An item as a download reports it: what ArduPilot keeps of it ({@link CommandStorage}), home included. */
     @Override
     public MissionItem reported(int seq) {
-        MissionItem i = get(seq);
-        int reference = MissionItem.altitudeReference(i.frame());
-        int frame = reference == MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT || reference == MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT
-                ? reference : MAV_FRAME.MAV_FRAME_GLOBAL;
-        return new MissionItem(i.seq(), i.command(), frame, i.param1(), i.param2(), i.param3(), i.param4(), i.x(), i.y(), i.z(),
-                i.autocontinue());
+        return CommandStorage.reported(get(seq), plane);
     }
 
     @Override

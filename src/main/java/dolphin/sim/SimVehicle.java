@@ -101,7 +101,7 @@ public final class SimVehicle {
         this.mode = firmware.bootMode();
         this.nextHeartbeat = now;
         this.lastTick = now;
-        this.missionStore = new MissionStore(() -> this.home, options.missionCapacity());
+        this.missionStore = new MissionStore(() -> this.home, options.missionCapacity(), kind == VehicleKind.PLANE);
         TransferHost host = new TransferHost();
         this.lists = new MissionLists(missionStore, options.missionCapacity(), host);
         this.ftp = new SimFtpServer(new MissionFiles(lists::store, new MissionFileLoader(lists::store, host)), this::send);
@@ -489,7 +489,11 @@ public final class SimVehicle {
             if (!(Math.abs(c.param5) <= 90 && Math.abs(c.param6) <= 180)) {
                 return MAV_RESULT.MAV_RESULT_DENIED;
             }
-            home = Position.fromDegrees(c.param5, c.param6, c.param7);
+            // to degE7 as GCS_MAVLINK::convert_COMMAND_LONG_to_COMMAND_INT does: in float, ArduPilot being
+            // built with -fsingle-precision-constant, and truncated (40.44423294 becomes 404442336, not 404442329)
+            int lat = (int) (c.param5 * 1e7f);
+            int lon = (int) (c.param6 * 1e7f);
+            home = Position.fromDegrees(lat * 1e-7, lon * 1e-7, c.param7);
         }
         return MAV_RESULT.MAV_RESULT_ACCEPTED;
     }

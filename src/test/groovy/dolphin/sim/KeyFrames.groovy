@@ -3,6 +3,7 @@ package dolphin.sim
 import com.MAVLink.Messages.MAVLinkMessage
 import com.MAVLink.common.msg_command_ack
 import com.MAVLink.common.msg_extended_sys_state
+import com.MAVLink.common.msg_file_transfer_protocol
 import com.MAVLink.common.msg_mission_ack
 import com.MAVLink.common.msg_mission_current
 import com.MAVLink.common.msg_mission_item_reached
@@ -10,19 +11,33 @@ import com.MAVLink.common.msg_statustext
 import com.MAVLink.enums.MAV_CMD
 import com.MAVLink.enums.MAV_MODE_FLAG
 import com.MAVLink.minimal.msg_heartbeat
+import com.MAVLink.standard.msg_autopilot_version
 import groovy.transform.EqualsAndHashCode
 
 /**
  * The frames of a vehicle that tell what it did, as one line each, in the order it sent them; a
  * frame that says what its kind said last is dropped (a heartbeat or MISSION_CURRENT repeats every
- * second). Kinds: HEARTBEAT (armed, custom mode), MISSION_CURRENT (seq, total, state),
- * MISSION_ITEM_REACHED, EXTENDED_SYS_STATE (landed state), COMMAND_ACK (command, result; not
- * SET_MESSAGE_INTERVAL's), MISSION_ACK, and the STATUSTEXTs in {@link #TEXTS}, cut to those words.
+ * second), except an FTP reply, which answers a request of its own. Kinds: HEARTBEAT (armed, custom
+ * mode), MISSION_CURRENT (seq, total, state), MISSION_ITEM_REACHED, EXTENDED_SYS_STATE (landed
+ * state), COMMAND_ACK (command, result; not SET_MESSAGE_INTERVAL's), MISSION_ACK, the STATUSTEXTs in
+ * {@link #TEXTS}, cut to those words, AUTOPILOT_VERSION (capabilities, version) and
+ * FILE_TRANSFER_PROTOCOL (each reply whole: header, addressee, and the bytes it carries).
  */
 class KeyFrames {
 
     static final List<String> TEXTS = ['SIM Hit ground', 'Disarming motors', 'Mission complete, changing mode to RTL',
                                        'Mode change failed: Auto requires position', 'Bad alt frame']
+
+    /** MAV_FTP_OPCODE names, of the requests a reply answers and of the reply itself. */
+    static final Map<Integer, String> FTP_OPCODES = [0: 'None', 1: 'TerminateSession', 2: 'ResetSessions', 3: 'ListDirectory',
+                                                     4: 'OpenFileRO', 5: 'ReadFile', 6: 'CreateFile', 7: 'WriteFile',
+                                                     8: 'RemoveFile', 9: 'CreateDirectory', 10: 'RemoveDirectory',
+                                                     11: 'OpenFileWO', 12: 'TruncateFile', 13: 'Rename',
+                                                     14: 'CalcFileCRC32', 15: 'BurstReadFile', 128: 'ACK', 129: 'NAK']
+    /** MAV_FTP_ERR names, of a NAK's first data byte. */
+    static final List<String> FTP_ERRORS = ['None', 'Fail', 'FailErrno', 'InvalidDataSize', 'InvalidSession', 'NoSessionsAvailable',
+                                            'EOF', 'UnknownCommand', 'FileExists', 'FileProtected', 'FileNotFound']
+    static final int FTP_NAK = 129
 
     @EqualsAndHashCode
     static class Event {
@@ -49,7 +64,7 @@ class KeyFrames {
 
     void add(MAVLinkMessage m) {
         Event e = event(m)
-        if (e != null && last[e.kind] != e.value) {
+        if (e != null && (e.kind == 'FILE_TRANSFER_PROTOCOL' || last[e.kind] != e.value)) {
             last[e.kind] = e.value
             events << e
         }
@@ -83,8 +98,35 @@ class KeyFrames {
             case msg_statustext:
                 String text = TEXTS.find { m.text.startsWith(it) }
                 return text == null ? null : new Event('STATUSTEXT', text)
+            case msg_autopilot_version:
+                return new Event('AUTOPILOT_VERSION', "capabilities=${m.capabilities} flight_sw_version=${m.flight_sw_version}")
+            case msg_file_transfer_protocol:
+                return new Event('FILE_TRANSFER_PROTOCOL', ftp(m))
             default:
                 return null
         }
+    }
+
+    /**
+     * One FTP reply: its opcode (ACK or NAK), the request's, to whom, session, seq, size, offset,
+     * burst_complete and its {@code size} data bytes: a NAK's as its MAV_FTP_ERR (and errno), an
+     * ACK's in hex (the file size an OpenFileRO gives, the file bytes a read gives). The padding byte
+     * and the data past {@code size} are no part of the reply.
+     */
+    private static String ftp(msg_file_transfer_protocol m) {
+        short[] p = m.payload
+        int opcode = p[3]
+        int size = p[4]
+        String line = "${name(opcode)} req=${name(p[5])} to=${m.target_system}/${m.target_component} session=${p[2]}" +
+                " seq=${p[0] | p[1] << 8} size=${size} offset=${p[8] | p[9] << 8 | p[10] << 16 | (long) p[11] << 24}" +
+                " burst_complete=${p[6]}"
+        if (opcode == FTP_NAK) {
+            return line + " error=${FTP_ERRORS[p[12]]}" + (size > 1 ? " errno=${p[13]}" : '')
+        }
+        line + ' data=' + (0..<size).collect { String.format('%02x', p[12 + it]) }.join('')
+    }
+
+    private static String name(int opcode) {
+        FTP_OPCODES.getOrDefault(opcode, opcode as String)
     }
 }

@@ -59,15 +59,11 @@ class MissionProtocolSpec extends Specification {
         gcs.since(from, msg_mission_request_int).isEmpty()
         gcs.await(from, msg_statustext) { it.text == 'Flight plan received' }
 
-        and: 'what is stored equals the upload, except seq 0: home, AMSL, frame GLOBAL; downloads report frames as ArduPilot does'
+        and: 'what is stored equals the upload, except seq 0: home, AMSL, frame GLOBAL; downloads report items as ArduPilot keeps them'
         def stored = gcs.vehicle().mission()
         stored.drop(1) == items.drop(1)
         def down = gcs.download()
-        down.drop(1) == stored.drop(1).collect {
-            new MissionItem(it.seq(), it.command(), it.frame() == MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT
-                    ? MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT : MAV_FRAME.MAV_FRAME_GLOBAL,
-                    it.param1(), it.param2(), it.param3(), it.param4(), it.x(), it.y(), it.z(), it.autocontinue())
-        }
+        down.drop(1) == stored.drop(1).collect { CommandStorage.reported(it, false) }
         down[0] == stored[0]
         with(down[0]) {
             seq() == 0

@@ -12,7 +12,8 @@ import spock.lang.Specification
  * same kind, booted when the recorded one was (its heartbeat on the recorded one's phase), with the
  * ground station's frames at the recorded times. What the simulator sends must show the same frames
  * that matter (KeyFrames: modes and arming, MISSION_CURRENT, MISSION_ITEM_REACHED, landed state,
- * ACKs, ground contact, disarm, the plane's RTL) in the same order for each kind, and each
+ * ACKs, ground contact, disarm, the plane's RTL, AUTOPILOT_VERSION, every MAVLink FTP reply) in the
+ * same order for each kind, and each
  * recording's ending in the order SITL sent it: the copter's first flight started 41 s after boot
  * and after 15 s, both ending in a landing, a disarm and the mission started over; a fence breach
  * ending in RTL, the mission stopped, the copter still descending; a rover's square ending COMPLETE; a
@@ -21,13 +22,22 @@ import spock.lang.Specification
  * the waypoints, which MISSION_CURRENT never names), ending as the first flight ends; a sub armed before its position estimate, refused AUTO
  * until it had one, then three waypoints at 10 m depth, COMPLETE, and a disarm at depth that resets
  * the mission; dolphin's AMSL items refused by a sub ("Bad alt frame"), on DO_SET_MISSION_CURRENT and
- * again on AUTO, the mission COMPLETE at once (docs/mavlink.md, "The simulated fleet and real ArduPilot").
+ * again on AUTO, the mission COMPLETE at once; the fence flight and the survey again with their fence,
+ * rally points and mission written over MAVLink FTP and read back, the survey's in a burst of five
+ * ACKs (docs/mavlink.md, "The simulated fleet and real ArduPilot").
+ *
+ * <p>An FTP reply is compared whole (opcode, the request's, addressee, session, seq, size, offset,
+ * burst_complete, its data: the file as the vehicle stores it, or a NAK's error), and so are
+ * AUTOPILOT_VERSION's capabilities (FTP, MISSION_INT, COMMAND_INT, fence, rally...) and version. Not
+ * compared: when a frame came relative to frames of other kinds (the ground station's frames are
+ * replayed at the vehicle's last boot time seen before them, not at the instant they came), and
+ * AUTOPILOT_VERSION's git hash and board ids, which name the build, not what it does.
  */
 class RecordingConformanceSpec extends Specification {
 
     static final Path DIRECTORY = Path.of(System.getProperty('dolphin.recordings', 'src/test/resources/sitl-recordings'))
     static final List<String> KINDS = ['HEARTBEAT', 'MISSION_CURRENT', 'MISSION_ITEM_REACHED', 'EXTENDED_SYS_STATE',
-                                       'COMMAND_ACK', 'MISSION_ACK', 'STATUSTEXT']
+                                       'COMMAND_ACK', 'MISSION_ACK', 'STATUSTEXT', 'AUTOPILOT_VERSION', 'FILE_TRANSFER_PROTOCOL']
 
     /**
      * ArduCopter SITL's EKF uses GPS, so the copter has a position estimate, 41 s after boot (on its
@@ -100,6 +110,19 @@ class RecordingConformanceSpec extends Specification {
         'sub-bad-alt-frame'           | VehicleKind.SUB    || ['MISSION_ACK type=0', 'COMMAND_ACK command=400 result=0',
                                                                'COMMAND_ACK command=224 result=0', 'STATUSTEXT Bad alt frame',
                                                                'COMMAND_ACK command=176 result=0', 'HEARTBEAT armed=1 mode=3']
+        'copter-ftp-fence'            | VehicleKind.COPTER || ['AUTOPILOT_VERSION capabilities=64495 flight_sw_version=67633152',
+                                                               'FILE_TRANSFER_PROTOCOL NAK req=BurstReadFile to=208/190 session=2 seq=3 size=1 offset=238 burst_complete=1 error=EOF',
+                                                               'FILE_TRANSFER_PROTOCOL ACK req=TerminateSession to=208/190 session=5 seq=3 size=0 offset=0 burst_complete=0 data=',
+                                                               'FILE_TRANSFER_PROTOCOL NAK req=BurstReadFile to=208/190 session=6 seq=3 size=1 offset=200 burst_complete=1 error=EOF',
+                                                               'MISSION_CURRENT seq=3 total=4 state=3', 'HEARTBEAT armed=1 mode=6',
+                                                               'MISSION_CURRENT seq=3 total=4 state=2', 'EXTENDED_SYS_STATE landed_state=4']
+        'copter-ftp-survey'           | VehicleKind.COPTER || ['AUTOPILOT_VERSION capabilities=64495 flight_sw_version=67633152',
+                                                               'FILE_TRANSFER_PROTOCOL ACK req=WriteFile to=208/190 session=1 seq=6 size=0 offset=956 burst_complete=0 data=',
+                                                               'FILE_TRANSFER_PROTOCOL ACK req=BurstReadFile to=208/190 session=2 seq=6 size=4 offset=956 burst_complete=1 data=00000100',
+                                                               'FILE_TRANSFER_PROTOCOL NAK req=BurstReadFile to=208/190 session=2 seq=7 size=1 offset=960 burst_complete=1 error=EOF',
+                                                               'MISSION_CURRENT seq=24 total=24 state=3', 'EXTENDED_SYS_STATE landed_state=4',
+                                                               'STATUSTEXT SIM Hit ground', 'STATUSTEXT Disarming motors',
+                                                               'MISSION_CURRENT seq=1 total=24 state=3', 'HEARTBEAT armed=0 mode=3']
     }
 
     /** Whether {@code expected} occur in {@code lines} in this order, others between them allowed. */

@@ -79,6 +79,22 @@ class SimVehicleSpec extends Specification {
         d.arm().result == MAV_RESULT.MAV_RESULT_ACCEPTED
     }
 
+    def "DO_SET_HOME in a COMMAND_LONG: its float latitude and longitude times 1e7 in float, truncated, as ArduCopter's home in copter-ftp-fence"() {
+        given:
+        def d = new SimDriver(VehicleKind.COPTER)
+
+        when: 'what dolphin sent for 40.444233, -7.375234 (floats 40.44423294..., -7.37523412...)'
+        def ack = d.command(MAV_CMD.MAV_CMD_DO_SET_HOME, [0, 0, 0, 0, 40.444233, -7.375234, 820])
+
+        then: 'not 404442329 and -73752341, the values in double'
+        ack.result == MAV_RESULT.MAV_RESULT_ACCEPTED
+        with(d.vehicle.mission()[0]) {
+            x() == 404442336
+            y() == -73752344
+            z() == 820f
+        }
+    }
+
     def "a disarmed copter that never settles repeats its PreArm text every 30 s"() {
         given:
         def d = new SimDriver(VehicleKind.COPTER, SimOptions.DEFAULT.withWarmup(1000))
