@@ -8,6 +8,8 @@ import java.util.Arrays;
  * One MAVLink FTP request or reply as ArduPilot's GCS_FTP keeps it (its Transaction): the
  * FILE_TRANSFER_PROTOCOL payload's header (seq u16 LE, session, opcode, size, req_opcode,
  * burst_complete, offset u32 LE) and its 239 data bytes, with the requester's system and component.
+ * Coded apart from the client's {@code FtpPayload} on purpose: the simulator stands for ArduPilot in
+ * the client's tests, where a mistake shared by both codecs would pass unseen.
  */
 record SimFtpPacket(int sysid, int compid, int seq, int session, int opcode, int size, int reqOpcode,
                     boolean burstComplete, long offset, byte[] data) {

@@ -2,9 +2,11 @@ package dolphin.mavlink.ftp;
 
 import dolphin.mavlink.LinkTimeouts;
 import dolphin.mavlink.ProtocolTimers;
+import dolphin.mavlink.RoundTrip;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.BooleanSupplier;
 
 /**
  * One session with the vehicle's FTP server, on the protocol's thread: its requests numbered,
@@ -50,7 +52,7 @@ final class FtpSession {
     private final int id;
     private final String path;
     private final Runnable onEnd;
-    private final java.util.function.BooleanSupplier heard;
+    private final BooleanSupplier heard;
     private final List<OutstandingRequest> pending = new ArrayList<>();
     private Owner owner;
     private int nextSeq;
@@ -64,7 +66,7 @@ final class FtpSession {
      * @param onEnd runs once the session has ended
      */
     FtpSession(FtpChannel channel, ProtocolTimers timers, LinkTimeouts timeouts, int id, String path,
-               java.util.function.BooleanSupplier heard, Runnable onEnd) {
+               BooleanSupplier heard, Runnable onEnd) {
         this.channel = channel;
         this.timers = timers;
         this.timeouts = timeouts;
@@ -91,7 +93,7 @@ final class FtpSession {
         return timeouts;
     }
 
-    dolphin.mavlink.RoundTrip roundTrip() {
+    RoundTrip roundTrip() {
         return channel.roundTrip();
     }
 

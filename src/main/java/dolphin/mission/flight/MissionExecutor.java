@@ -365,7 +365,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 nextList(lists, plan);
             } else if (config.verify()) {
                 // The vehicle may hold the list although the final ACK was lost: the download decides.
-                enter(new Verifying(lists, plan, r.success() ? null : r.error()));
+                enter(new Verifying(lists, plan, r.success() ? null : r.error(), r.note()));
             } else {
                 nextList(lists, plan);
             }
@@ -379,13 +379,16 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         private final Plan plan;
         /** Why the upload failed, when it did: the download may still find the whole list on the vehicle. */
         private final String uploadError;
+        /** How the upload went (e.g. item by item after FTP failed), for the verified line. */
+        private final String uploadNote;
         private final CompletableFuture<TransferResult> pending;
 
-        Verifying(Deque<Map.Entry<MissionType, List<MissionItem>>> lists, Plan plan, String uploadError) {
+        Verifying(Deque<Map.Entry<MissionType, List<MissionItem>>> lists, Plan plan, String uploadError, String uploadNote) {
             super(FlightState.VERIFY, config.upload());
             this.lists = lists;
             this.plan = plan;
             this.uploadError = uploadError;
+            this.uploadNote = uploadNote;
             pending = watch(vehicle.download(lists.peek().getKey()));
         }
 
@@ -405,7 +408,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                         : "the vehicle holds another " + type.label() + " than the one uploaded: " + difference.get());
             }
             String what = type == MissionType.MISSION ? "upload" : type.label();
-            progress(uploadError == null ? what + " verified" : what + " verified by download (" + uploadError + ")");
+            progress(uploadError != null ? what + " verified by download (" + uploadError + ")"
+                    : what + " verified" + (uploadNote.isEmpty() ? "" : " (" + uploadNote + ")"));
             nextList(lists, plan);
             return CompletionState.IN_PROGRESS;
         }

@@ -30,7 +30,8 @@ import java.util.function.Supplier;
  * MAVLink FTP ({@link FtpMissionUpload}, {@link FtpMissionDownload}), failing when the vehicle has
  * no FTP; AUTO FTP when the vehicle's AUTOPILOT_VERSION offers it, else items, and items again for
  * that transfer when FTP fails. A vehicle that never answered FTP is remembered: its later AUTO
- * transfers go item by item at once.
+ * transfers go item by item at once, until an FTP transfer (forced with the FTP path) succeeds. A
+ * transfer that fell back to items says so first in its result's note.
  */
 public final class MissionTransfers {
 
@@ -157,11 +158,13 @@ public final class MissionTransfers {
                 : new FtpMissionDownload(vehicle, timers, items.config, items.progress, items.type, ftp);
         f.result.thenAccept(r -> {
             if (r.success()) {
+                ftpUnanswered = false;
                 items.result.complete(q.upload() != null ? TransferResult.verified(r.items(), r.resends(), 0, "over FTP")
                         : new TransferResult(true, null, r.items(), r.resends(), 0, false, "over FTP"));
             } else if (items.config.path() == TransferPath.AUTO) {
                 // item by item, right after: its errors name the item the vehicle refuses
                 ftpUnanswered |= f.unanswered();
+                items.fallingBackFrom("item by item, as FTP failed (" + f.reason().replaceFirst("^over FTP: ", "") + ")");
                 waiting.addFirst(new Queued(items, null, true));
             } else {
                 items.result.complete(r);

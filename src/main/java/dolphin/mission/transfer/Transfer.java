@@ -38,6 +38,7 @@ abstract class Transfer {
     private int backoffs;           // timeouts in a row without progress
     private long progressAt;        // clock time of the last progress
     private String reason = "";
+    private String fallback = "";
     private Runnable onDone = () -> { };
 
     Transfer(VehicleChannel vehicle, ProtocolTimers timers, MissionTransferConfig config, TransferProgress progress,
@@ -138,6 +139,11 @@ abstract class Transfer {
                 resends, ignoredAcks));
     }
 
+    /** This transfer stands in for one that failed on another path: its result says so first. */
+    final void fallingBackFrom(String why) {
+        fallback = why;
+    }
+
     /** Why the transfer failed, as passed to {@link #fail} (empty unless it failed). */
     final String reason() {
         return reason;
@@ -148,7 +154,7 @@ abstract class Transfer {
             return;
         }
         timerGeneration++;
-        result.complete(r);
+        result.complete(fallback.isEmpty() ? r : r.notedFirst(fallback));
         onDone.run();
     }
 

@@ -41,6 +41,12 @@ public record TransferResult(boolean success, String error, List<MissionItem> it
         return new TransferResult(false, error, List.of(), resends, ignoredAcks);
     }
 
+    /** The same result with {@code first} before its note. */
+    TransferResult notedFirst(String first) {
+        return new TransferResult(success, error, items, resends, ignoredAcks, verified,
+                note.isEmpty() ? first : first + "; " + note);
+    }
+
     /** The items, or an EnvironmentException with the error. */
     public List<MissionItem> orThrow() {
         if (!success) {

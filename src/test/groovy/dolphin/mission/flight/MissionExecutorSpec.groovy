@@ -306,6 +306,30 @@ class MissionExecutorSpec extends MissionFlights {
         messages == said(['uploading 4 items', 'uploading: 2 of 4 items, 1 resent', 'upload verified (over FTP)'])
     }
 
+    def "an upload that went item by item after FTP failed: its download verifies it and the line says how it went"() {
+        given:
+        vehicle.ready()
+        def task = MissionDsl.mission {
+            name 'hop'
+            takeOff Position.fromDegrees(40.444233, -7.375234, 840)
+            landingPoint 40.444233, -7.375234, 820
+        }
+
+        when:
+        launch(task)
+        step()
+        def t = vehicle.pendingTransfer()
+        vehicle.stored[MissionType.MISSION] = t.items
+        t.result.complete(new TransferResult(true, null, t.items, 0, 0, false, 'item by item, as FTP failed (no answer)'))
+        step()
+        vehicle.completeDownload()
+        step()
+
+        then:
+        vehicle.transfers*.toString() == ['0.0 upload mission: 3 items', '0.0 download mission']
+        messages == said(['uploading 3 items', 'upload verified (item by item, as FTP failed (no answer))'])
+    }
+
     def "a mission naming its home: DO_SET_HOME with it before the upload, sent again every 2 s while the vehicle answers FAILED, said once"() {
         given: 'a vehicle with a position but not yet a home it accepts to move'
         vehicle.ready()

@@ -126,6 +126,8 @@ class FtpMissionTransferSpec extends Specification {
         then:
         r.success()
         !r.verified()
+        r.note() == "item by item, as FTP failed (the vehicle refused $MISSION when closing it: FailErrno, errno 22 (EINVAL):" +
+                ' ArduPilot could not read a complete list from it)'
         vehicle.stored == intended()
         statuses*.path().unique() == [TransferPath.FTP, TransferPath.ITEMS]
     }
@@ -194,6 +196,24 @@ class FtpMissionTransferSpec extends Specification {
         asked > 0
         ftpMessages() == asked
         vehicle.stored == intended()
+    }
+
+    def "a vehicle remembered as without FTP: a forced FTP upload that succeeds lets AUTO use FTP again"() {
+        given:
+        server.silent = true
+        settle(upload(TransferPath.AUTO))
+
+        when:
+        server.silent = false
+        TransferResult forced = settle(upload(TransferPath.FTP))
+        int asked = ftpMessages()
+        TransferResult auto = settle(upload(TransferPath.AUTO))
+
+        then:
+        forced.verified()
+        auto.verified()
+        auto.note() == 'over FTP'
+        ftpMessages() > asked
     }
 
     def "FTP that answered and then fell silent (the read-back lost): AUTO falls back, but the next upload tries FTP again"() {
