@@ -187,6 +187,8 @@ class Run:
         self.samples = []
         self.procs = []
         self.started = time.time()
+        self.merged = None
+        self.round_seconds = []
 
     def start(self):
         a = self.a
@@ -254,7 +256,7 @@ class Run:
         self.relay_cmd("loss 0")
         self.relay_cmd("mark round %d loss %.2f tool %s: verifying" % (rnd, loss, tool))
         why = self.referee.verify(self.items)
-        sample.update({"round": rnd, "loss": loss, "tool": tool, "seed": seed, "wall_s": round(wall, 3),
+        sample.update({"round": rnd, "loss": loss, "tool": tool, "tag": self.a.tag, "seed": seed, "wall_s": round(wall, 3),
                        "verified": why is None, "difference": why,
                        "datagrams_up": int(stats[2]), "dropped_up": int(stats[3]),
                        "datagrams_down": int(stats[5]), "dropped_down": int(stats[6]), "at": time.strftime("%H:%M:%S"),
@@ -329,18 +331,23 @@ class Run:
                  "ArduPilot %s (ArduCopter SITL, %s), --speedup %s, home %.6f,%.6f,%.0f; a 100-item mission (home + 99 "
                  "NAV_WAYPOINTs); each datagram dropped with probability p both ways (harness/lossy_relay.py, seeded); "
                  "every upload checked by a download on a second, lossless SITL port; deadline %d s; %d round(s) so far, "
-                 "tools interleaved within each round; started %s UTC, %.0f min so far." % (
+                 "tools interleaved within each round; %s." % (
                      a.commit, os.path.basename(a.defaults), a.speedup, HOME[0], HOME[1], HOME[2], a.deadline, rounds,
-                     time.strftime("%Y-%m-%d %H:%M", time.gmtime(self.started)), (time.time() - self.started) / 60),
+                     ("started %s UTC, %.0f min so far" % (time.strftime("%Y-%m-%d %H:%M", time.gmtime(self.started)),
+                                                            (time.time() - self.started) / 60)) if self.merged is None
+                     else "merged from the runs in " + ", ".join(self.merged)),
                  "", "Cells: reported done / verified on the vehicle / uploads, median time of the reported ones "
                  "(MAVProxy: the time it prints; ours: from the call to the result).", ""]
-        tools = [t for t in TOOLS if t in a.tools]
-        lines.append("| loss | " + " | ".join(LABELS[t] for t in tools) + " |")
-        lines.append("|---|" + "---|" * len(tools))
+        if self.round_seconds:
+            lines[2] += " Rounds took " + ", ".join("%.0f" % r for r in self.round_seconds) + " s."
+        columns = sorted({(s["tool"], s.get("tag", "")) for s in self.samples if s["tool"] in a.tools},
+                         key=lambda c: (TOOLS.index(c[0]), c[1]))
+        lines.append("| loss | " + " | ".join(LABELS[t] + (" (%s)" % tag if tag else "") for t, tag in columns) + " |")
+        lines.append("|---|" + "---|" * len(columns))
         for loss in a.losses:
             cells = []
-            for t in tools:
-                ss = [s for s in self.samples if s["tool"] == t and s["loss"] == loss]
+            for t, tag in columns:
+                ss = [s for s in self.samples if s["tool"] == t and s.get("tag", "") == tag and s["loss"] == loss]
                 if not ss:
                     cells.append("-")
                     continue
@@ -352,8 +359,8 @@ class Run:
         lines += ["", "Not done or not verified:", ""]
         for s in self.samples:
             if not s["done"] or not s["verified"]:
-                lines.append("- round %d, %d %%, %s: done=%s verified=%s; %s%s" % (
-                    s["round"], round(s["loss"] * 100), s["tool"], s["done"], s["verified"], s.get("error") or "",
+                lines.append("- round %d, %d %%, %s%s: done=%s verified=%s; %s%s" % (
+                    s["round"], round(s["loss"] * 100), s["tool"], (" (%s)" % s["tag"]) if s.get("tag") else "", s["done"], s["verified"], s.get("error") or "",
                     ("; vehicle: " + s["difference"]) if s.get("difference") else ""))
         with open(os.path.join(self.out, "table.md"), "w") as f:
             f.write("\n".join(lines) + "\n")
@@ -371,7 +378,9 @@ class Run:
                         print("stopping: --stop-at reached", flush=True)
                         return
                     self.upload(rnd, loss, tool)
-            print("round %d took %.0f s" % (rnd, time.time() - t0), flush=True)
+            self.round_seconds.append(time.time() - t0)
+            print("round %d took %.0f s" % (rnd, self.round_seconds[-1]), flush=True)
+            self.table()
 
     def close(self):
         if self.ours is not None and self.ours.poll() is None:
@@ -412,6 +421,9 @@ def main():
     ap.add_argument("--deadline", type=int, default=120)
     ap.add_argument("--speedup", default="1")
     ap.add_argument("--stop-at", type=float, default=0, help="start no upload after this Unix time")
+    ap.add_argument("--tag", default="", help="a word for this run's columns (e.g. the code's commit)")
+    ap.add_argument("--merge", nargs="+", metavar="DIR",
+                    help="run nothing: write --results/table.md from these results directories' samples")
     a = ap.parse_args()
     a.tools = [t for t in a.tools.split(",") if t]
     for t in a.tools:
@@ -419,6 +431,18 @@ def main():
             ap.error("unknown tool " + t)
     a.losses = [float(x) for x in a.losses.split(",")]
     r = Run(a)
+    if a.merge:
+        for arg in a.merge:
+            d, _, tag = arg.partition("=")
+            with open(os.path.join(d, "samples.jsonl")) as f:
+                for line in filter(str.strip, f):
+                    sample = json.loads(line)
+                    sample["tag"] = tag or sample.get("tag", "")
+                    r.samples.append(sample)
+        r.merged = [arg.partition("=")[0] for arg in a.merge]
+        r.table()
+        print("table in " + os.path.join(a.results, "table.md"), flush=True)
+        return
     try:
         r.run()
     finally:
