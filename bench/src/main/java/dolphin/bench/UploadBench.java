@@ -6,11 +6,13 @@ import dolphin.core.Position;
 import dolphin.core.SystemClock;
 import dolphin.mavlink.CommandResult;
 import dolphin.mavlink.MAVLinkCommunications;
+import dolphin.mavlink.LinkTimeouts;
 import dolphin.mavlink.MAVLinkConfig;
 import dolphin.mavlink.MAVLinkNode;
 import dolphin.mission.flight.MissionService;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.transfer.MissionTransferConfig;
+import dolphin.mission.transfer.TransferPath;
 import dolphin.mission.transfer.MissionVerification;
 import dolphin.mission.transfer.TransferProgress;
 import dolphin.mission.transfer.TransferResult;
@@ -194,13 +196,11 @@ public final class UploadBench {
                 // ---- (4) lossy: 25 uploads at 10% (one vehicle) and 25 at 30% (three vehicles, 9 + 8 + 8), in parallel.
                 // Each vehicle has its own fleet, seeded fault model (both ways) and thread; the uploads
                 // wait on timeouts, not on the CPU, so running them side by side changes no time.
-                // Timeout 250 ms. Tries: "sends of one message without progress" must outlast the vehicle's
-                // re-request period (1 s, as ArduPilot): when a MISSION_REQUEST is lost, resending the item
-                // before it only draws INVALID_SEQUENCE, and only the vehicle's next re-request gets through.
-                // 24 tries (6 s, 5 re-requests) at 10%; 32 (8 s, the vehicle's own upload timeout) at 30%.
+                // The default timeouts (following the measured round trip, 50 ms to 1.5 s, giving up after 10 s
+                // without progress) over the item protocol, as every lossy upload is measured.
                 int lossyEach = quick ? 4 : LOSSY_UPLOADS_EACH;
-                MissionTransferConfig c10 = new MissionTransferConfig(Duration.ofMillis(250), 24);
-                MissionTransferConfig c30 = new MissionTransferConfig(Duration.ofMillis(250), 32);
+                MissionTransferConfig c10 = new MissionTransferConfig(LinkTimeouts.DEFAULT, TransferPath.ITEMS);
+                MissionTransferConfig c30 = c10;
                 List<Lossy> lossy = new ArrayList<>();
                 // {loss, items, sysid, seed, config, uploads}; besides the 50 uploads of 10 items, 3 of 100 items at 10%
                 Object[][] plan = {{"10%", 10, 2, 0.10, 10L, c10, lossyEach},
@@ -254,9 +254,10 @@ public final class UploadBench {
                     failures += failed;
                     lossyFailed += failed;
                     lossyTotal += rounds;
-                    line("%s loss, %d items: %d/%d uploads complete and verify (%d of them ACK-lost, then verified by download;"
-                            + " %d failed); %d vehicle(s); timeout %d ms x %d tries", name, size, verified, rounds, ackLost, failed, ls.size(),
-                            c.timeout().toMillis(), c.tries());
+                    line("%s loss, %d items: %d/%d uploads complete and verify (%d of them ACK-lost, read back by the upload;"
+                            + " %d failed); %d vehicle(s); timeout %d to %d ms, giving up after %d s without progress", name, size,
+                            verified, rounds, ackLost, failed, ls.size(), c.timeouts().min().toMillis(), c.timeouts().max().toMillis(),
+                            c.timeouts().giveUp().toSeconds());
                     line("   upload median %.0f / p90 %.0f / max %.0f ms = %.0f x the lossless %d-item median (%.2f ms); resends median %.0f",
                             median(times), p90(times), max(times), median(times) / base, size, base, median(resends));
                     json.put("lossy_" + name + "_" + size, Map.of("upload_ms", list(times), "resends", list(resends), "ack_lost", ackLost,
@@ -383,23 +384,19 @@ public final class UploadBench {
 
     /**
      * Uploads and then downloads to verify; returns {upload ms, download ms}, or null if it failed
-     * or did not verify. An upload that fails only because the final MISSION_ACK was lost (the
-     * vehicle holds the mission but our uploader cannot know) counts as complete when the download
-     * verifies; its time is that until the failure was reported; counts[1] = 1 then.
+     * or did not verify. An upload whose final MISSION_ACK was lost reads the list back itself and
+     * succeeds, verified ({@link TransferResult#verified()}); counts[1] = 1 then.
      */
     double[] uploadMs(MAVLinkNode node, List<MissionItem> items, MissionTransferConfig config, SimFleet fleet, int sysid,
                       int[] counts) throws Exception {
         long t0 = System.nanoTime();
         TransferResult up = MissionService.of(node.communications()).vehicle(node).transfers().upload().upload(items, config, TransferProgress.NONE).get(120, TimeUnit.SECONDS);
         long t1 = System.nanoTime();
-        boolean ackLost = false;
         if (!up.success()) {
-            if (counts == null || !up.error().contains("its ACK was lost")) {
-                lastError = up.error();
-                return null;
-            }
-            ackLost = true;
+            lastError = up.error();
+            return null;
         }
+        boolean ackLost = up.verified();
         if (counts != null) {
             counts[0] = up.resends();
             counts[1] = ackLost ? 1 : 0;
