@@ -6,19 +6,22 @@
 #
 #   harness/sitl-lossy-uploads.sh [RESULTS_DIR] [options of harness/sitl_lossy_uploads.py]
 #
+# RESULTS_DIR defaults to target/sitl-lossy/DATE-TIME.
+#
 # Environment: ARDUPILOT (the source tree, with build/sitl/bin/arducopter; default
 # /root/ardupilot-sitl/ardupilot), MAVPROXY (mavproxy.py of a venv with MAVProxy 1.8.71, default
-# /tmp/mpvenv/bin/mavproxy.py), PYTHON (with pymavlink; default the project's .venv). Our rows need
+# the one on PATH), PYTHON (with pymavlink; default the project's .venv). Our rows need
 # bench/build.sh first (bench/target/classes and the main jar); without them pass
 # --tools mavproxy-wp,mavproxy-ftp.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 ardupilot="${ARDUPILOT:-/root/ardupilot-sitl/ardupilot}"
-mavproxy="${MAVPROXY:-/tmp/mpvenv/bin/mavproxy.py}"
+mavproxy="${MAVPROXY:-mavproxy.py}"
 python="${PYTHON:-$root/.venv/bin/python}"
-results="${1:-/tmp/sitl-lossy/$(date -u +%Y%m%d-%H%M%S)}"
+results="${1:-$root/target/sitl-lossy/$(date -u +%Y%m%d-%H%M%S)}"
 shift || true
 mkdir -p "$results"
+results="$(cd "$results" && pwd)"
 commit="$(git -C "$ardupilot" rev-parse --short=7 HEAD 2>/dev/null || echo unknown)"
 cp="$root/bench/target/classes:$root/target/dolphin.jar:$root/target/lib/*"
 ours="java -cp $cp dolphin.bench.SitlUploads"

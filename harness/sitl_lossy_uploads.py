@@ -324,6 +324,12 @@ class Run:
                 "resends": r.get("resends"), "note": r.get("note"), "self_verified": r.get("verified"),
                 "attempt_s": r["time_s"]}
 
+    @staticmethod
+    def median(samples):
+        """The median time of the verified uploads among samples, None without any."""
+        times = [s["time_s"] for s in samples if s["verified"] and s["time_s"] is not None]
+        return statistics.median(times) if times else None
+
     def table(self):
         a = self.a
         rounds = max(s["round"] for s in self.samples)
@@ -336,7 +342,7 @@ class Run:
                      ("started %s UTC, %.0f min so far" % (time.strftime("%Y-%m-%d %H:%M", time.gmtime(self.started)),
                                                             (time.time() - self.started) / 60)) if self.merged is None
                      else "merged from the runs in " + ", ".join(self.merged)),
-                 "", "Cells: reported done / verified on the vehicle / uploads, median time of the reported ones "
+                 "", "Cells: verified on the vehicle / reported done / uploads, median time of the verified ones "
                  "(MAVProxy: the time it prints; ours: from the call to the result).", ""]
         if self.round_seconds:
             lines[2] += " Rounds took " + ", ".join("%.0f" % r for r in self.round_seconds) + " s."
@@ -351,11 +357,23 @@ class Run:
                 if not ss:
                     cells.append("-")
                     continue
-                done = [s["time_s"] for s in ss if s["done"]]
-                ver = sum(1 for s in ss if s["verified"])
-                med = "%.2f s" % statistics.median(done) if done else "-"
-                cells.append("%d/%d/%d, %s" % (len(done), ver, len(ss), med))
+                med = self.median(ss)
+                cells.append("%d/%d/%d, %s" % (sum(1 for s in ss if s["verified"]), sum(1 for s in ss if s["done"]), len(ss),
+                                               "%.2f s" % med if med else "-"))
             lines.append("| %d %% | " % round(loss * 100) + " | ".join(cells) + " |")
+        theirs = {loss: self.median([s for s in self.samples if s["tool"] == "mavproxy-wp" and s["loss"] == loss])
+                  for loss in a.losses}
+        ratios = []
+        for t, tag in [c for c in columns if c[0].startswith("ours")]:
+            cells = []
+            for loss in a.losses:
+                ours = self.median([s for s in self.samples if s["tool"] == t and s.get("tag", "") == tag and s["loss"] == loss])
+                cells.append("x%.3f" % (ours / theirs[loss]) if ours and theirs[loss] else "-")
+            ratios.append("| %s%s | " % (LABELS[t], (" (%s)" % tag) if tag else "") + " | ".join(cells) + " |")
+        if ratios:
+            lines += ["", "| median time of the verified uploads / MAVProxy `wp load`'s | "
+                      + " | ".join("%d %%" % round(loss * 100) for loss in a.losses) + " |",
+                      "|---|" + "---|" * len(a.losses)] + ratios
         lines += ["", "Not done or not verified:", ""]
         for s in self.samples:
             if not s["done"] or not s["verified"]:

@@ -17,7 +17,6 @@ import java.io.BufferedReader;
 import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
-import java.time.Duration;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.TimeUnit;
@@ -72,8 +71,7 @@ public final class SitlUploads {
 
     /** The transfer settings of each path: the defaults, the path forced. */
     static MissionTransferConfig config(TransferPath path) {
-        return new MissionTransferConfig(Duration.ofMillis(MissionTransferConfig.DEFAULT_TIMEOUT_MILLIS), MissionTransferConfig.DEFAULT_TRIES,
-                LinkTimeouts.DEFAULT, path);
+        return new MissionTransferConfig(LinkTimeouts.DEFAULT, path);
     }
 
     static String upload(MAVLinkCommunications comms, List<MissionItem> items, TransferPath path, int deadlineSeconds) throws Exception {
