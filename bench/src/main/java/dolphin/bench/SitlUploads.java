@@ -1,0 +1,114 @@
+package dolphin.bench;
+
+import dolphin.core.SystemClock;
+import dolphin.mavlink.LinkTimeouts;
+import dolphin.mavlink.MAVLinkCommunications;
+import dolphin.mavlink.MAVLinkConfig;
+import dolphin.mavlink.MAVLinkNode;
+import dolphin.mission.file.WaypointsFile;
+import dolphin.mission.flight.MissionService;
+import dolphin.mission.model.MissionItem;
+import dolphin.mission.model.MissionType;
+import dolphin.mission.transfer.MissionTransferConfig;
+import dolphin.mission.transfer.TransferPath;
+import dolphin.mission.transfer.TransferResult;
+import dolphin.mission.transfer.TransferStatus;
+import java.io.BufferedReader;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicReference;
+
+/**
+ * Our side of harness/sitl_lossy_uploads.py: one ground station (MAVLinkCommunications on a link,
+ * real time, as `dolphin run` has it) that uploads a .waypoints file to ArduCopter SITL, system id 1,
+ * when told to on stdin, and answers with one JSON line on stdout. The driver checks the vehicle's
+ * mission itself, by a download on a lossless port.
+ *
+ * <pre>SitlUploads LINK WAYPOINTS_FILE</pre>
+ *
+ * Prints "ready" once the vehicle is heard, then reads lines "upload ITEMS|FTP|AUTO DEADLINE_S"
+ * ("quit" to stop) and answers each with
+ * {@code result {"path", "done", "time_s", "error", "resends", "ignored_acks", "verified", "note", "progress"}}:
+ * done is what the transfer reported, time_s from the call to that report. Before each upload it
+ * waits for a heartbeat newer than the command (the driver points the relay at another ground
+ * station between uploads), not counted in the time.
+ */
+public final class SitlUploads {
+
+    private SitlUploads() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        if (args.length != 2) {
+            System.err.println("usage: SitlUploads LINK WAYPOINTS_FILE");
+            System.exit(2);
+        }
+        List<MissionItem> items = WaypointsFile.read(Path.of(args[1]));
+        try (MAVLinkCommunications comms = new MAVLinkCommunications(MAVLinkConfig.of(args[0]), SystemClock.REAL)) {
+            comms.start();
+            UploadBench.waitFor(() -> comms.node("1") != null, 60, "vehicle 1");
+            System.out.println("ready " + items.size() + " items");
+            System.out.flush();
+            BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
+            for (String line = in.readLine(); line != null && !line.trim().equals("quit"); line = in.readLine()) {
+                String[] words = line.trim().split("\\s+");
+                if (words.length != 3 || !words[0].equals("upload")) {
+                    System.out.println("error: " + line);
+                    System.out.flush();
+                    continue;
+                }
+                System.out.println("result " + upload(comms, items, TransferPath.valueOf(words[1]), Integer.parseInt(words[2])));
+                System.out.flush();
+            }
+        }
+        System.exit(0);
+    }
+
+    /** The transfer settings of each path: the defaults, the path forced. */
+    static MissionTransferConfig config(TransferPath path) {
+        return new MissionTransferConfig(LinkTimeouts.DEFAULT, path);
+    }
+
+    static String upload(MAVLinkCommunications comms, List<MissionItem> items, TransferPath path, int deadlineSeconds) throws Exception {
+        MAVLinkNode node = comms.node("1");
+        long asked = comms.clock().nanoTime();
+        UploadBench.waitFor(() -> node.state().heartbeatNanos() > asked, 30, "a heartbeat of vehicle 1");
+        AtomicReference<TransferStatus> last = new AtomicReference<>();
+        long t0 = System.nanoTime();
+        TransferResult r;
+        try {
+            r = MissionService.of(comms).vehicle(node).transfers().upload()
+                    .upload(MissionType.MISSION, items, config(path), last::set).get(deadlineSeconds, TimeUnit.SECONDS);
+        } catch (TimeoutException e) {
+            r = new TransferResult(false, "not done in " + deadlineSeconds + " s", List.of(), -1, -1);
+        }
+        double seconds = (System.nanoTime() - t0) / 1e9;
+        TransferStatus status = last.get();
+        return String.format(Locale.ROOT, "{\"path\": \"%s\", \"done\": %s, \"time_s\": %.3f, \"error\": %s, \"resends\": %d, "
+                        + "\"ignored_acks\": %d, \"verified\": %s, \"note\": %s, \"progress\": %s}",
+                path, r.success(), seconds, quote(r.error()), r.resends(), r.ignoredAcks(), r.verified(), quote(r.note()),
+                quote(status == null ? null : status.text()));
+    }
+
+    static String quote(String s) {
+        if (s == null) {
+            return "null";
+        }
+        StringBuilder b = new StringBuilder("\"");
+        for (char c : s.toCharArray()) {
+            if (c == '"' || c == '\\') {
+                b.append('\\').append(c);
+            } else if (c < 0x20) {
+                b.append(String.format(Locale.ROOT, "\\u%04x", (int) c));
+            } else {
+                b.append(c);
+            }
+        }
+        return b.append('"').toString();
+    }
+}
