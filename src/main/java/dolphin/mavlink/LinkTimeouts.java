@@ -14,6 +14,15 @@ public record LinkTimeouts(Duration min, Duration max, Duration giveUp) {
     public static final LinkTimeouts DEFAULT = new LinkTimeouts(Duration.ofMillis(50), Duration.ofMillis(1500),
             Duration.ofSeconds(10));
 
+    /**
+     * The back-off stops at four times the link's timeout: a few messages in flight (two in an
+     * upload, four in a download or an FTP session) cannot congest a radio, whose losses are noise,
+     * and each doubling beyond would cost a transfer chances to get through before it gives up (at
+     * 30 % loss both ways, ten sends in 10 s leave one exchange in a thousand unanswered, twenty one
+     * in a million).
+     */
+    public static final int MOST_BACKOFFS = 2;
+
     public LinkTimeouts {
         if (min == null || min.isNegative() || min.isZero()) {
             throw new IllegalArgumentException("the shortest retransmission timeout must be positive, got " + min);
@@ -30,12 +39,12 @@ public record LinkTimeouts(Duration min, Duration max, Duration giveUp) {
 
     /**
      * The timeout to wait after a send, given the link's round trip and the sends lost in a row: the
-     * link's, at least {@code min}, doubled per back-off (so a fast link's backs off from {@code min},
-     * as TCP's from its floor), at most {@code max}.
+     * link's, at least {@code min}, doubled per back-off up to {@link #MOST_BACKOFFS} (so a fast
+     * link's backs off from {@code min}, as TCP's from its floor), at most {@code max}.
      */
     public Duration timeout(RoundTrip link, int backoffs) {
         long nanos = Math.max(min.toNanos(), link.timeoutNanos(max.toNanos()));
-        for (int i = 0; i < backoffs && nanos < max.toNanos(); i++) {
+        for (int i = 0; i < Math.min(backoffs, MOST_BACKOFFS) && nanos < max.toNanos(); i++) {
             nanos *= 2;
         }
         return Duration.ofNanos(Math.min(max.toNanos(), nanos));

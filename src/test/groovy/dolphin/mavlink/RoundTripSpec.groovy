@@ -77,13 +77,13 @@ class RoundTripSpec extends Specification {
         [100]        | 0        || 300       // 100 + 4 x 50
         [100]        | 1        || 600       // doubled per timeout in a row
         [100]        | 2        || 1200
-        [100]        | 3        || 1500      // clamped to the longest
+        [100]        | 3        || 1200      // twice at most
+        [500]        | 2        || 1500      // clamped to the longest
         [100] * 60   | 0        || 101       // a steady link: the round trip and 1 ms
-        [100] * 60   | 4        || 1500
+        [100] * 60   | 4        || 404
         [5] * 60     | 0        || 50        // never shorter than the shortest
         [5] * 60     | 1        || 100       // backing off from the shortest, not from 6 ms
-        [5] * 60     | 4        || 800
-        [5] * 60     | 5        || 1500
+        [5] * 60     | 5        || 200
         rounds = samples ? "${samples.size()} samples of ${samples[0]} ms" : 'no sample'
     }
 

@@ -11,7 +11,7 @@ import java.util.function.BooleanSupplier;
 /**
  * One session with the vehicle's FTP server, on the protocol's thread: its requests numbered,
  * at most {@link #WINDOW} outstanding, each sent again on its own timeout (the link's RTO, backed
- * off per timeout in a row), and matched with their replies by session, req_opcode and seq (a
+ * off per timeout in a row, twice at most), and matched with their replies by session, req_opcode and seq (a
  * reply's seq is its request's plus one); a session that makes no progress for the give-up time
  * fails. A request sent again keeps its seq, so ArduPilot repeats its remembered reply instead of
  * doing it twice. Clean round trips (a reply to a request sent once) feed the link's

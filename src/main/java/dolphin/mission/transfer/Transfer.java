@@ -12,19 +12,11 @@ import java.util.concurrent.CompletableFuture;
  * One upload or download to one vehicle: a state machine that lives on the communications thread
  * (started, fed messages and timed out there only), with one clock-time timer at a time. Its
  * timeouts follow the link's measured round trip, doubled per timeout in a row without progress
- * (twice at most);
+ * (twice at most, {@link dolphin.mavlink.LinkTimeouts#MOST_BACKOFFS});
  * it gives up after {@code config.timeouts().giveUp()} of clock time without progress
  * (docs/decisions.md, "Transfers on lossy links").
  */
 abstract class Transfer {
-
-    /**
-     * The back-off stops at four times the link's timeout: two messages in flight (four in a
-     * download) cannot congest a radio, whose losses are noise, and each doubling beyond would cost the
-     * transfer chances to get through before it gives up (at 30 % loss both ways, ten sends in 10 s
-     * leave one exchange in a thousand unanswered, twenty one in a million).
-     */
-    static final int MOST_BACKOFFS = 2;
 
     final VehicleChannel vehicle;
     final ProtocolTimers timers;
@@ -86,7 +78,7 @@ abstract class Transfer {
 
     /** The retransmission timeout now: the link's, backed off by the timeouts in a row. */
     final Duration timeout() {
-        return config.timeouts().timeout(vehicle.roundTrip(), Math.min(backoffs, MOST_BACKOFFS));
+        return config.timeouts().timeout(vehicle.roundTrip(), backoffs);
     }
 
     /** Whether the transfer may still wait: less than the give-up time passed since the last progress. */
