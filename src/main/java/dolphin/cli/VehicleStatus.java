@@ -2,6 +2,8 @@ package dolphin.cli;
 
 import dolphin.mavlink.MAVLinkNode;
 import dolphin.mavlink.VehicleState;
+import dolphin.mission.flight.MissionService;
+import dolphin.mission.transfer.TransferStatus;
 import java.util.Locale;
 
 /**
@@ -11,17 +13,19 @@ import java.util.Locale;
  * @param battery percent, -1 when unknown
  * @param item the current mission item, 0 or less when none
  * @param task the last platform task on the vehicle and its state, or "" before the first
+ * @param transfer where a mission transfer in progress stands ("uploading: 45 of 100 items, 3 resent"), or ""
  */
 record VehicleStatus(String id, boolean connected, String mode, boolean armed, int battery, double altitude,
-                     int item, int total, String task) {
+                     int item, int total, String task, String transfer) {
 
     static VehicleStatus of(MAVLinkNode node, String task) {
         VehicleState s = node.state();
+        String transfer = MissionService.of(node.communications()).transferOn(node).map(TransferStatus::text).orElse("");
         return new VehicleStatus(node.getId(), node.isConnected(), s.modeName(), s.armed(), s.batteryPercent(),
-                s.relativeAlt(), s.flyingMission() ? s.missionSeq() : 0, s.missionTotal(), task);
+                s.relativeAlt(), s.flyingMission() ? s.missionSeq() : 0, s.missionTotal(), task, transfer);
     }
 
-    /** The changes worth a line of their own in a log: everything but the battery, height and item. */
+    /** The changes worth a line of their own in a log: everything but the battery, height, item and transfer. */
     boolean sameEvent(VehicleStatus o) {
         return o != null && connected == o.connected && mode.equals(o.mode) && armed == o.armed && task.equals(o.task);
     }
@@ -30,7 +34,8 @@ record VehicleStatus(String id, boolean connected, String mode, boolean armed, i
     String sentence() {
         return String.format(Locale.ROOT, "vehicle %s: %s%s, %s, battery %s, altitude %.1f m%s%s", id,
                 connected ? "" : "LOST, last seen ", mode, armed ? "armed" : "disarmed", batteryText(), altitude,
-                item > 0 && total > 0 ? ", item " + item + " of " + total : "", task.isEmpty() ? "" : ", task " + task);
+                item > 0 && total > 0 ? ", item " + item + " of " + total : "", task.isEmpty() ? "" : ", task " + task)
+                + (transfer.isEmpty() ? "" : ", " + transfer);
     }
 
     static final String HEADER = String.format(Locale.ROOT, "%-8s %-10s %-8s %7s %9s %-9s %s",
@@ -39,7 +44,8 @@ record VehicleStatus(String id, boolean connected, String mode, boolean armed, i
     /** One row of the live table, under {@link #HEADER}. */
     String row() {
         return String.format(Locale.ROOT, "%-8s %-10s %-8s %7s %7.1f m %-9s %s", id, connected ? mode : "LOST",
-                armed ? "armed" : "disarmed", batteryText(), altitude, item > 0 && total > 0 ? item + "/" + total : "-", task);
+                armed ? "armed" : "disarmed", batteryText(), altitude, item > 0 && total > 0 ? item + "/" + total : "-", task)
+                + (transfer.isEmpty() ? "" : (task.isEmpty() ? "" : ", ") + transfer);
     }
 
     private String batteryText() {

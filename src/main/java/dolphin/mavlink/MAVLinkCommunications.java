@@ -7,6 +7,7 @@ import com.MAVLink.common.msg_fence_status;
 import com.MAVLink.common.msg_command_ack;
 import com.MAVLink.common.msg_command_long;
 import com.MAVLink.common.msg_extended_sys_state;
+import com.MAVLink.standard.msg_autopilot_version;
 import com.MAVLink.common.msg_home_position;
 import com.MAVLink.common.msg_mission_current;
 import com.MAVLink.common.msg_statustext;
@@ -416,6 +417,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
         handler.on(msg_mission_current.class, (n, m) -> changed(n, s -> s.withMissionCurrent(m.seq, m.total, m.mission_state)));
         handler.on(msg_ekf_status_report.class, (n, m) -> changed(n, s -> s.withEkfFlags(m.flags)));
         handler.on(msg_fence_status.class, (n, m) -> changed(n, s -> s.withFenceBreached(m.breach_status != 0)));
+        handler.on(msg_autopilot_version.class, (n, m) -> n.capabilities(m.capabilities));
         handler.on(msg_statustext.class, (n, m) -> {
             String text = m.getText();
             LOG.info("vehicle {}: {}", n.getId(), text);

@@ -33,6 +33,8 @@ public final class MAVLinkNode extends AbstractNode {
     private final Clock clock;
     private final AtomicReference<VehicleState> state;
     private final RoundTrip roundTrip = new RoundTrip();
+    /** AUTOPILOT_VERSION.capabilities (MAV_PROTOCOL_CAPABILITY bits), -1 until the vehicle sent it. */
+    private volatile long capabilities = -1;
     private volatile SocketAddress address;
     /** What a fleet file says of the vehicle, when it says it (docs/sensors.md, "Fleet files"). */
     private volatile String name;
@@ -63,6 +65,16 @@ public final class MAVLinkNode extends AbstractNode {
 
     public int getAutopilotCompid() {
         return autopilotCompid;
+    }
+
+    /** The MAV_PROTOCOL_CAPABILITY bits of the vehicle's AUTOPILOT_VERSION, asked for at discovery; empty until it answers. */
+    public java.util.OptionalLong capabilities() {
+        long c = capabilities;
+        return c < 0 ? java.util.OptionalLong.empty() : java.util.OptionalLong.of(c);
+    }
+
+    void capabilities(long bits) {
+        capabilities = bits;
     }
 
     /** The measured round trip of the vehicle's link (command ACKs, mission transfers, FTP). */

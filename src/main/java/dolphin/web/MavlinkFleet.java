@@ -40,7 +40,8 @@ final class MavlinkFleet implements Supplier<List<VehicleSample>> {
         List<VehicleSample> samples = new ArrayList<>();
         for (MAVLinkNode n : nodes.get()) {
             VehicleView view = VehicleView.of(n.getId(), n.getType(), n.isConnected(), bound.contains(n.getId()), n.state(),
-                    tasks.getOrDefault(n.getId(), ""), n.getPayload().names(), readings(n));
+                    tasks.getOrDefault(n.getId(), ""), n.getPayload().names(), readings(n),
+                    MissionService.of(n.communications()).transferOn(n).orElse(null));
             MissionExecutor executor = MissionService.of(n.communications()).executorOn(n);
             samples.add(new VehicleSample(view, executor, () -> draw(executor.mission(), n)));
         }

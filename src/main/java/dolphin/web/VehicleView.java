@@ -4,16 +4,19 @@ import java.util.List;
 
 import dolphin.core.Position;
 import dolphin.mavlink.VehicleState;
+import dolphin.mission.transfer.TransferStatus;
 import groovy.json.JsonOutput;
 
 /**
  * What the page shows of one vehicle at one sample: where it is (null before its first position),
  * where it points, its Dolphin type, mode, arming, battery, home, the mission item it flies, whether
- * the script picked it, the last platform task on it, its payloads and its latest sensor readings.
+ * the script picked it, the last platform task on it, its payloads, its latest sensor readings and
+ * where a mission transfer to or from it stands.
  */
 record VehicleView(String id, String type, String family, boolean connected, boolean picked, Position position,
                    double relativeAlt, double heading, String mode, boolean armed, int battery, Position home,
-                   int item, int total, boolean fenceBreached, String task, List<String> payloads, List<Shown> readings) {
+                   int item, int total, boolean fenceBreached, String task, List<String> payloads, List<Shown> readings,
+                   TransferStatus transfer) {
 
     /** A sensor reading as shown: stale ones are greyed out, not hidden, so a silent sensor is seen. */
     record Shown(String name, double value, String unit, int component, boolean fresh) {
@@ -25,14 +28,15 @@ record VehicleView(String id, String type, String family, boolean connected, boo
     }
 
     static VehicleView of(String id, String type, boolean connected, boolean picked, VehicleState s, String task) {
-        return of(id, type, connected, picked, s, task, List.of(), List.of());
+        return of(id, type, connected, picked, s, task, List.of(), List.of(), null);
     }
 
+    /** @param transfer where a mission transfer in progress stands, or null */
     static VehicleView of(String id, String type, boolean connected, boolean picked, VehicleState s, String task,
-                          List<String> payloads, List<Shown> readings) {
+                          List<String> payloads, List<Shown> readings, TransferStatus transfer) {
         return new VehicleView(id, type, s.family().label(), connected, picked, s.position(), s.relativeAlt(), s.heading(),
                 s.modeName(), s.armed(), s.batteryPercent(), s.home(), s.flyingMission() ? s.missionSeq() : -1, s.missionTotal(),
-                s.fenceBreached(), task, payloads, readings);
+                s.fenceBreached(), task, payloads, readings, transfer);
     }
 
     /**
@@ -61,7 +65,19 @@ record VehicleView(String id, String type, String family, boolean connected, boo
                 .append(",\"task\":").append(JsonOutput.toJson(task))
                 .append(",\"payloads\":").append(JsonOutput.toJson(payloads))
                 .append(",\"readings\":").append(readingsJson())
+                .append(",\"transfer\":").append(transferJson())
                 .append('}').toString();
+    }
+
+    private String transferJson() {
+        if (transfer == null) {
+            return "null";
+        }
+        return "{\"upload\":" + transfer.upload() + ",\"list\":" + JsonOutput.toJson(transfer.type().label())
+                + ",\"path\":" + JsonOutput.toJson(transfer.path().label()) + ",\"done\":" + transfer.done()
+                + ",\"total\":" + (transfer.total() < 0 ? "null" : String.valueOf(transfer.total()))
+                + ",\"unit\":" + JsonOutput.toJson(transfer.unit()) + ",\"resends\":" + transfer.resends()
+                + ",\"text\":" + JsonOutput.toJson(transfer.text()) + "}";
     }
 
     private String readingsJson() {

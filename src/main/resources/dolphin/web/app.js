@@ -132,6 +132,7 @@ function popupText(d) {
     + `${d.armed ? 'armed' : 'disarmed'}, battery ${d.battery == null ? '?' : d.battery + ' %'}<br>`
     + `${d.relativeAlt} m above home${d.item != null ? ', item ' + d.item + ' of ' + d.total : ''}<br>`
     + `${d.picked ? 'picked by the script' : 'free'}${d.task ? '<br>task ' + escapeHtml(d.task) : ''}`
+    + `${d.transfer ? '<br><span class="dolphin-transfer">' + escapeHtml(d.transfer.text) + '</span>' : ''}`
     + `${d.fenceBreached ? '<br><b>outside its fence</b>' : ''}`
     + `${d.payloads && d.payloads.length ? '<br>carries ' + d.payloads.map(escapeHtml).join(', ') : ''}`
     + `${d.readings && d.readings.length ? '<br>' + readingsText(d.readings) : ''}`;
@@ -245,7 +246,7 @@ function renderTable() {
       + `<td>${escapeHtml(d.id)}</td><td>${escapeHtml(d.type)}</td><td>${d.connected ? escapeHtml(d.mode) : 'LOST'}${d.armed ? ' armed' : ''}</td>`
       + `<td>${d.battery == null ? '?' : d.battery + ' %'}</td><td>${d.relativeAlt.toFixed(1)} m</td>`
       + `<td>${d.item != null ? d.item + '/' + d.total : '-'}</td>`
-      + `<td>${d.readings && d.readings.length ? readingsText(d.readings) : ''}</td><td>${escapeHtml(d.task)}</td></tr>`;
+      + `<td>${d.readings && d.readings.length ? readingsText(d.readings) : ''}</td><td>${escapeHtml(d.task)}${d.transfer ? ' <span class="dolphin-transfer">' + escapeHtml(d.transfer.text) + '</span>' : ''}</td></tr>`;
   });
   document.querySelector('#vehicles tbody').innerHTML = rows.join('');
   document.getElementById('vehicle-count').textContent = `(${all.length})`;

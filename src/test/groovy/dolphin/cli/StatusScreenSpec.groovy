@@ -7,7 +7,24 @@ class StatusScreenSpec extends Specification {
 
     static VehicleStatus status(Map m = [:]) {
         new VehicleStatus(m.id ?: '1', m.containsKey('connected') ? m.connected : true, m.mode ?: 'GUIDED', m.armed ?: false, m.battery ?: 100,
-                m.alt ?: 0.0d, m.item ?: 0, m.total ?: 0, m.task ?: '')
+                m.alt ?: 0.0d, m.item ?: 0, m.total ?: 0, m.task ?: '', m.transfer ?: '')
+    }
+
+    def "a transfer in progress shows after the task, in the sentence and the table's row, and makes no log line of its own"() {
+        given:
+        def uploading = status(task: 'survey running', transfer: 'uploading: 45 of 100 items, 3 resent')
+        def out = new StringWriter()
+        def screen = new PlainScreen(new PrintWriter(out), { '' })
+
+        when:
+        screen.refresh([status(task: 'survey running')])
+        screen.refresh([uploading])
+
+        then:
+        uploading.sentence().endsWith('task survey running, uploading: 45 of 100 items, 3 resent')
+        uploading.row().endsWith('survey running, uploading: 45 of 100 items, 3 resent')
+        status(transfer: 'uploading over FTP: 620 of 3,810 bytes').row().endsWith(' uploading over FTP: 620 of 3,810 bytes')
+        out.toString().readLines().size() == 1
     }
 
     def "a status reads as a sentence, with the mission item and the task when there are any"() {

@@ -7,6 +7,9 @@ import dolphin.core.TaskTree
 import dolphin.mavlink.VehicleFamily
 import dolphin.mavlink.VehicleState
 import groovy.json.JsonSlurper
+import dolphin.mission.model.MissionType
+import dolphin.mission.transfer.TransferPath
+import dolphin.mission.transfer.TransferStatus
 import spock.lang.Specification
 
 /** Frames from samples, and what a viewer that has frame N is sent: no sockets, no threads, no clock. */
@@ -56,8 +59,8 @@ class FleetFeedSpec extends Specification {
     def "a vehicle's payloads and latest readings, a stale one marked, a NaN one as text"() {
         given:
         samples = [new VehicleSample(VehicleView.of('1', 'UAV', true, false, state(HOME), '', ['Camera', 'SMOKE'],
-                [new VehicleView.Shown('SMOKE', 42.5d, '', 1, true), new VehicleView.Shown('TEMP', Double.NaN, 'degC', 191, false)]),
-                null, { null })]
+                [new VehicleView.Shown('SMOKE', 42.5d, '', 1, true), new VehicleView.Shown('TEMP', Double.NaN, 'degC', 191, false)],
+                null), null, { null })]
 
         when:
         def v = parse(feed.sample(1.0).vehicles()['1'].json())
@@ -66,6 +69,21 @@ class FleetFeedSpec extends Specification {
         v.payloads == ['Camera', 'SMOKE']
         v.readings == [[name: 'SMOKE', value: 42.5, unit: '', component: 1, fresh: true],
                        [name: 'TEMP', value: 'NaN', unit: 'degC', component: 191, fresh: false]]
+    }
+
+    def "a transfer in progress is sent with its list, path, amount, resends and text; none is null"() {
+        given:
+        def status = new TransferStatus(MissionType.FENCE, true, TransferPath.FTP, 620, 1530, 2)
+        samples = [new VehicleSample(VehicleView.of('1', 'UAV', true, false, state(HOME), '', [], [], status), null, { null }),
+                   sample('2', HOME)]
+
+        when:
+        def frame = feed.sample(1.0)
+
+        then:
+        parse(frame.vehicles()['1'].json()).transfer == [upload: true, list: 'fence', path: 'ftp', done: 620, total: 1530,
+                                                          unit: 'bytes', resends: 2, text: 'uploading the fence over FTP: 620 of 1,530 bytes, 2 resent']
+        parse(frame.vehicles()['2'].json()).transfer == null
     }
 
     def "a viewer that has frame N is sent only the vehicles that changed after N, however many frames it missed"() {

@@ -46,6 +46,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     public enum FlightState { PREPARE, UPLOAD, VERIFY, ARM, START, RUNNING, DONE, ERROR }
 
     private static final Duration JUMP_RESEND = Duration.ofSeconds(1);
+    /** How often a long upload says how far it is, in clock time (a lossy link can make it last a minute). */
+    private static final long TRANSFER_REPORT_NANOS = 5_000_000_000L;
 
     private final Mission mission;
     private final Function<Node, MissionVehicle> vehicles;
@@ -330,6 +332,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         private final Deque<Map.Entry<MissionType, List<MissionItem>>> lists;
         private final Plan plan;
         private final CompletableFuture<TransferResult> pending;
+        private long lastReport = clock().nanoTime();
 
         Uploading(Deque<Map.Entry<MissionType, List<MissionItem>>> lists, Plan plan) {
             super(FlightState.UPLOAD, config.upload());
@@ -344,13 +347,23 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         @Override
         CompletionState step(long now) {
             if (!pending.isDone()) {
+                if (now - lastReport >= TRANSFER_REPORT_NANOS) {
+                    lastReport = now;
+                    vehicle.transfer().ifPresent(status -> progress(status.text()));
+                }
                 return CompletionState.IN_PROGRESS;
             }
             TransferResult r = pending.join();
             if (!r.success() && !config.verify()) {
                 return fail(r.error());
             }
-            if (config.verify()) {
+            if (r.success() && r.verified()) {
+                // the transfer read the list back itself (FTP, or a download that settled a lost ACK)
+                MissionType type = lists.peek().getKey();
+                progress((type == MissionType.MISSION ? "upload" : type.label()) + " verified"
+                        + (r.note().isEmpty() ? "" : " (" + r.note() + ")"));
+                nextList(lists, plan);
+            } else if (config.verify()) {
                 // The vehicle may hold the list although the final ACK was lost: the download decides.
                 enter(new Verifying(lists, plan, r.success() ? null : r.error()));
             } else {

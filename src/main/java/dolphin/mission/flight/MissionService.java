@@ -12,7 +12,12 @@ import dolphin.mission.transfer.MissionTransfers;
 import dolphin.mavlink.ProtocolTimers;
 import java.time.Duration;
 import java.util.Map;
+import java.util.List;
 import java.util.Objects;
+import java.util.Optional;
+import java.util.concurrent.CopyOnWriteArrayList;
+import dolphin.mission.transfer.TransferResult;
+import dolphin.mission.transfer.TransferStatus;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Consumer;
 
@@ -29,6 +34,7 @@ public final class MissionService {
     private final ProtocolTimers timers;
     private volatile MissionTransferConfig transferConfig = MissionTransferConfig.DEFAULT;
     private volatile MissionExecutorConfig executorConfig = MissionExecutorConfig.DEFAULT;
+    private final List<TransferListener> transferListeners = new CopyOnWriteArrayList<>();
 
     private MissionService(MAVLinkCommunications comms) {
         this.comms = comms;
@@ -71,13 +77,36 @@ public final class MissionService {
         return v == null ? null : v.executor();
     }
 
-    /** Timeout and tries of mission uploads and downloads started from now on. */
+    /** How mission uploads and downloads started from now on time their resends, give up and travel. */
     public MissionTransferConfig transferConfig() {
         return transferConfig;
     }
 
     public void setTransferConfig(MissionTransferConfig config) {
         transferConfig = Objects.requireNonNull(config, "config");
+    }
+
+    /** From now on, hears the progress and the end of every transfer the runtime makes; from any thread. */
+    public void addTransferListener(TransferListener listener) {
+        transferListeners.add(Objects.requireNonNull(listener, "listener"));
+    }
+
+    public void removeTransferListener(TransferListener listener) {
+        transferListeners.remove(listener);
+    }
+
+    /** Where the vehicle's transfer in progress stands; empty when none is, or for a vehicle we never transferred to. */
+    public Optional<TransferStatus> transferOn(MAVLinkNode node) {
+        VehicleMissions v = vehicles.get(node);
+        return v == null ? Optional.empty() : v.transfer();
+    }
+
+    void transferred(String vehicleId, TransferStatus status) {
+        transferListeners.forEach(l -> l.progress(vehicleId, status));
+    }
+
+    void transferEnded(String vehicleId, TransferResult result) {
+        transferListeners.forEach(l -> l.ended(vehicleId, result));
     }
 
     /** How missions started from now on are flown. */

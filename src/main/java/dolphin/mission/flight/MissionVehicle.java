@@ -6,7 +6,9 @@ import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
 import dolphin.mission.transfer.TransferResult;
 import dolphin.mission.transfer.VehicleChannel;
+import dolphin.mission.transfer.TransferStatus;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 
 /**
@@ -25,6 +27,9 @@ public interface MissionVehicle extends VehicleChannel {
     CompletableFuture<TransferResult> upload(MissionType type, List<MissionItem> items);
 
     CompletableFuture<TransferResult> download(MissionType type);
+
+    /** Where the transfer in progress stands (items or bytes, resends); empty when none is. */
+    Optional<TransferStatus> transfer();
 
     /** How missions are flown (deadlines, verification). */
     MissionExecutorConfig executorConfig();

@@ -1,6 +1,7 @@
 package dolphin.mission.flight;
 
 import com.MAVLink.Messages.MAVLinkMessage;
+import com.MAVLink.enums.MAV_PROTOCOL_CAPABILITY;
 import dolphin.mavlink.CommandResult;
 import dolphin.mavlink.MAVLinkNode;
 import dolphin.mavlink.RoundTrip;
@@ -9,6 +10,7 @@ import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
 import dolphin.mission.transfer.MissionTransfers;
 import dolphin.mission.transfer.TransferResult;
+import dolphin.mission.transfer.TransferStatus;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
@@ -24,6 +26,8 @@ public final class VehicleMissions implements MissionVehicle {
     private final MissionService service;
     private final MissionTransfers transfers;
     private final AtomicReference<MissionExecutor> executor = new AtomicReference<>();
+    /** The latest progress of a transfer in progress, null when none is. */
+    private volatile TransferStatus transfer;
 
     VehicleMissions(MAVLinkNode node, MissionService service) {
         this.node = node;
@@ -83,12 +87,31 @@ public final class VehicleMissions implements MissionVehicle {
 
     @Override
     public CompletableFuture<TransferResult> upload(MissionType type, List<MissionItem> items) {
-        return transfers.upload().upload(type, items);
+        return watched(transfers.upload().upload(type, items, service.transferConfig(), this::transferred));
     }
 
     @Override
     public CompletableFuture<TransferResult> download(MissionType type) {
-        return transfers.download().download(type);
+        return watched(transfers.download().download(type, service.transferConfig(), this::transferred));
+    }
+
+    @Override
+    public Optional<TransferStatus> transfer() {
+        return Optional.ofNullable(transfer);
+    }
+
+    private void transferred(TransferStatus status) {
+        transfer = status;
+        service.transferred(vehicleId(), status);
+    }
+
+    private CompletableFuture<TransferResult> watched(CompletableFuture<TransferResult> result) {
+        return result.whenComplete((r, e) -> {
+            transfer = null;
+            if (r != null) {
+                service.transferEnded(vehicleId(), r);
+            }
+        });
     }
 
     @Override
@@ -103,7 +126,9 @@ public final class VehicleMissions implements MissionVehicle {
 
     @Override
     public Optional<Boolean> offersFtp() {
-        return Optional.empty();
+        var bits = node.capabilities();
+        return bits.isPresent() ? Optional.of((bits.getAsLong() & MAV_PROTOCOL_CAPABILITY.MAV_PROTOCOL_CAPABILITY_FTP) != 0)
+                : Optional.empty();
     }
 
     @Override

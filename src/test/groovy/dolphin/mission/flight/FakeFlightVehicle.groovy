@@ -157,6 +157,12 @@ class FakeFlightVehicle implements MissionVehicle {
     @Override
     Optional<Boolean> offersFtp() { Optional.empty() }
 
+    /** Where a transfer in progress stands, as a spec sets it. */
+    dolphin.mission.transfer.TransferStatus transferStatus
+
+    @Override
+    Optional<dolphin.mission.transfer.TransferStatus> transfer() { Optional.ofNullable(transferStatus) }
+
     @Override
     int system() { system }
 
@@ -195,15 +201,15 @@ class FakeFlightVehicle implements MissionVehicle {
 
     @Override
     CompletableFuture<TransferResult> upload(MissionType type, List<MissionItem> items) {
-        transfer(new Transfer(clock.seconds(), true, type, List.copyOf(items)))
+        queued(new Transfer(clock.seconds(), true, type, List.copyOf(items)))
     }
 
     @Override
     CompletableFuture<TransferResult> download(MissionType type) {
-        transfer(new Transfer(clock.seconds(), false, type, null))
+        queued(new Transfer(clock.seconds(), false, type, null))
     }
 
-    private CompletableFuture<TransferResult> transfer(Transfer t) {
+    private CompletableFuture<TransferResult> queued(Transfer t) {
         transfers << t
         log << t.toString()
         Closure given = transferAnswers["${t.upload ? 'upload' : 'download'} ${t.type.label()}".toString()]

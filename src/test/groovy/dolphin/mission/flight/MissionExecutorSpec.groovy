@@ -9,6 +9,10 @@ import dolphin.mavlink.VehicleFamily
 import dolphin.mission.dsl.MissionDsl
 import dolphin.mission.flight.MissionExecutor.FlightState
 import dolphin.mission.model.MissionType
+import dolphin.mission.transfer.TransferPath
+import dolphin.mission.transfer.TransferResult
+import dolphin.mission.transfer.TransferStatus
+import java.time.Duration
 import spock.lang.Unroll
 
 import static dolphin.mission.flight.FakeFlightVehicle.HOME
@@ -257,6 +261,49 @@ class MissionExecutorSpec extends MissionFlights {
 
         then:
         !vehicle.commands*.text.contains('DO_FENCE_ENABLE 1')
+    }
+
+    def "a long upload says how far it is every 5 s of clock time; one the transfer read back itself is not downloaded again"() {
+        given:
+        vehicle.ready()
+        def task = MissionDsl.mission {
+            name 'hop'
+            takeOff Position.fromDegrees(40.444233, -7.375234, 840)
+            goPos 40.4446, -7.375234, 840
+            landingPoint 40.4446, -7.375234, 820
+        }
+
+        when:
+        launch(task)
+        step()
+        vehicle.transferStatus = new TransferStatus(MissionType.MISSION, true, TransferPath.ITEMS, 2, 4, 1)
+        clock.advance(Duration.ofSeconds(4))
+        step()
+
+        then: 'not yet'
+        messages == said(['uploading 4 items'])
+
+        when:
+        clock.advance(Duration.ofSeconds(1))
+        step()
+        vehicle.transferStatus = new TransferStatus(MissionType.MISSION, true, TransferPath.ITEMS, 3, 4, 1)
+        clock.advance(Duration.ofSeconds(1))
+        step()
+
+        then: 'once per 5 s'
+        messages == said(['uploading 4 items', 'uploading: 2 of 4 items, 1 resent'])
+
+        when: 'the transfer verified the list itself (over FTP): no download'
+        vehicle.transferStatus = null
+        def t = vehicle.pendingTransfer()
+        vehicle.stored[MissionType.MISSION] = t.items
+        t.result.complete(new TransferResult(true, null, t.items, 0, 0, true, 'over FTP'))
+        step()
+
+        then:
+        executor.state() == FlightState.ARM
+        vehicle.transfers*.toString() == ['0.0 upload mission: 4 items']
+        messages == said(['uploading 4 items', 'uploading: 2 of 4 items, 1 resent', 'upload verified (over FTP)'])
     }
 
     def "a mission naming its home: DO_SET_HOME with it before the upload, sent again every 2 s while the vehicle answers FAILED, said once"() {
