@@ -13,10 +13,7 @@
 #   --baseline-jar JAR: the same with a jar already built (its runtime classpath in JAR's lib/).
 # Prints the summary, also in bench/target/results/lossy-summary.txt; every upload is in lossy.json
 # there. Exit status 1 if one of our uploads did not verify. A full run takes about 10 minutes on 2 cores.
-set -euo pipefail
-bench="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-root="$(dirname "$bench")"
-out="$bench/target/results"
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 
 if [ "${1:-}" = "--no-build" ]; then shift; else "$bench/build.sh"; fi
 args=()
@@ -37,11 +34,5 @@ while [ $# -gt 0 ]; do
     shift
   fi
 done
-jar="${DOLPHIN_JAR:-$root/target/dolphin.jar}"
-for f in "$jar" "$root/.venv/bin/python" "$bench/target/classes/dolphin/bench/LossyUploadBench.class"; do
-  [ -e "$f" ] || { echo "bench/lossy.sh: missing $f (run without --no-build)" >&2; exit 1; }
-done
-mkdir -p "$out"
 echo "== lossy-link uploads: ours (item protocol, FTP) and the wp load reference, 0-30 % loss" >&2
-java -Dorg.slf4j.simpleLogger.defaultLogLevel=warn -cp "$bench/target/classes:$bench/target/lib/*:$jar:$root/target/lib/*" \
-  dolphin.bench.LossyUploadBench "$out" "$root/.venv/bin/python" "$bench/mavproxy_wpload.py" ${args[@]+"${args[@]}"}
+bench_main lossy.sh LossyUploadBench "$out" "$python" "$bench/mavproxy_wpload.py" ${args[@]+"${args[@]}"}

@@ -11,18 +11,8 @@
 # Prints the summary, also in bench/target/results/upload-summary.txt; every sample is in
 # upload.json and pymavlink-upload.json there. Exit status 1 if an upload failed or did not verify.
 # Takes about a minute on 2 cores.
-set -euo pipefail
-bench="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-root="$(dirname "$bench")"
-out="$bench/target/results"
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 
 if [ "${1:-}" = "--no-build" ]; then shift; else "$bench/build.sh"; fi
-jar="${DOLPHIN_JAR:-$root/target/dolphin.jar}"
-for f in "$jar" "$root/.venv/bin/python" "$bench/target/classes/dolphin/bench/UploadBench.class"; do
-  [ -e "$f" ] || { echo "bench/upload.sh: missing $f (run without --no-build)" >&2; exit 1; }
-done
-mkdir -p "$out"
 echo "== mission upload: floor, dolphin and pymavlink interleaved" >&2
-# The simulator and the runtime log at INFO ("Flight plan received" per upload): keep that out of the summary.
-java -Dorg.slf4j.simpleLogger.defaultLogLevel=warn -cp "$bench/target/classes:$bench/target/lib/*:$jar:$root/target/lib/*" \
-  dolphin.bench.UploadBench "$out" "$root/.venv/bin/python" "$bench/pymavlink_upload.py" "$@"
+bench_main upload.sh UploadBench "$out" "$python" "$bench/pymavlink_upload.py" "$@"

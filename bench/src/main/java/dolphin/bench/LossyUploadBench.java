@@ -508,12 +508,12 @@ public final class LossyUploadBench {
 
         line("");
         line("ours against the reference, same run (median time of ours / median time of the reference's uploads reported done)");
-        line("%-5s %-5s  %12s %12s %14s", "loss", "items", "items/ref", "FTP/ref", "reference");
+        line("%-5s %-5s  %12s %12s  %s", "loss", "items", "items/ref", "FTP/ref", "reference median");
         for (double loss : LOSSES) {
             for (int n : SIZES) {
-                Cell ref = cells.get(key(Way.REFERENCE, loss, n));
-                line("%4.0f%% %5d  %12s %12s %14s", loss * 100, n, ratio(Way.ITEMS, loss, n), ratio(Way.FTP, loss, n),
-                        ms(UploadBench.median(times(ref))) + " ms");
+                double ref = median(Way.REFERENCE, loss, n);
+                line("%4.0f%% %5d  %12s %12s  %s", loss * 100, n, ratio(Way.ITEMS, loss, n), ratio(Way.FTP, loss, n),
+                        Double.isNaN(ref) ? String.format(Locale.ROOT, "none done in %.0f s", options.deadline) : ms(ref) + " ms");
             }
         }
         line("lossless, against the floor (N + 2 command round trips on the same link, UploadBench.floorMs):");
