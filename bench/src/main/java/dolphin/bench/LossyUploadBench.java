@@ -66,7 +66,7 @@ public final class LossyUploadBench {
 
     enum Way {
         ITEMS("ours, item protocol"), FTP("ours, FTP"), REFERENCE("reference (wp load)"),
-        CURRENT("this build, own JVM"), BASELINE("baseline build, own JVM");
+        CURRENT("this build, items, own JVM"), BASELINE("baseline build, own JVM");
 
         final String label;
 
@@ -186,7 +186,7 @@ public final class LossyUploadBench {
         if (options.baselineJar != null) {
             String bench = Path.of(LossyUploadBench.class.getProtectionDomain().getCodeSource().getLocation().toURI()).toString();
             String jar = Path.of(MissionTransferConfig.class.getProtectionDomain().getCodeSource().getLocation().toURI()).toString();
-            ways.put(Way.CURRENT, startServer(Way.CURRENT, bench, jar));
+            ways.put(Way.CURRENT, startServer(Way.CURRENT, bench, jar, "--path", TransferPath.ITEMS.name()));
             ways.put(Way.BASELINE, startServer(Way.BASELINE, bench, options.baselineJar));
         }
         ways.put(Way.REFERENCE, own(OutOfProcess.start(List.of(python, reference), out.resolve("lossy/reference-0.port"), FaultModel.NONE,
@@ -217,12 +217,13 @@ public final class LossyUploadBench {
         }
     }
 
-    private OutOfProcess startServer(Way way, String benchClasses, String jar) throws Exception {
+    private OutOfProcess startServer(Way way, String benchClasses, String jar, String... arguments) throws Exception {
         String lib = Path.of(jar).resolveSibling("lib").resolve("*").toString();
         String name = way.name().toLowerCase(Locale.ROOT);
-        return own(OutOfProcess.start(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Dorg.slf4j.simpleLogger.defaultLogLevel=warn", "-cp", benchClasses + ":" + jar + ":" + lib, UploadServer.class.getName(),
-                "--port-file"), out.resolve("lossy/" + name + ".port"), FaultModel.NONE, out.resolve("lossy/" + name + ".json")));
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Dorg.slf4j.simpleLogger.defaultLogLevel=warn", "-cp", benchClasses + ":" + jar + ":" + lib, UploadServer.class.getName()));
+        command.addAll(List.of(arguments));
+        return own(OutOfProcess.start(command, out.resolve("lossy/" + name + ".port"), FaultModel.NONE, out.resolve("lossy/" + name + ".json")));
     }
 
     // ---- lossy: every cell on its own vehicle, side by side ----------------------------------------
@@ -396,9 +397,7 @@ public final class LossyUploadBench {
         static OutOfProcess start(List<String> command, Path portFile, FaultModel faults, Path items) throws Exception {
             Files.deleteIfExists(portFile);
             List<String> cmd = new ArrayList<>(command);
-            if (!cmd.get(cmd.size() - 1).equals("--port-file")) {
-                cmd.add("--port-file");
-            }
+            cmd.add("--port-file");
             cmd.add(portFile.toString());
             Process p = new ProcessBuilder(cmd).redirectError(ProcessBuilder.Redirect.INHERIT).start();
             UploadBench.waitFor(() -> Files.exists(portFile) || !p.isAlive(), 60, portFile.toString());
@@ -516,6 +515,7 @@ public final class LossyUploadBench {
                         Double.isNaN(ref) ? String.format(Locale.ROOT, "none done in %.0f s", options.deadline) : ms(ref) + " ms");
             }
         }
+        Files.writeString(out.resolve("lossy-table.md"), markdown());
         line("lossless, against the floor (N + 2 command round trips on the same link, UploadBench.floorMs):");
         for (int n : SIZES) {
             double f = UploadBench.median(floor.get(n));
@@ -561,6 +561,31 @@ public final class LossyUploadBench {
             }
         }
         return ok;
+    }
+
+    /** The per-cell table as bench/README.md shows it: verified / total, median (p90), ratios to the reference. */
+    private String markdown() {
+        StringBuilder b = new StringBuilder("| loss | items | ours, item protocol | ours, FTP | reference (wp load) | items / ref | FTP / ref |\n"
+                + "|---:|---:|---:|---:|---:|---:|---:|\n");
+        for (double loss : LOSSES) {
+            for (int n : SIZES) {
+                b.append(String.format(Locale.ROOT, "| %.0f %% | %d | %s | %s | %s | %s | %s |%n", loss * 100, n, cellText(Way.ITEMS, loss, n),
+                        cellText(Way.FTP, loss, n), cellText(Way.REFERENCE, loss, n), ratio(Way.ITEMS, loss, n), ratio(Way.FTP, loss, n)));
+            }
+        }
+        return b.toString();
+    }
+
+    private String cellText(Way w, double loss, int n) {
+        Cell c = cells.get(key(w, loss, n));
+        double[] t = times(c);
+        String time = t.length == 0 ? String.format(Locale.ROOT, "none done in %.0f s", options.deadline)
+                : duration(UploadBench.median(t)) + " (" + duration(UploadBench.p90(t)) + ")";
+        return verified(c) + "/" + c.samples.size() + ", " + time;
+    }
+
+    private static String duration(double ms) {
+        return ms < 1000 ? ms(ms) + " ms" : String.format(Locale.ROOT, "%.1f s", ms / 1000);
     }
 
     private String ratioTarget(Way w, double loss, int n) {

@@ -7,6 +7,7 @@ import dolphin.mavlink.MAVLinkNode;
 import dolphin.mission.flight.MissionService;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.transfer.MissionTransferConfig;
+import dolphin.mission.transfer.TransferPath;
 import dolphin.mission.transfer.TransferProgress;
 import dolphin.mission.transfer.TransferResult;
 import java.io.BufferedReader;
@@ -24,10 +25,11 @@ import java.util.concurrent.TimeoutException;
  * The uploader of whatever dolphin jar is on the classpath, in a JVM of its own, serving
  * {@link LossyUploadBench} the line protocol of bench/mavproxy_wpload.py: run once with this
  * working tree's jar and once with a baseline jar (an earlier build), both against lossless
- * simulated vehicles of the bench's process, it compares the two builds like for like. Uses only
- * what the earlier builds have too (the default {@link MissionTransferConfig}).
+ * simulated vehicles of the bench's process, it compares the two builds like for like. Without
+ * {@code --path} it uses only what the earlier builds have too (the default
+ * {@link MissionTransferConfig}); with it, {@link LossyUploadBench#config} of that path.
  *
- * <pre>UploadServer --port-file FILE</pre>
+ * <pre>UploadServer [--path ITEMS|FTP|AUTO] --port-file FILE</pre>
  *
  * Listens on udpin:127.0.0.1 (an ephemeral port, written to FILE), waits for vehicle 1 and its
  * home, prints "ready", then per line: {@code upload ITEMS.json DEADLINE} uploads and prints
@@ -40,7 +42,10 @@ public final class UploadServer {
     }
 
     public static void main(String[] args) throws Exception {
-        Path portFile = Path.of(args[1]);
+        List<String> arguments = List.of(args);
+        Path portFile = Path.of(arguments.get(arguments.indexOf("--port-file") + 1));
+        MissionTransferConfig config = arguments.contains("--path") ? config(arguments.get(arguments.indexOf("--path") + 1))
+                : MissionTransferConfig.DEFAULT;
         try (MAVLinkCommunications comms = new MAVLinkCommunications(MAVLinkConfig.of("udpin:127.0.0.1:0"), SystemClock.REAL)) {
             comms.start();
             Path tmp = Path.of(portFile + ".tmp");
@@ -51,7 +56,8 @@ public final class UploadServer {
             BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
             for (String line; (line = in.readLine()) != null && !line.equals("quit"); ) {
                 String[] words = line.trim().split("\\s+");
-                System.out.println(words[0].equals("ack") ? "{}" : upload(node, readItems(Path.of(words[1])), Double.parseDouble(words[2])));
+                System.out.println(words[0].equals("ack") ? "{}" : upload(node, config, readItems(Path.of(words[1])),
+                        Double.parseDouble(words[2])));
             }
         }
         System.out.println("{\"jar\": " + UploadBench.toJson(String.valueOf(
@@ -59,11 +65,16 @@ public final class UploadServer {
         System.exit(0);
     }
 
-    private static String upload(MAVLinkNode node, List<MissionItem> items, double deadline) throws Exception {
+    /** Apart, so that an earlier build without {@link TransferPath} never links it. */
+    private static MissionTransferConfig config(String path) {
+        return LossyUploadBench.config(TransferPath.valueOf(path));
+    }
+
+    private static String upload(MAVLinkNode node, MissionTransferConfig config, List<MissionItem> items, double deadline) throws Exception {
         long t0 = System.nanoTime();
         try {
             TransferResult r = MissionService.of(node.communications()).vehicle(node).transfers().upload()
-                    .upload(items, MissionTransferConfig.DEFAULT, TransferProgress.NONE).get((long) (deadline * 1000), TimeUnit.MILLISECONDS);
+                    .upload(items, config, TransferProgress.NONE).get((long) (deadline * 1000), TimeUnit.MILLISECONDS);
             return String.format(Locale.ROOT, "{\"outcome\": \"%s\", \"ms\": %.3f, \"resends\": %d, \"detail\": %s}",
                     r.success() ? "done" : "failed", (System.nanoTime() - t0) / 1e6, r.resends(),
                     UploadBench.toJson(r.success() ? "" : r.error()));
