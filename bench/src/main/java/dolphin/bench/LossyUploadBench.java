@@ -103,13 +103,17 @@ public final class LossyUploadBench {
     private final List<AutoCloseable> resources = new ArrayList<>();
     private String referenceVersions = "?";
 
-    record Options(boolean quick, String baselineJar, int rounds, double cellSeconds, double deadline, int reps, int warmup) {
+    /**
+     * @param deadline when a reference upload is stopped as not done
+     * @param oursCap the same for ours: only a guard against a hung run (ours give up by themselves after their silence budget)
+     */
+    record Options(boolean quick, String baselineJar, int rounds, double cellSeconds, double deadline, double oursCap, int reps, int warmup) {
         static Options parse(List<String> args) {
             boolean quick = args.contains("--quick");
             String baseline = value(args, "--baseline-jar", null);
             return new Options(quick, baseline, Integer.parseInt(value(args, "--rounds", quick ? "2" : "10")),
                     Double.parseDouble(value(args, "--cell-seconds", quick ? "30" : "420")),
-                    Double.parseDouble(value(args, "--deadline", quick ? "20" : "120")), quick ? 3 : 41, quick ? 2 : 10);
+                    Double.parseDouble(value(args, "--deadline", quick ? "20" : "120")), quick ? 60 : 600, quick ? 3 : 41, quick ? 2 : 10);
         }
 
         private static String value(List<String> args, String name, String otherwise) {
@@ -156,8 +160,8 @@ public final class LossyUploadBench {
         String date = java.time.LocalDate.now().toString();
         line("lossy-link upload benchmark, %s, %s, %d cores, Java %s; loopback UDP, simulated copters, real time", date, cpu(),
                 Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"));
-        line("rounds per cell: lossless %d (after %d warm-up), lossy at most %d and none started after %.0f s; reference deadline %.0f s",
-                options.reps, options.warmup, options.rounds, options.cellSeconds, options.deadline);
+        line("rounds per cell: lossless %d (after %d warm-up), lossy at most %d and none started after %.0f s; deadline of an upload:"
+                + " the reference %.0f s, ours %.0f s", options.reps, options.warmup, options.rounds, options.cellSeconds, options.deadline, options.oursCap);
         try (MAVLinkCommunications comms = new MAVLinkCommunications(MAVLinkConfig.of("udpin:127.0.0.1:0"), SystemClock.REAL)) {
             comms.start();
             int port = comms.links().get(0).localPort();
@@ -293,7 +297,7 @@ public final class LossyUploadBench {
             long start = System.nanoTime();
             try {
                 for (int r = 0; r < options.rounds && (r == 0 || (System.nanoTime() - start) / 1e9 < options.cellSeconds); r++) {
-                    samples.add(uploader.upload(size, options.deadline));
+                    samples.add(uploader.upload(size, way.ours() ? options.oursCap : options.deadline));
                 }
             } catch (Exception e) {
                 error = e.toString();
