@@ -74,6 +74,11 @@ final class RunCommand implements Callable<Integer> {
                     + "as its radio under water, until it is shallower again (default: always heard).")
     private Double simDiveSilence;
 
+    @Option(names = "--sim-no-ftp",
+            description = "With --sim: simulated vehicles without MAVLink FTP, as firmware built without it: "
+                    + "FILE_TRANSFER_PROTOCOL gets no answer and AUTOPILOT_VERSION has no FTP capability.")
+    private boolean simNoFtp;
+
     @Option(names = "--speedup", paramLabel = "X", defaultValue = "1",
             description = "With --sim: run time X times faster than real time (default: ${DEFAULT-VALUE}).")
     private double speedup;
@@ -249,7 +254,7 @@ final class RunCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), "--speedup needs --sim: real vehicles run in real time");
         }
         needsSim(EquipmentOptions.OptionNames.RUN.all(), "only simulated vehicles carry simulated sensors and cameras");
-        needsSim(List.of("--sim-home", "--sim-dive-silence"), "it sets up the simulated fleet");
+        needsSim(List.of("--sim-home", "--sim-dive-silence", "--sim-no-ftp"), "it sets up the simulated fleet");
         if (webTiles != null && web == null) {
             throw new ParameterException(spec.commandLine(), "--web-tiles needs --web");
         }
@@ -330,6 +335,9 @@ final class RunCommand implements Callable<Integer> {
     SimFleet.Config fleetConfig(List<InetSocketAddress> ports, FaultModel faultModel) {
         SimOptions options = SimOptions.DEFAULT.withDiveSilence(
                 DiveSilence.metres(spec.commandLine(), "--sim-dive-silence", simDiveSilence, "--sim-type", simType));
+        if (simNoFtp) {
+            options = options.withoutFtp();
+        }
         SimFleet.Config config;
         try {
             config = SimFleet.Config.of(sim, simType, ports).withSigningKey(key).withFaults(faultModel).withOptions(options);

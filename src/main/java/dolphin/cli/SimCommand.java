@@ -54,6 +54,11 @@ final class SimCommand implements Callable<Integer> {
                     + "under water, until it is shallower again (default: always heard).")
     private Double diveSilence;
 
+    @Option(names = "--no-ftp",
+            description = "Vehicles without MAVLink FTP, as firmware built without it: FILE_TRANSFER_PROTOCOL gets no answer "
+                    + "and AUTOPILOT_VERSION has no FTP capability, so ground stations transfer missions item by item.")
+    private boolean noFtp;
+
     @Option(names = "--first-sysid", paramLabel = "N", defaultValue = "1", description = "System id of the first vehicle.")
     private int firstSysid;
 
@@ -126,6 +131,9 @@ final class SimCommand implements Callable<Integer> {
         }
         SimOptions options = SimOptions.DEFAULT.withWarmup(warmup).withDrain(drain)
                 .withDiveSilence(DiveSilence.metres(spec.commandLine(), "--dive-silence", diveSilence, "--type", type));
+        if (noFtp) {
+            options = options.withoutFtp();
+        }
         SimFleet.Config config;
         try {
             config = new SimFleet.Config(count, type, home != null ? home : SimFleet.Config.DEFAULT_HOME, SimFleet.Config.DEFAULT_SPACING,

@@ -13,8 +13,10 @@ import java.util.List;
 
 /**
  * A simulated vehicle's fence or rally points, kept as ArduPilot keeps them (docs/airspace.md):
- * an upload replaces the stored list only once complete and valid as a whole (AC_PolyFence_loader
- * writes the new fence at the end; a broken one is MAV_MISSION_ERROR and the old fence stays), and a
+ * a fence upload replaces the stored fence only once complete and valid as a whole
+ * (AC_PolyFence_loader writes the new fence at the end; a broken one is MAV_MISSION_ERROR and the old
+ * fence stays); rally points are written as they arrive, as MissionItemProtocol_Rally does (COUNT
+ * truncates, each item replaces or appends, so a refused one leaves the points before it); a
  * download reports what ArduPilot stores: a fence item's command, param1 and position, in
  * MAV_FRAME_GLOBAL at altitude 0; a rally point's position with its height as a whole number of
  * metres (a 16-bit integer in RallyLocation) in its altitude reference.
@@ -51,14 +53,27 @@ final class AirspaceStore implements ItemStore {
     @Override
     public void truncate(int n) {
         incoming.clear();
-        if (n == 0) {
+        if (type == MissionType.RALLY) {
+            rally = new RallyPoints(rally.items().subList(0, Math.min(n, rally.size())));
+        } else if (n == 0) {
             clear();
         }
     }
 
+    /** A fence item waits for the whole fence; a rally point replaces the one at its seq, or is appended. */
     @Override
     public void put(MissionItem item) {
-        incoming.add(item);
+        if (type == MissionType.FENCE) {
+            incoming.add(item);
+            return;
+        }
+        List<MissionItem> points = new ArrayList<>(rally.items());
+        if (item.seq() < points.size()) {
+            points.set(item.seq(), item);
+        } else {
+            points.add(item.withSeq(points.size()));
+        }
+        rally = new RallyPoints(points);
     }
 
     @Override
@@ -81,14 +96,14 @@ final class AirspaceStore implements ItemStore {
         return MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
     }
 
+    /** A fence is checked whole here; rally points were checked and stored one by one. */
     @Override
     public int complete() {
+        if (type == MissionType.RALLY) {
+            return MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
+        }
         try {
-            if (type == MissionType.FENCE) {
-                fence = Fence.of(incoming);
-            } else {
-                rally = RallyPoints.of(incoming);
-            }
+            fence = Fence.of(incoming);
             return MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
         } catch (BadItemException e) {
             return MAV_MISSION_RESULT.MAV_MISSION_ERROR;

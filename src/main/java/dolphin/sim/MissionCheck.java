@@ -72,6 +72,18 @@ final class MissionCheck {
         return MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
     }
 
+    /**
+     * A DO_JUMP whose target (p1) is item 0 or not below {@code count}: ArduPilot refuses it with
+     * MAV_MISSION_ERROR (MissionItemProtocol_Waypoints, AP_Filesystem_Mission::finish_upload_mission).
+     */
+    static boolean jumpsNowhere(MissionItem item, int count) {
+        if (item.command() != MAV_CMD.MAV_CMD_DO_JUMP) {
+            return false;
+        }
+        int target = (int) item.param1() & 0xffff;
+        return target == 0 || target >= count;
+    }
+
     /** Whether the item's z is relative to home (relative and terrain frames, and MISSION). */
     static boolean relative(int frame) {
         return frame != MAV_FRAME.MAV_FRAME_GLOBAL && frame != MAV_FRAME.MAV_FRAME_GLOBAL_INT;

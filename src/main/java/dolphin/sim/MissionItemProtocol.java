@@ -16,9 +16,12 @@ import dolphin.mission.model.MissionType;
 
 /**
  * The vehicle side of the mission protocol, as ArduPilot's MissionItemProtocol does it: uploads
- * (MISSION_COUNT truncates at once; items are asked for with MISSION_REQUEST, id 40, re-asked every
- * second, cancelled after 8 s without one; a wrong seq is INVALID_SEQUENCE and the upload goes on;
- * another sender, or a download, during an upload is DENIED), downloads (MISSION_REQUEST_LIST,
+ * (MISSION_COUNT truncates at once; items are asked for with MISSION_REQUEST, id 40, re-asked once more
+ * than a second passed since the last request, cancelled once more than 8 s passed without an item; a
+ * wrong seq is INVALID_SEQUENCE and the upload goes on; an item from another sender, or a download,
+ * during an upload is DENIED; an item when no upload is in progress, such as the last one repeated
+ * after its ACK was lost, is ERROR, as GCS_MAVLINK::handle_mission_item answers; a DO_JUMP to item 0 or
+ * past the uploaded count is ERROR and ends the upload), downloads (MISSION_REQUEST_LIST,
  * MISSION_REQUEST_INT answered with MISSION_ITEM_INT, MISSION_REQUEST with MISSION_ITEM) and
  * MISSION_CLEAR_ALL. One transfer a list (mission, fence, rally points: {@link ItemStore}), as
  * ArduPilot has one MissionItemProtocol a mission_type; a message of another mission_type is
@@ -102,16 +105,21 @@ final class MissionItemProtocol {
         return true;
     }
 
-    /** Re-requests the pending item every second; cancels the upload after 8 s without an item. */
+    /**
+     * Re-requests the pending item once more than a second passed since the last request; cancels
+     * the upload once more than 8 s passed without an item (MissionItemProtocol::update compares
+     * with {@code >}; the fleet's 50 ms ticks make these 1.05 s and 8.05 s).
+     */
     void tick(long now) {
         if (!uploading) {
             return;
         }
-        if (now - lastItem >= UPLOAD_TIMEOUT_NANOS) {
+        if (now - lastItem > UPLOAD_TIMEOUT_NANOS) {
             uploading = false;
             ack(uploaderSys, uploaderComp, MAV_MISSION_RESULT.MAV_MISSION_OPERATION_CANCELLED);
             host.text(MAV_SEVERITY.MAV_SEVERITY_WARNING, "Mission upload timeout");
-        } else if (now - lastRequest >= RESEND_NANOS) {
+            host.changed(type);
+        } else if (now - lastRequest > RESEND_NANOS) {
             request(now);
         }
     }
@@ -146,18 +154,28 @@ final class MissionItemProtocol {
     }
 
     private void item(int sys, int comp, int missionType, MissionItem item, long now) {
+        if (missionType != type.wire()) {
+            ack(sys, comp, MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED, missionType);
+            return;
+        }
         if (!uploading) {
-            return; // not asked for: ArduPilot ignores it too (a late duplicate)
+            ack(sys, comp, MAV_MISSION_RESULT.MAV_MISSION_ERROR);
+            return;
+        }
+        // ArduPilot checks the seq before the sender
+        if (item.seq() != next) {
+            ack(sys, comp, MAV_MISSION_RESULT.MAV_MISSION_INVALID_SEQUENCE);
+            return;
         }
         if (!fromUploader(sys, comp)) {
             ack(sys, comp, MAV_MISSION_RESULT.MAV_MISSION_DENIED);
             return;
         }
-        if (item.seq() != next) {
-            ack(sys, comp, MAV_MISSION_RESULT.MAV_MISSION_INVALID_SEQUENCE);
-            return;
+        int result = store.check(item);
+        if (result == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED && type == MissionType.MISSION
+                && MissionCheck.jumpsNowhere(item, Math.max(store.count(), expected))) {
+            result = MAV_MISSION_RESULT.MAV_MISSION_ERROR;
         }
-        int result = missionType != type.wire() ? MAV_MISSION_RESULT.MAV_MISSION_ERROR : store.check(item);
         if (result != MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
             uploading = false;
             ack(sys, comp, result);

@@ -23,10 +23,12 @@ final class MissionLists {
     private final MissionItemProtocol mission;
     private final MissionItemProtocol fence;
     private final MissionItemProtocol rally;
+    private final MissionStore missionStore;
     private final AirspaceStore fenceStore;
     private final AirspaceStore rallyStore;
 
     MissionLists(MissionStore missionStore, int capacity, MissionItemProtocol.Host host) {
+        this.missionStore = missionStore;
         this.fenceStore = new AirspaceStore(MissionType.FENCE, capacity);
         this.rallyStore = new AirspaceStore(MissionType.RALLY, capacity);
         this.mission = new MissionItemProtocol(missionStore, host);
@@ -54,6 +56,15 @@ final class MissionLists {
 
     boolean uploading() {
         return mission.uploading() || fence.uploading() || rally.uploading();
+    }
+
+    /** The list of a type, as MAVLink FTP's @MISSION files reach it. */
+    ItemStore store(MissionType type) {
+        return switch (type) {
+            case MISSION -> missionStore;
+            case FENCE -> fenceStore;
+            case RALLY -> rallyStore;
+        };
     }
 
     /** The stored fence (checked when its upload completed). */

@@ -12,18 +12,21 @@ package dolphin.sim;
  *        MISSION_COUNT is refused with NO_SPACE (ArduPilot's limit depends on its storage; 700 here)
  * @param diveSilenceMetres deeper than this below the surface a sub sends and hears nothing, as its radio
  *        under water; infinite (the default): always heard
+ * @param ftp true (the default): the vehicle serves MAVLink FTP (its @MISSION files) and says so in
+ *        AUTOPILOT_VERSION; false: FILE_TRANSFER_PROTOCOL gets no answer and the capability bit is clear,
+ *        as firmware built without FTP
  */
 public record SimOptions(double warmupSeconds, double drainPercentPerMinute, boolean messageIntervalSupported,
-                         boolean refuseModeChanges, int missionCapacity, double diveSilenceMetres) {
+                         boolean refuseModeChanges, int missionCapacity, double diveSilenceMetres, boolean ftp) {
 
     public static final int DEFAULT_MISSION_CAPACITY = 700;
     public static final SimOptions DEFAULT = new SimOptions(0, 14, true, false, DEFAULT_MISSION_CAPACITY,
-            Double.POSITIVE_INFINITY);
+            Double.POSITIVE_INFINITY, true);
 
     public SimOptions(double warmupSeconds, double drainPercentPerMinute, boolean messageIntervalSupported,
                       boolean refuseModeChanges) {
         this(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, DEFAULT_MISSION_CAPACITY,
-                Double.POSITIVE_INFINITY);
+                Double.POSITIVE_INFINITY, true);
     }
 
     public SimOptions {
@@ -37,26 +40,32 @@ public record SimOptions(double warmupSeconds, double drainPercentPerMinute, boo
 
     public SimOptions withWarmup(double seconds) {
         return new SimOptions(seconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity,
-                diveSilenceMetres);
+                diveSilenceMetres, ftp);
     }
 
     public SimOptions withDrain(double percentPerMinute) {
         return new SimOptions(warmupSeconds, percentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity,
-                diveSilenceMetres);
+                diveSilenceMetres, ftp);
     }
 
     public SimOptions withoutMessageInterval() {
-        return new SimOptions(warmupSeconds, drainPercentPerMinute, false, refuseModeChanges, missionCapacity, diveSilenceMetres);
+        return new SimOptions(warmupSeconds, drainPercentPerMinute, false, refuseModeChanges, missionCapacity, diveSilenceMetres, ftp);
     }
 
     public SimOptions withMissionCapacity(int items) {
         return new SimOptions(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, items,
-                diveSilenceMetres);
+                diveSilenceMetres, ftp);
     }
 
     /** Subs deeper than {@code metres} below the surface are cut off. */
     public SimOptions withDiveSilence(double metres) {
         return new SimOptions(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity,
-                metres);
+                metres, ftp);
+    }
+
+    /** Vehicles without MAVLink FTP: FILE_TRANSFER_PROTOCOL unanswered, no FTP bit in AUTOPILOT_VERSION. */
+    public SimOptions withoutFtp() {
+        return new SimOptions(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity,
+                diveSilenceMetres, false);
     }
 }

@@ -8,6 +8,7 @@ import com.MAVLink.common.msg_gimbal_manager_information;
 import com.MAVLink.common.msg_command_ack;
 import com.MAVLink.common.msg_command_long;
 import com.MAVLink.common.msg_extended_sys_state;
+import com.MAVLink.common.msg_file_transfer_protocol;
 import com.MAVLink.common.msg_home_position;
 import com.MAVLink.common.msg_mission_current;
 import com.MAVLink.common.msg_mission_set_current;
@@ -22,6 +23,7 @@ import com.MAVLink.enums.MAV_RESULT;
 import com.MAVLink.enums.MAV_SEVERITY;
 import com.MAVLink.enums.MAV_SYS_STATUS_SENSOR;
 import com.MAVLink.minimal.msg_heartbeat;
+import com.MAVLink.standard.msg_autopilot_version;
 import com.MAVLink.standard.msg_global_position_int;
 import dolphin.core.Position;
 import dolphin.mission.model.Fence;
@@ -78,6 +80,7 @@ public final class SimVehicle {
     private final MissionLists lists;
     private final FenceGuard fenceGuard = new FenceGuard();
     private final MissionFlight flight;
+    private final SimFtpServer ftp;
 
     SimVehicle(int sysid, VehicleKind kind, Position home, SimOptions options, long now) {
         this(sysid, kind, home, options, now, SimEquipment.NONE);
@@ -99,7 +102,9 @@ public final class SimVehicle {
         this.nextHeartbeat = now;
         this.lastTick = now;
         this.missionStore = new MissionStore(() -> this.home, options.missionCapacity());
-        this.lists = new MissionLists(missionStore, options.missionCapacity(), new TransferHost());
+        TransferHost host = new TransferHost();
+        this.lists = new MissionLists(missionStore, options.missionCapacity(), host);
+        this.ftp = new SimFtpServer(new MissionFiles(lists::store, new MissionFileLoader(lists::store, host)), this::send);
         this.flight = new MissionFlight(firmware, missionStore, new FlightBody());
         if (firmware.defaultStreamHz() > 0) {
             for (int id : STREAMABLE) {
@@ -223,6 +228,7 @@ public final class SimVehicle {
             battery = Math.max(0, battery - options.drainPercentPerMinute() * dt / 60);
         }
         lists.tick(now);
+        ftp.tick(now);
         flight.tick(dt);
         watchFence(now);
         if (firmware.needsPositionToArm()) {
@@ -298,6 +304,11 @@ public final class SimVehicle {
             setModeIfValid(s.custom_mode);
         } else if (m instanceof msg_request_data_stream r && r.target_system == sysid) {
             requestDataStream(r, now);
+        } else if (m instanceof msg_file_transfer_protocol f && f.target_system == sysid) {
+            // a vehicle without FTP does not answer at all, as firmware built without it
+            if (options.ftp()) {
+                ftp.handle(f, now);
+            }
         } else if (lists.handle(m, sysid, now)) {
             // a mission, fence or rally transfer
         } else if (m instanceof msg_mission_set_current s && s.target_system == sysid) {
@@ -325,6 +336,14 @@ public final class SimVehicle {
             }
             case MAV_CMD.MAV_CMD_SET_MESSAGE_INTERVAL -> setInterval((int) c.param1, c.param2, now);
             case MAV_CMD.MAV_CMD_REQUEST_MESSAGE -> requestMessage((int) c.param1, now);
+            case MAV_CMD.MAV_CMD_REQUEST_AUTOPILOT_CAPABILITIES -> {
+                // GCS_MAVLINK::handle_command_request_autopilot_capabilities: p1 must be 1
+                if (c.param1 != 1) {
+                    yield MAV_RESULT.MAV_RESULT_FAILED;
+                }
+                outbox.requested(SimAutopilotVersion.message(kind, options.ftp()));
+                yield MAV_RESULT.MAV_RESULT_ACCEPTED;
+            }
             case MAV_CMD.MAV_CMD_GET_HOME_POSITION -> {
                 if (!estimate.ready(lastTick)) {
                     yield MAV_RESULT.MAV_RESULT_FAILED; // no home yet
@@ -359,6 +378,10 @@ public final class SimVehicle {
             return MAV_RESULT.MAV_RESULT_ACCEPTED;
         }
         if (msgid == msg_gimbal_manager_information.MAVLINK_MSG_ID_GIMBAL_MANAGER_INFORMATION) {
+            return MAV_RESULT.MAV_RESULT_ACCEPTED;
+        }
+        if (msgid == msg_autopilot_version.MAVLINK_MSG_ID_AUTOPILOT_VERSION) {
+            outbox.requested(SimAutopilotVersion.message(kind, options.ftp()));
             return MAV_RESULT.MAV_RESULT_ACCEPTED;
         }
         if (!STREAMABLE.contains(msgid)) {

@@ -86,6 +86,15 @@ release v
         defaults.kind() == VehicleKind.SUB
         defaults.home() == SimFleet.Config.DEFAULT_HOME
         defaults.options().diveSilenceMetres() == Double.POSITIVE_INFINITY
+        defaults.options().ftp()
+    }
+
+    def "--sim-no-ftp makes the in-process fleet's vehicles without MAVLink FTP"() {
+        given:
+        def command = parsed(EXAMPLE, '--sim', '1', '--sim-no-ftp')
+
+        expect:
+        !command.fleetConfig([new InetSocketAddress('127.0.0.1', 14560)], command.faultModel()).options().ftp()
     }
 
     def "the example runs over a lossy simulated link"() {
@@ -260,6 +269,7 @@ release v
         ['run', EXAMPLE, '--sim', '1', '--sim-type', 'hovercraft'] | "unknown vehicle type 'hovercraft': expected copter, plane, rover, boat or sub"
         ['run', EXAMPLE, '--sim-home', '38.43462,-8.86118']        | '--sim-home needs --sim: it sets up the simulated fleet'
         ['run', EXAMPLE, '--sim-dive-silence', '5']                | '--sim-dive-silence needs --sim'
+        ['run', EXAMPLE, '--sim-no-ftp']                           | '--sim-no-ftp needs --sim: it sets up the simulated fleet'
         ['run', EXAMPLE, '--sim', '1', '--sim-home', '38.43462']   | "home '38.43462': expected LAT,LON[,ALT], e.g. 38.43462,-8.86118"
         ['run', EXAMPLE, '--sim', '1', '--sim-home', '38.4,-8.8,deep'] | "home '38.4,-8.8,deep': expected LAT,LON[,ALT]"
         ['run', EXAMPLE, '--sim', '1', '--sim-home', '38.4,-188']  | "home '38.4,-188': latitude must be in [-90, 90], longitude in [-180, 180]"

@@ -44,6 +44,12 @@ class SimCommandSpec extends Specification {
         parsed('--home', '40.444233,-7.375234,820').fleetConfig().home() == Position.fromDegrees(40.444233, -7.375234, 820)
     }
 
+    def "--no-ftp makes vehicles without MAVLink FTP; by default they have it"() {
+        expect:
+        !parsed('--no-ftp').fleetConfig().options().ftp()
+        parsed().fleetConfig().options().ftp()
+    }
+
     def "a bad link-fault value is a usage error naming the option and the value"() {
         given:
         def out = new StringWriter()

@@ -1,5 +1,6 @@
 package dolphin.sim
 
+import com.MAVLink.common.msg_file_transfer_protocol
 import com.MAVLink.common.msg_mission_ack
 import com.MAVLink.common.msg_mission_clear_all
 import com.MAVLink.common.msg_mission_count
@@ -16,6 +17,8 @@ import com.MAVLink.enums.MAV_MODE_FLAG
 import com.MAVLink.enums.MAV_RESULT
 import dolphin.core.Position
 import dolphin.mission.model.MissionItem
+import dolphin.mission.model.MissionType
+import dolphin.mission.transfer.MissionFtpFile
 import spock.lang.AutoCleanup
 import spock.lang.Specification
 
@@ -138,28 +141,41 @@ class MissionProtocolSpec extends Specification {
         gcs.vehicle().mission().size() == 3
     }
 
-    def "8 s without an item cancels the upload, after re-requests every second; COUNT has already truncated"() {
-        given: 'a stored mission of six items'
-        assert gcs.upload(plan()) == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
+    def "an unanswered upload is cancelled over the link: OPERATION_CANCELLED and the text reach the sender (timing: MissionItemProtocolSpec)"() {
+        given:
         int from = gcs.mark()
-        long sent = gcs.clock.nanoTime()
 
         when:
         gcs.send(new msg_mission_count(target_system: 1, target_component: 1, count: 3))
-        gcs.await(from, msg_mission_request)
-        def truncated = gcs.vehicle().mission().size()
-        def ack = gcs.await(from, msg_mission_ack, 5)
-        long ackAt = gcs.received.find { it.message.is(ack) }.at
+        def ack = gcs.await(from, msg_mission_ack, 10)
 
         then:
-        truncated == 3
         ack.type == MAV_MISSION_RESULT.MAV_MISSION_OPERATION_CANCELLED
-        (ackAt - sent) / 1e9 >= 7.9
-        (ackAt - sent) / 1e9 < 10.5 // 20x: 2.5 s of clock is 125 ms of real time for ticks and delivery
-        gcs.since(from, msg_mission_request).size() in 8..10
+        ack.target_system == 255
         gcs.since(from, msg_mission_request).every { it.seq == 0 }
         gcs.await(from, msg_statustext) { it.text == 'Mission upload timeout' }
         !gcs.vehicle().missionUploading()
+    }
+
+    def "a mission written over MAVLink FTP by a bare client is stored, with no item protocol on the link"() {
+        given:
+        def items = plan()
+        byte[] file = MissionFtpFile.encode(MissionType.MISSION, items)
+        int from = gcs.mark()
+
+        when: 'CreateFile, one WriteFile (the whole file is 238 bytes), TerminateSession'
+        def replies = [[0, SimFtpPacket.CREATE_FILE, [data: MissionFtpFile.path(MissionType.MISSION)]],
+                       [2, SimFtpPacket.WRITE_FILE, [data: file]],
+                       [4, SimFtpPacket.TERMINATE_SESSION, [:]]].collect { int seq, int opcode, Map fields ->
+            int mark = gcs.mark()
+            gcs.send(SimFtpServerSpec.ftpRequest(seq, opcode, fields))
+            SimFtpPacket.of(gcs.await(mark, msg_file_transfer_protocol) { SimFtpPacket.of(it).seq() == seq + 1 })
+        }
+
+        then:
+        replies*.opcode() == [SimFtpPacket.ACK] * 3
+        gcs.vehicle().mission().drop(1) == items.drop(1)
+        gcs.since(from, msg_mission_request).isEmpty()
     }
 
     def "item checks: #what is answered #expected and ends the upload"() {

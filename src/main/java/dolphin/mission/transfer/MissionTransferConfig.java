@@ -22,6 +22,10 @@ public record MissionTransferConfig(Duration timeout, int tries, LinkTimeouts ti
         this(timeout, tries, LinkTimeouts.DEFAULT, TransferPath.AUTO);
     }
 
+    public MissionTransferConfig(LinkTimeouts timeouts, TransferPath path) {
+        this(Duration.ofMillis(DEFAULT_TIMEOUT_MILLIS), DEFAULT_TRIES, timeouts, path);
+    }
+
     public MissionTransferConfig {
         if (timeout == null || timeout.isNegative() || timeout.isZero()) {
             throw new IllegalArgumentException("the mission transfer timeout must be positive, got " + timeout);

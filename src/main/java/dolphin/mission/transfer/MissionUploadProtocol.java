@@ -48,7 +48,7 @@ public final class MissionUploadProtocol {
     public CompletableFuture<TransferResult> upload(MissionType type, List<MissionItem> items, MissionTransferConfig config,
                                                     TransferProgress progress) {
         Upload u = new Upload(transfers.vehicle(), transfers.timers(), config, progress, type, List.copyOf(items));
-        transfers.submit(u);
+        transfers.submit(u, u.items);
         return u.result;
     }
 

@@ -1,0 +1,223 @@
+package dolphin.mavlink.ftp;
+
+import dolphin.mavlink.LinkTimeouts;
+import dolphin.mavlink.ProtocolTimers;
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * One session with the vehicle's FTP server, on the protocol's thread: its requests numbered,
+ * at most {@link #WINDOW} outstanding, each sent again on its own timeout (the link's RTO, backed
+ * off per timeout in a row), and matched with their replies by session, req_opcode and seq (a
+ * reply's seq is its request's plus one); a session that makes no progress for the give-up time
+ * fails. A request sent again keeps its seq, so ArduPilot repeats its remembered reply instead of
+ * doing it twice. Clean round trips (a reply to a request sent once) feed the link's
+ * {@link dolphin.mavlink.RoundTrip}.
+ */
+final class FtpSession {
+
+    /** Requests outstanding at most: ArduPilot queues 5 and drops the rest silently. */
+    static final int WINDOW = 4;
+    /** A burst answers with up to 2000 packets and an EOF NAK, numbered on from its seq. */
+    static final int BURST_REPLIES = 2001;
+
+    /** The operation the session serves; its answers, on the protocol's thread. */
+    interface Owner {
+
+        /** The reply (ACK or NAK) to one of its requests; for a burst, its first packet. */
+        void answered(FtpPayload request, FtpPayload reply);
+
+        /** A reply of this session that answers no outstanding request: a burst's further packets, a duplicate. */
+        void unmatched(FtpPayload reply);
+
+        void failed(FtpException e);
+    }
+
+    private static final class OutstandingRequest {
+        final FtpPayload request;
+        int sends;
+        long sentAt;
+
+        OutstandingRequest(FtpPayload request) {
+            this.request = request;
+        }
+    }
+
+    private final FtpChannel channel;
+    private final ProtocolTimers timers;
+    private final LinkTimeouts timeouts;
+    private final int id;
+    private final String path;
+    private final Runnable onEnd;
+    private final java.util.function.BooleanSupplier heard;
+    private final List<OutstandingRequest> pending = new ArrayList<>();
+    private Owner owner;
+    private int nextSeq;
+    private long lastProgress;
+    private int timeoutsInARow;
+    private int resends;
+    private boolean ended;
+
+    /**
+     * @param heard whether the vehicle ever answered over FTP, this session or an earlier one
+     * @param onEnd runs once the session has ended
+     */
+    FtpSession(FtpChannel channel, ProtocolTimers timers, LinkTimeouts timeouts, int id, String path,
+               java.util.function.BooleanSupplier heard, Runnable onEnd) {
+        this.channel = channel;
+        this.timers = timers;
+        this.timeouts = timeouts;
+        this.id = id;
+        this.path = path;
+        this.onEnd = onEnd;
+        this.heard = heard;
+        this.lastProgress = timers.nanoTime();
+    }
+
+    void serve(Owner o) {
+        owner = o;
+    }
+
+    int id() {
+        return id;
+    }
+
+    String path() {
+        return path;
+    }
+
+    LinkTimeouts timeouts() {
+        return timeouts;
+    }
+
+    dolphin.mavlink.RoundTrip roundTrip() {
+        return channel.roundTrip();
+    }
+
+    ProtocolTimers timers() {
+        return timers;
+    }
+
+    int resends() {
+        return resends;
+    }
+
+    boolean ended() {
+        return ended;
+    }
+
+    /** Requests that may still be sent now. */
+    int free() {
+        return ended ? 0 : WINDOW - pending.size();
+    }
+
+    /** Sends a request naming the session's file (OpenFileRO, CreateFile). */
+    FtpPayload sendPath(int opcode) {
+        byte[] name = path.getBytes(StandardCharsets.UTF_8);
+        return send(opcode, name.length, 0, name);
+    }
+
+    /** Sends a request; it is sent again on its timeout until answered. */
+    FtpPayload send(int opcode, int size, long offset, byte[] data) {
+        FtpPayload request = FtpPayload.request(nextSeq, id, opcode, size, offset, data);
+        // the replies to a burst are numbered on from its seq: a later request must not look like
+        // a repeat of the one ArduPilot answered last, or it gets that reply again
+        nextSeq = (nextSeq + (opcode == FtpPayload.BURST_READ_FILE ? BURST_REPLIES + 1 : 1)) & 0xffff;
+        OutstandingRequest p = new OutstandingRequest(request);
+        pending.add(p);
+        transmit(p);
+        return request;
+    }
+
+    private void transmit(OutstandingRequest p) {
+        p.sends++;
+        p.sentAt = timers.nanoTime();
+        int sends = p.sends;
+        channel.send(p.request.toMessage(channel.system(), channel.component()));
+        timers.schedule(timeouts.timeout(channel.roundTrip(), timeoutsInARow), () -> {
+            if (!ended && p.sends == sends && pending.contains(p)) {
+                timedOut(p);
+            }
+        });
+    }
+
+    private void timedOut(OutstandingRequest p) {
+        timeoutsInARow++;
+        if (timers.nanoTime() - lastProgress >= timeouts.giveUp().toNanos()) {
+            fail(FtpException.noAnswer(path, p.request, p.sends, timeouts.giveUp(), heard.getAsBoolean()));
+            return;
+        }
+        resends++;
+        transmit(p);
+    }
+
+    /** Something new came from the vehicle: timeouts start over. */
+    void progressed() {
+        lastProgress = timers.nanoTime();
+        timeoutsInARow = 0;
+    }
+
+    /** A reply whose session is this one. */
+    void handle(FtpPayload reply) {
+        if (ended || owner == null) {
+            return;
+        }
+        OutstandingRequest p = match(reply);
+        if (p == null) {
+            owner.unmatched(reply);
+            return;
+        }
+        pending.remove(p);
+        if (p.sends == 1 && ((reply.seq() - p.request.seq()) & 0xffff) == 1) {
+            channel.roundTrip().sample(timers.nanoTime() - p.sentAt);
+        }
+        progressed();
+        owner.answered(p.request, reply);
+    }
+
+    private OutstandingRequest match(FtpPayload reply) {
+        for (OutstandingRequest p : pending) {
+            FtpPayload q = p.request;
+            if (reply.reqOpcode() != q.opcode()) {
+                continue;
+            }
+            int d = (reply.seq() - q.seq()) & 0xffff;
+            if (q.opcode() == FtpPayload.BURST_READ_FILE ? d >= 1 && d <= BURST_REPLIES
+                    : d == 1 && (reply.opcode() != FtpPayload.ACK || !carriesOffset(q) || reply.offset() == q.offset())) {
+                return p;
+            }
+        }
+        return null;
+    }
+
+    private static boolean carriesOffset(FtpPayload request) {
+        return request.opcode() == FtpPayload.READ_FILE || request.opcode() == FtpPayload.WRITE_FILE;
+    }
+
+    /** Ends the session without closing anything (the file was closed by an answered TerminateSession). */
+    void finish() {
+        if (!ended) {
+            ended = true;
+            pending.clear();
+            onEnd.run();
+        }
+    }
+
+    /** Ends the session, closing its file: one TerminateSession, not waited for (ArduPilot closes idle sessions itself). */
+    void close() {
+        if (!ended) {
+            channel.send(FtpPayload.request(nextSeq, id, FtpPayload.TERMINATE_SESSION, 0, 0, null)
+                    .toMessage(channel.system(), channel.component()));
+            finish();
+        }
+    }
+
+    /** Closes the session and tells its owner why. */
+    void fail(FtpException e) {
+        if (!ended) {
+            close();
+            owner.failed(e);
+        }
+    }
+}

@@ -1,0 +1,258 @@
+package dolphin.mavlink.ftp
+
+import dolphin.core.ManualClock
+import dolphin.mavlink.LinkTimeouts
+import dolphin.mission.transfer.ClockTimers
+import java.nio.ByteBuffer
+import java.nio.ByteOrder
+import java.time.Duration
+import java.util.concurrent.CompletableFuture
+import java.util.concurrent.CompletionException
+import spock.lang.Specification
+import spock.lang.Unroll
+
+/**
+ * The MAVLink FTP client (FtpClient, FtpSession, FtpRead, FtpWrite) against a FakeFtpServer that
+ * answers as ArduPilot does, on a manual clock: no socket, no thread, no real time.
+ */
+class FtpClientSpec extends Specification {
+
+    static final String MISSION = '@MISSION/mission.dat'
+
+    ManualClock clock = new ManualClock()
+    FtpLink link = new FtpLink(clock, { FtpChannel c -> new FtpClient(c, new ClockTimers(clock)) })
+    FakeFtpServer server = link.server
+    FtpClient client = link.client
+    LinkTimeouts timeouts = LinkTimeouts.DEFAULT
+    List<List<Long>> progress = []
+
+    static byte[] bytes(int n, int seed = 7) {
+        byte[] b = new byte[n]
+        new Random(seed).nextBytes(b)
+        b
+    }
+
+    /** An @MISSION file of {@code count} items: a header, then items of non-zero bytes. */
+    static byte[] missionFile(int count) {
+        ByteBuffer b = ByteBuffer.allocate(10 + 38 * count).order(ByteOrder.LITTLE_ENDIAN)
+        b.putShort((short) 0x763d).putShort((short) 0).putShort((short) 0).putShort((short) 0).putShort((short) count)
+        count.times { i -> 38.times { k -> b.put((byte) (1 + (i + k) % 200)) } }
+        b.array()
+    }
+
+    /** The whole length of an @MISSION file from its first bytes, as MissionFtpFile.length says it. */
+    static int missionLength(byte[] head) {
+        head.length < 10 ? -1 : 10 + 38 * (ByteBuffer.wrap(head).order(ByteOrder.LITTLE_ENDIAN).getShort(8) & 0xffff)
+    }
+
+    def <T> T settle(CompletableFuture<T> f, Duration max = Duration.ofSeconds(60)) {
+        long until = clock.nanoTime() + max.toNanos()
+        while (!f.isDone() && clock.nanoTime() < until) {
+            clock.advance(Duration.ofMillis(10))
+        }
+        assert f.isDone()
+        f.join()
+    }
+
+    Throwable failure(CompletableFuture<?> f, Duration max = Duration.ofSeconds(60)) {
+        try {
+            settle(f, max)
+        } catch (CompletionException e) {
+            return e.cause
+        }
+        throw new AssertionError('the transfer succeeded')
+    }
+
+    FtpProgress recorder() {
+        { long done, long total, int resends -> progress << [done, total, (long) resends] } as FtpProgress
+    }
+
+    def "a file is read in one burst: OpenFileRO, BurstReadFile, the short last packet, TerminateSession"() {
+        given:
+        byte[] file = bytes(1000)
+        server.files['/logs/a.bin'] = file
+
+        when:
+        FtpFile f = settle(client.read('/logs/a.bin', null, timeouts, recorder()))
+        clock.advance(Duration.ofSeconds(1))
+
+        then:
+        f.bytes() == file
+        f.resends() == 0
+        server.requests == [OpenFileRO: 1, BurstReadFile: 1, TerminateSession: 1]
+        progress.last() == [1000L, 1000L, 0L]
+        progress*.get(0) == [239L, 478L, 717L, 956L, 1000L]
+    }
+
+    def "the packets a burst lost are read with ReadFile, at most 4 outstanding"() {
+        given:
+        byte[] file = bytes(3000)
+        server.files['/a'] = file
+        server.dropReply = { FtpPayload p, int n -> p.reqOpcode() == FtpPayload.BURST_READ_FILE && p.offset() in [239L, 717L, 956L, 1195L, 1434L, 1673L] }
+
+        when:
+        FtpFile f = settle(client.read('/a', null, timeouts, null))
+
+        then:
+        f.bytes() == file
+        server.requests.ReadFile == 6
+        server.mostQueued <= FtpSession.WINDOW
+        server.dropped == 0
+    }
+
+    def "a file whose length is a multiple of 239 ends at the burst's EOF NAK, with no ReadFile"() {
+        given:
+        server.files['/a'] = bytes(239 * 3)
+
+        when:
+        FtpFile f = settle(client.read('/a', null, timeouts, null))
+
+        then:
+        f.bytes().length == 239 * 3
+        server.requests.ReadFile == 0
+    }
+
+    def "an @MISSION file ends at the length its header gives, not at its fake 1 MiB, even when the burst's end is lost"() {
+        given:
+        byte[] file = missionFile(20)     // 770 bytes
+        server.files[MISSION] = file
+        server.dropReply = { FtpPayload p, int n -> p.reqOpcode() == FtpPayload.BURST_READ_FILE && p.offset() >= 717 || p.opcode() == FtpPayload.NAK }
+
+        when:
+        FtpFile f = settle(client.read(MISSION, FtpClientSpec.&missionLength, timeouts, recorder()))
+
+        then:
+        f.bytes() == file
+        server.requests.ReadFile == 1      // the lost last packet only, never beyond the end
+        progress.last() == [770L, 770L, 0L]
+    }
+
+    def "lost writes and lost WriteFile ACKs are sent again on their timeouts; TerminateSession closes the file"() {
+        given:
+        byte[] file = bytes(2000)
+        server.dropRequest = { FtpPayload p, int n -> p.opcode() == FtpPayload.WRITE_FILE && p.offset() == 478 && n < 3 }
+        server.dropReply = { FtpPayload p, int n -> p.reqOpcode() == FtpPayload.WRITE_FILE && p.offset() == 956 && n < 6 }
+
+        when:
+        FtpFile f = settle(client.write('/b', file, timeouts, recorder()))
+
+        then:
+        server.files['/b'] == file
+        f.resends() == 2
+        server.requests.WriteFile == 9 + 1     // 9 blocks, one sent again after its ACK was lost
+        server.requests.TerminateSession == 1
+        server.mostQueued <= FtpSession.WINDOW
+        progress.last() == [2000L, 2000L, 2L]
+    }
+
+    def "a missing file: the NAK names the file, the operation and the error"() {
+        when:
+        Throwable e = failure(client.read('/nothing.txt', null, timeouts, null))
+
+        then:
+        e instanceof FtpException
+        e.message == 'the vehicle refused /nothing.txt when opening it for reading: FileNotFound'
+        ((FtpException) e).answered()
+        ((FtpException) e).error() == 10
+    }
+
+    def "an @MISSION file with an item never written is refused when closed: FailErrno, errno 22 (EINVAL)"() {
+        given: 'item 3 all zeros, as if its write never arrived'
+        byte[] file = missionFile(10)
+        file[10 + 38 * 3..<10 + 38 * 4].eachWithIndex { b, i -> file[10 + 38 * 3 + i] = 0 }
+
+        when:
+        Throwable e = failure(client.write(MISSION, file, timeouts, null))
+
+        then:
+        e.message == "the vehicle refused $MISSION when closing it: FailErrno, errno 22 (EINVAL)"
+        ((FtpException) e).refusedAtClose()
+        ((FtpException) e).errno() == 22
+        !server.files.containsKey(MISSION)
+    }
+
+    def "no session free (ours left open by lost TerminateSessions): ResetSessions, then the file is opened again"() {
+        given:
+        server.files['/a'] = bytes(300)
+        (20..24).each { server.sessions[it] = [path: '/a', mode: 'read'] }
+
+        when:
+        FtpFile f = settle(client.read('/a', null, timeouts, null))
+
+        then:
+        f.bytes().length == 300
+        server.requests.ResetSessions == 1
+        server.requests.OpenFileRO == 2
+    }
+
+    def "a vehicle without FTP: no answer, the read gives up after 10 s without progress, backing off"() {
+        given:
+        server.silent = true
+        def f = client.read(MISSION, null, timeouts, null)
+        double end = -1
+        f.whenComplete { r, e -> end = clock.seconds() }
+
+        when:
+        Throwable e = failure(f)
+
+        then:
+        e.message == "no MAVLink FTP answer from the vehicle when opening it for reading ($MISSION, OpenFileRO sent 7 times, nothing new for 10 s)"
+        !((FtpException) e).answered()
+        end == 10.5
+        server.log.findAll { it.contains('OpenFileRO') }.collect { it.split(' ')[0] } ==
+                ['0.000', '1.500', '3.000', '4.500', '6.000', '7.500', '9.000']
+        server.log.last().contains('TerminateSession')
+    }
+
+    def "clean replies feed the round trip (Karn): a request sent again gives no sample"() {
+        given:
+        server.files['/a'] = bytes(100)
+        server.dropReply = { FtpPayload p, int n -> p.reqOpcode() == FtpPayload.OPEN_FILE_RO && n == 0 }
+
+        when:
+        settle(client.read('/a', null, timeouts, null))
+
+        then: 'only the burst was answered after one send: 20 ms each way and 1 ms of service'
+        link.roundTrip.samples() == 1
+        link.roundTrip.smoothedNanos() == 41_000_000
+    }
+
+    def "after a sample the resends follow the round trip, not the 1.5 s default"() {
+        given:
+        server.files['/a'] = bytes(100)
+        settle(client.read('/a', null, timeouts, null))
+        server.dropRequest = { FtpPayload p, int n -> p.opcode() == FtpPayload.WRITE_FILE && n == 0 }
+
+        when:
+        settle(client.write('/b', bytes(100), timeouts, null))
+
+        then: 'three clean 41 ms samples (OpenFileRO, the burst, CreateFile): RTO = 41 ms + 4 x 20.5 x (3/4)^2 ms'
+        def writes = server.log.findAll { it.contains('> WriteFile') }.collect { it.split(' ')[0] as double }
+        writes.size() == 2
+        Math.abs(writes[1] - writes[0] - 0.087) < 0.001
+    }
+
+    @Unroll
+    def "lossy, duplicating, reordering link (seed #seed): a 5000-byte file is written and read back whole"() {
+        given:
+        server.random = new Random(seed)
+        server.lossUp = 0.2
+        server.lossDown = 0.2
+        server.duplicate = 0.1
+        server.jitter = Duration.ofMillis(40)
+        byte[] file = bytes(5000, seed)
+
+        when:
+        FtpFile w = settle(client.write('/c', file, timeouts, null))
+        FtpFile r = settle(client.read('/c', null, timeouts, null))
+
+        then:
+        server.files['/c'] == file
+        r.bytes() == file
+        w.resends() > 0
+        server.dropped == 0
+
+        where:
+        seed << [1, 2, 3, 4, 5]
+    }
+}

@@ -1,0 +1,284 @@
+package dolphin.mission.transfer
+
+import com.MAVLink.Messages.MAVLinkMessage
+import com.MAVLink.common.msg_file_transfer_protocol
+import com.MAVLink.enums.MAV_MISSION_RESULT
+import dolphin.core.ManualClock
+import dolphin.mavlink.LinkTimeouts
+import dolphin.mavlink.ftp.FakeFtpServer
+import dolphin.mission.model.MissionItem
+import dolphin.mission.model.MissionType
+import java.nio.ByteBuffer
+import java.nio.ByteOrder
+import java.time.Duration
+import java.util.concurrent.CompletableFuture
+import spock.lang.Specification
+import spock.lang.Unroll
+
+import static dolphin.mission.transfer.MissionTransferSpec.fence
+import static dolphin.mission.transfer.MissionTransferSpec.intended
+
+/**
+ * Mission transfers over MAVLink FTP and the choice of path (MissionTransfers, FtpMissionUpload,
+ * FtpMissionDownload) on a manual clock, with no socket: the vehicle is a ScriptedMissionVehicle
+ * for the mission protocol and a FakeFtpServer for FTP on the same RecordingChannel.
+ */
+class FtpMissionTransferSpec extends Specification {
+
+    static final String MISSION = '@MISSION/mission.dat'
+    static final String REFUSED = "upload to vehicle 2 failed: over FTP: the vehicle refused $MISSION when closing it:" +
+            ' FailErrno, errno 22 (EINVAL): ArduPilot could not read a complete list from it'
+
+    ManualClock clock = new ManualClock()
+    RecordingChannel channel = new RecordingChannel(clock)
+    ScriptedMissionVehicle vehicle = new ScriptedMissionVehicle(clock, channel)
+    FakeFtpServer server = new FakeFtpServer(clock, { MAVLinkMessage m -> channel.receive(m) })
+    MissionTransfers transfers = new MissionTransfers(channel, new ClockTimers(clock), { MissionTransferConfig.DEFAULT })
+    List<TransferStatus> statuses = []
+
+    def setup() {
+        channel.transfers = transfers
+        Closure items = channel.receiver
+        channel.receiver = { MAVLinkMessage m -> m instanceof msg_file_transfer_protocol ? server.receive(m) : items(m) }
+        channel.offersFtp = Optional.of(true)
+    }
+
+    static MissionTransferConfig on(TransferPath path) {
+        new MissionTransferConfig(LinkTimeouts.DEFAULT, path)
+    }
+
+    TransferResult settle(CompletableFuture<TransferResult> f) {
+        for (int i = 0; i < 6000 && !f.isDone(); i++) {
+            clock.advance(Duration.ofMillis(10))
+        }
+        assert f.isDone()
+        f.join()
+    }
+
+    CompletableFuture<TransferResult> upload(TransferPath path, MissionType type = MissionType.MISSION, List<MissionItem> items = intended()) {
+        transfers.upload().upload(type, items, on(path), { TransferStatus s -> statuses << s })
+    }
+
+    int ftpMessages() {
+        channel.sent.count { it.message instanceof msg_file_transfer_protocol }
+    }
+
+    int missionMessages() {
+        channel.sent.count { !(it.message instanceof msg_file_transfer_protocol) }
+    }
+
+    def "FILE_TRANSFER_PROTOCOL is one of the messages the mission layer routes to the transfers"() {
+        expect:
+        MissionTransfers.MESSAGES.contains(msg_file_transfer_protocol)
+    }
+
+    def "AUTO, the vehicle offers FTP: the mission is written as one file, read back and found equal"() {
+        when:
+        TransferResult r = settle(upload(TransferPath.AUTO))
+
+        then:
+        r.success()
+        r.verified()
+        r.note() == 'over FTP'
+        r.items() == intended()
+        MissionFtpFile.decode(server.files[MISSION]).items() == intended()
+        missionMessages() == 0
+        server.requests.CreateFile == 1
+        server.requests.BurstReadFile == 1
+        statuses.every { it.path() == TransferPath.FTP && it.upload() && it.unit() == 'bytes' }
+        statuses.last().done() == 2 * (10 + 5 * 38)
+        statuses.last().total() == 2 * (10 + 5 * 38)
+        statuses.last().text() == 'uploading over FTP: 400 of 400 bytes'
+    }
+
+    def "a fence goes to fence.dat"() {
+        when:
+        TransferResult r = settle(upload(TransferPath.FTP, MissionType.FENCE, fence()))
+
+        then:
+        r.verified()
+        MissionFtpFile.decode(server.files['@MISSION/fence.dat']).type() == MissionType.FENCE
+    }
+
+    def "a download over FTP reads the file to the length its header gives"() {
+        given:
+        server.files[MISSION] = MissionFtpFile.encode(MissionType.MISSION, intended())
+
+        when:
+        TransferResult r = settle(transfers.download().download(MissionType.MISSION, on(TransferPath.AUTO),
+                { TransferStatus s -> statuses << s }))
+
+        then:
+        r.success()
+        r.note() == 'over FTP'
+        r.items() == intended()
+        statuses.last().text() == 'downloading over FTP: 200 of 200 bytes'
+        missionMessages() == 0
+    }
+
+    def "the list refused when the file is closed: AUTO uploads it item by item instead"() {
+        given:
+        server.refuseList = { String path, byte[] b -> true }
+
+        when:
+        TransferResult r = settle(upload(TransferPath.AUTO))
+
+        then:
+        r.success()
+        !r.verified()
+        vehicle.stored == intended()
+        statuses*.path().unique() == [TransferPath.FTP, TransferPath.ITEMS]
+    }
+
+    def "the list refused over FTP, then item by item: the error names the refused item"() {
+        given:
+        server.refuseList = { String path, byte[] b -> true }
+        vehicle.faults = ['errorAck'] as Set
+        vehicle.faultSeq = 2
+        vehicle.errorAck = MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM7
+
+        when:
+        TransferResult r = settle(upload(TransferPath.AUTO))
+
+        then:
+        !r.success()
+        r.error().startsWith('upload to vehicle 2 failed: item 2 (NAV_WAYPOINT): MAV_MISSION_INVALID_PARAM7')
+    }
+
+    def "FTP forced: the refused file fails the upload with the vehicle's verdict"() {
+        given:
+        server.refuseList = { String path, byte[] b -> true }
+
+        when:
+        TransferResult r = settle(upload(TransferPath.FTP))
+
+        then:
+        !r.success()
+        r.error() == REFUSED
+        missionMessages() == 0
+    }
+
+    def "a list the vehicle kept otherwise than sent: the read-back finds it; AUTO falls back, FTP fails"() {
+        given: 'the vehicle keeps item 2 at 25 m'
+        server.keep = { String path, byte[] b ->
+            byte[] k = b.clone()
+            ByteBuffer.wrap(k).order(ByteOrder.LITTLE_ENDIAN).putFloat(10 + 2 * 38 + 24, 25f)
+            k
+        }
+
+        when:
+        TransferResult auto = settle(upload(TransferPath.AUTO))
+        TransferResult forced = settle(upload(TransferPath.FTP))
+
+        then:
+        auto.success()
+        !auto.verified()
+        vehicle.stored == intended()
+        !forced.success()
+        forced.error() == "upload to vehicle 2 failed: over FTP: $MISSION read back differs from what was sent:" +
+                ' item 2 (NAV_WAYPOINT): z sent 102.0, vehicle has 25.0'
+    }
+
+    def "a vehicle that says FTP but never answers it: AUTO falls back after 10 s and later goes straight to items"() {
+        given:
+        server.silent = true
+
+        when:
+        TransferResult first = settle(upload(TransferPath.AUTO))
+        int asked = ftpMessages()
+        TransferResult second = settle(upload(TransferPath.AUTO))
+
+        then:
+        first.success()
+        second.success()
+        asked > 0
+        ftpMessages() == asked
+        vehicle.stored == intended()
+    }
+
+    def "FTP that answered and then fell silent (the read-back lost): AUTO falls back, but the next upload tries FTP again"() {
+        given:
+        server.dropRequest = { p, int n -> p.opcode() == 4 }     // every OpenFileRO
+
+        when:
+        TransferResult first = settle(upload(TransferPath.AUTO))
+        int asked = ftpMessages()
+        server.dropRequest = { p, int n -> false }
+        TransferResult second = settle(upload(TransferPath.AUTO))
+
+        then:
+        first.success()
+        !first.verified()
+        second.verified()
+        ftpMessages() > asked
+    }
+
+    def "FTP forced on a vehicle that never answers it: a clear error after 10 s"() {
+        given:
+        server.silent = true
+
+        when:
+        TransferResult r = settle(upload(TransferPath.FTP))
+
+        then:
+        !r.success()
+        r.error() == "upload to vehicle 2 failed: over FTP: no MAVLink FTP answer from the vehicle when creating it ($MISSION," +
+                ' CreateFile sent 7 times, nothing new for 10 s)'
+        missionMessages() == 0
+    }
+
+    @Unroll
+    def "the vehicle's FTP capability #offers: AUTO goes #how; FTP forced #forced"() {
+        given:
+        channel.offersFtp = offers
+
+        when:
+        TransferResult auto = settle(upload(TransferPath.AUTO))
+        int ftpByAuto = ftpMessages()
+        TransferResult ftp = settle(upload(TransferPath.FTP))
+
+        then:
+        auto.success()
+        (ftpByAuto > 0) == (how == 'over FTP')
+        ftp.success() == (forced == 'succeeds')
+        ftp.success() || ftp.error() == 'upload to vehicle 2 failed: the vehicle does not offer MAVLink FTP' +
+                ' (no MAV_PROTOCOL_CAPABILITY_FTP in its AUTOPILOT_VERSION): transfer it item by item'
+
+        where:
+        offers              | how            | forced
+        Optional.of(true)   | 'over FTP'     | 'succeeds'
+        Optional.of(false)  | 'item by item' | 'fails at once'
+        Optional.empty()    | 'item by item' | 'succeeds'
+    }
+
+    def "ITEMS never uses FTP"() {
+        when:
+        TransferResult r = settle(upload(TransferPath.ITEMS))
+
+        then:
+        r.success()
+        ftpMessages() == 0
+        vehicle.stored == intended()
+    }
+
+    @Unroll
+    def "a lossy, duplicating, reordering link (seed #seed): the FTP upload is verified"() {
+        given:
+        server.random = new Random(seed)
+        server.lossUp = 0.15
+        server.lossDown = 0.15
+        server.duplicate = 0.1
+        server.jitter = Duration.ofMillis(30)
+        List<MissionItem> items = intended()
+
+        when:
+        TransferResult r = settle(upload(TransferPath.FTP))
+
+        then:
+        r.verified()
+        MissionFtpFile.decode(server.files[MISSION]).items() == items
+
+        where:
+        seed << [11, 12, 13]
+    }
+}
