@@ -1,7 +1,6 @@
 package dolphin.bench;
 
 import dolphin.core.SystemClock;
-import dolphin.mavlink.LinkTimeouts;
 import dolphin.mavlink.MAVLinkCommunications;
 import dolphin.mavlink.MAVLinkConfig;
 import dolphin.mavlink.MAVLinkNode;
@@ -143,8 +142,7 @@ public final class LossyUploadBench {
 
     /** The one place this benchmark's transfer configs are made: the defaults, with the path forced. */
     static MissionTransferConfig config(TransferPath path) {
-        MissionTransferConfig d = MissionTransferConfig.DEFAULT;
-        return new MissionTransferConfig(d.timeout(), d.tries(), LinkTimeouts.DEFAULT, path);
+        return new MissionTransferConfig(MissionTransferConfig.DEFAULT.timeouts(), path);
     }
 
     /** The same seed for every uploader of a cell, a different one per cell. */
