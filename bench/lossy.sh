@@ -7,7 +7,8 @@
 #
 #   bench/lossy.sh [--no-build] [--quick] [--baseline REV | --baseline-jar JAR] [--rounds N] [--cell-seconds S] [--deadline S]
 #
-# --quick: 3 lossless rounds, at most 2 lossy rounds a cell, reference deadline 20 s (under 2 minutes).
+# --quick: 3 lossless rounds, lossy 10 and 100 items only, at most 2 rounds a cell, reference deadline 20 s
+#   (under 2 minutes).
 # --baseline REV: also builds the main project at git revision REV (once, in bench/target/baseline-REV)
 #   and compares its lossless uploads with this tree's, each in a JVM of its own (UploadServer);
 #   --baseline-jar JAR: the same with a jar already built (its runtime classpath in JAR's lib/).

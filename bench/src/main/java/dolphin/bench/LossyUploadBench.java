@@ -106,13 +106,15 @@ public final class LossyUploadBench {
      * @param deadline when a reference upload is stopped as not done
      * @param oursCap the same for ours: only a guard against a hung run (ours give up by themselves after their silence budget)
      */
-    record Options(boolean quick, String baselineJar, int rounds, double cellSeconds, double deadline, double oursCap, int reps, int warmup) {
+    record Options(boolean quick, String baselineJar, int rounds, double cellSeconds, double deadline, double oursCap, int reps, int warmup,
+                   List<Integer> lossySizes) {
         static Options parse(List<String> args) {
             boolean quick = args.contains("--quick");
             String baseline = value(args, "--baseline-jar", null);
             return new Options(quick, baseline, Integer.parseInt(value(args, "--rounds", quick ? "2" : "10")),
                     Double.parseDouble(value(args, "--cell-seconds", quick ? "30" : "420")),
-                    Double.parseDouble(value(args, "--deadline", quick ? "20" : "120")), quick ? 60 : 600, quick ? 3 : 41, quick ? 2 : 10);
+                    Double.parseDouble(value(args, "--deadline", quick ? "20" : "120")), quick ? 60 : 600, quick ? 3 : 41, quick ? 2 : 10,
+                    quick ? List.of(10, 100) : Arrays.stream(SIZES).boxed().toList());
         }
 
         private static String value(List<String> args, String name, String otherwise) {
@@ -237,7 +239,7 @@ public final class LossyUploadBench {
             if (loss == 0) {
                 continue;
             }
-            for (int n : SIZES) {
+            for (int n : options.lossySizes) {
                 FaultModel faults = FaultModel.loss(loss, seed(loss, n));
                 for (Way w : List.of(Way.ITEMS, Way.FTP)) {
                     SimFleet fleet = own(UploadBench.fleet(port, sysid, faults));
@@ -511,7 +513,7 @@ public final class LossyUploadBench {
         line("ours against the reference, same run (median time of ours / median time of the reference's uploads reported done)");
         line("%-5s %-5s  %12s %12s  %s", "loss", "items", "items/ref", "FTP/ref", "reference median");
         for (double loss : LOSSES) {
-            for (int n : SIZES) {
+            for (int n : measured(loss)) {
                 double ref = median(Way.REFERENCE, loss, n);
                 line("%4.0f%% %5d  %12s %12s  %s", loss * 100, n, ratio(Way.ITEMS, loss, n), ratio(Way.FTP, loss, n),
                         Double.isNaN(ref) ? String.format(Locale.ROOT, "none done in %.0f s", options.deadline) : ms(ref) + " ms");
@@ -539,7 +541,7 @@ public final class LossyUploadBench {
         }
         for (Way w : List.of(Way.ITEMS, Way.FTP)) {
             for (double loss : new double[] {0.05, 0.10}) {
-                for (int n : SIZES) {
+                for (int n : measured(loss)) {
                     line("target %-58s %s", String.format(Locale.ROOT, "%s, %.0f%% loss, %d items: <= %.2f x the reference", w.label,
                             loss * 100, n, TARGET_RATIO), ratioTarget(w, loss, n));
                 }
@@ -570,7 +572,7 @@ public final class LossyUploadBench {
         StringBuilder b = new StringBuilder("| loss | items | ours, item protocol | ours, FTP | reference (wp load) | items / ref | FTP / ref |\n"
                 + "|---:|---:|---:|---:|---:|---:|---:|\n");
         for (double loss : LOSSES) {
-            for (int n : SIZES) {
+            for (int n : measured(loss)) {
                 b.append(String.format(Locale.ROOT, "| %.0f %% | %d | %s | %s | %s | %s | %s |%n", loss * 100, n, cellText(Way.ITEMS, loss, n),
                         cellText(Way.FTP, loss, n), cellText(Way.REFERENCE, loss, n), ratio(Way.ITEMS, loss, n), ratio(Way.FTP, loss, n)));
             }
@@ -597,6 +599,11 @@ public final class LossyUploadBench {
             r[i] = a.samples.get(i).attempt.ms / b.samples.get(i).attempt.ms;
         }
         return UploadBench.median(r);
+    }
+
+    /** The sizes measured at this loss. */
+    private int[] measured(double loss) {
+        return Arrays.stream(SIZES).filter(n -> cells.containsKey(key(Way.REFERENCE, loss, n))).toArray();
     }
 
     private String ratioTarget(Way w, double loss, int n) {
