@@ -4,6 +4,7 @@ import dolphin.core.Position;
 import dolphin.mavlink.codec.SigningKey;
 import dolphin.mavlink.link.LinkUrl;
 import dolphin.mission.file.MissionFormat;
+import dolphin.mission.transfer.TransferPath;
 import dolphin.sensor.FleetFile;
 import dolphin.sim.VehicleKind;
 import dolphin.web.WebAddress;
@@ -61,6 +62,19 @@ final class Converters {
             } catch (IllegalArgumentException e) {
                 throw new TypeConversionException(e.getMessage());
             }
+        }
+    }
+
+    /** How mission transfers travel: auto, ftp or items. */
+    static final class TransferPathConverter implements ITypeConverter<TransferPath> {
+        @Override
+        public TransferPath convert(String value) {
+            for (TransferPath p : TransferPath.values()) {
+                if (p.label().equals(value)) {
+                    return p;
+                }
+            }
+            throw new TypeConversionException("'" + value + "' is not auto, ftp or items");
         }
     }
 

@@ -6,6 +6,7 @@ import dolphin.core.SystemClock;
 import dolphin.dsl.Engine;
 import dolphin.dsl.ScriptResult;
 import dolphin.mavlink.Forwarder;
+import dolphin.mavlink.LinkTimeouts;
 import dolphin.mavlink.MAVLinkCommunications;
 import dolphin.mavlink.MAVLinkConfig;
 import dolphin.platform.MAVLinkPlatform;
@@ -14,6 +15,7 @@ import dolphin.mavlink.link.LinkUrl;
 import dolphin.mission.flight.MissionExecutorConfig;
 import dolphin.mission.flight.MissionService;
 import dolphin.mission.transfer.MissionTransferConfig;
+import dolphin.mission.transfer.TransferPath;
 import dolphin.sensor.FleetFile;
 import dolphin.sensor.SensorService;
 import dolphin.sim.FaultModel;
@@ -116,15 +118,27 @@ final class RunCommand implements Callable<Integer> {
                     + "radio link (default: ${DEFAULT-VALUE}).")
     private int commandAttempts;
 
-    @Option(names = "--transfer-timeout", paramLabel = "MS", defaultValue = "" + MissionTransferConfig.DEFAULT_TIMEOUT_MILLIS,
-            description = "Mission uploads and downloads: how long to wait for the vehicle's next message before sending "
-                    + "again, in milliseconds (default: ${DEFAULT-VALUE}).")
-    private long transferTimeoutMillis;
+    @Option(names = "--transfer-min-timeout", paramLabel = "MS", defaultValue = "50",
+            description = "Mission transfers: the shortest wait for the vehicle's answer before sending again, in "
+                    + "milliseconds; the wait follows the link's measured round trip (default: ${DEFAULT-VALUE}).")
+    private long transferMinTimeoutMillis;
 
-    @Option(names = "--transfer-tries", paramLabel = "N", defaultValue = "" + MissionTransferConfig.DEFAULT_TRIES,
-            description = "Mission uploads and downloads: sends of one message without an answer before the transfer "
-                    + "fails (default: ${DEFAULT-VALUE}).")
-    private int transferTries;
+    @Option(names = "--transfer-max-timeout", paramLabel = "MS", defaultValue = "1500",
+            description = "Mission transfers: the longest wait before sending again, in milliseconds, also the wait before "
+                    + "the round trip is measured (default: ${DEFAULT-VALUE}).")
+    private long transferMaxTimeoutMillis;
+
+    @Option(names = "--transfer-give-up", paramLabel = "S", defaultValue = "10",
+            description = "Mission transfers: seconds without progress before a transfer fails (default: ${DEFAULT-VALUE}; "
+                    + "ArduPilot itself cancels an upload after 8 s without an item).")
+    private double transferGiveUpSeconds;
+
+    @Option(names = "--transfer-path", paramLabel = "PATH", converter = Converters.TransferPathConverter.class,
+            defaultValue = "auto",
+            description = "Mission transfers: ftp (the whole list as one file over MAVLink FTP), items (the mission "
+                    + "protocol, item by item) or auto (FTP where the vehicle offers it, else items) "
+                    + "(default: ${DEFAULT-VALUE}).")
+    private TransferPath transferPath;
 
     @Option(names = "--ready-timeout", paramLabel = "SECONDS", defaultValue = "180",
             description = "How long a mission waits for its vehicle to become ready (a position estimate, a home, pre-arm "
@@ -288,16 +302,23 @@ final class RunCommand implements Callable<Integer> {
                 .withSysid(sysid).withSigningKey(key).withTlog(tlog).withCommandAttempts(commandAttempts);
     }
 
-    /** The timeout and tries of every mission transfer, from the options. */
+    /** The timeouts and path of every mission transfer, from the options. */
     MissionTransferConfig transferConfig() {
-        if (transferTimeoutMillis <= 0) {
+        if (transferMinTimeoutMillis <= 0) {
             throw new ParameterException(spec.commandLine(),
-                    "--transfer-timeout must be a positive number of milliseconds, got " + transferTimeoutMillis);
+                    "--transfer-min-timeout must be a positive number of milliseconds, got " + transferMinTimeoutMillis);
         }
-        if (transferTries < 1) {
-            throw new ParameterException(spec.commandLine(), "--transfer-tries must be at least 1, got " + transferTries);
+        if (transferMaxTimeoutMillis < transferMinTimeoutMillis) {
+            throw new ParameterException(spec.commandLine(), "--transfer-max-timeout (" + transferMaxTimeoutMillis
+                    + " ms) must be at least --transfer-min-timeout (" + transferMinTimeoutMillis + " ms)");
         }
-        return new MissionTransferConfig(Duration.ofMillis(transferTimeoutMillis), transferTries);
+        long giveUpMillis = Math.round(transferGiveUpSeconds * 1000);
+        if (!(giveUpMillis >= transferMaxTimeoutMillis)) {
+            throw new ParameterException(spec.commandLine(), "--transfer-give-up (" + transferGiveUpSeconds
+                    + " s) must be at least --transfer-max-timeout (" + transferMaxTimeoutMillis + " ms)");
+        }
+        return new MissionTransferConfig(new LinkTimeouts(Duration.ofMillis(transferMinTimeoutMillis),
+                Duration.ofMillis(transferMaxTimeoutMillis), Duration.ofMillis(giveUpMillis)), transferPath);
     }
 
     /** The mission executor's deadlines, from the options. */

@@ -28,12 +28,16 @@ public record LinkTimeouts(Duration min, Duration max, Duration giveUp) {
         }
     }
 
-    /** The timeout to wait after a send, given the link's round trip and the sends lost in a row. */
+    /**
+     * The timeout to wait after a send, given the link's round trip and the sends lost in a row: the
+     * link's, at least {@code min}, doubled per back-off (so a fast link's backs off from {@code min},
+     * as TCP's from its floor), at most {@code max}.
+     */
     public Duration timeout(RoundTrip link, int backoffs) {
-        long nanos = link.timeoutNanos(max.toNanos());
+        long nanos = Math.max(min.toNanos(), link.timeoutNanos(max.toNanos()));
         for (int i = 0; i < backoffs && nanos < max.toNanos(); i++) {
             nanos *= 2;
         }
-        return Duration.ofNanos(Math.max(min.toNanos(), Math.min(max.toNanos(), nanos)));
+        return Duration.ofNanos(Math.min(max.toNanos(), nanos));
     }
 }

@@ -1,7 +1,9 @@
 package dolphin.cli
 
 import dolphin.mission.flight.MissionExecutorConfig
+import dolphin.mavlink.LinkTimeouts
 import dolphin.mission.transfer.MissionTransferConfig
+import dolphin.mission.transfer.TransferPath
 import dolphin.core.Position
 import dolphin.sim.FaultModel
 import dolphin.sim.SimFleet
@@ -128,13 +130,16 @@ release v
         parsed(EXAMPLE, '--sim', '1').faultModel() == FaultModel.NONE
     }
 
-    def "the retry options set the command attempts and the mission transfers' timeout and tries"() {
+    def "the retry options set the command attempts and the mission transfers' timeouts, give-up and path"() {
         when:
-        def command = parsed(EXAMPLE, '--command-attempts', '9', '--transfer-timeout', '2500', '--transfer-tries', '7')
+        def command = parsed(EXAMPLE, '--command-attempts', '9', '--transfer-min-timeout', '100', '--transfer-max-timeout', '2500',
+                '--transfer-give-up', '12.5', '--transfer-path', 'items')
 
         then:
         command.mavlinkConfig().commandAttempts() == 9
-        command.transferConfig() == new MissionTransferConfig(Duration.ofMillis(2500), 7)
+        command.transferConfig() == new MissionTransferConfig(
+                new LinkTimeouts(Duration.ofMillis(100), Duration.ofMillis(2500), Duration.ofMillis(12500)), TransferPath.ITEMS)
+        parsed(EXAMPLE, '--transfer-path', 'ftp').transferConfig().path() == TransferPath.FTP
     }
 
     def "without retry options commands and transfers keep their defaults"() {
@@ -143,7 +148,9 @@ release v
 
         then:
         command.mavlinkConfig().commandAttempts() == 5
-        command.transferConfig() == new MissionTransferConfig(Duration.ofMillis(1500), 5)
+        command.transferConfig() == MissionTransferConfig.DEFAULT
+        MissionTransferConfig.DEFAULT == new MissionTransferConfig(
+                new LinkTimeouts(Duration.ofMillis(50), Duration.ofMillis(1500), Duration.ofSeconds(10)), TransferPath.AUTO)
         command.executorConfig() == MissionExecutorConfig.DEFAULT
     }
 
@@ -302,10 +309,13 @@ release v
         ['run', EXAMPLE, '--sim', '1', '--reorder', '-20']         | '--reorder must be a number of milliseconds, 0 or more, got -20'
         ['run', EXAMPLE, '--command-attempts', '0']                | '--command-attempts must be at least 1, got 0'
         ['run', EXAMPLE, '--command-attempts', 'many']             | "Invalid value for option '--command-attempts': 'many' is not an int"
-        ['run', EXAMPLE, '--transfer-timeout', '0']                | '--transfer-timeout must be a positive number of milliseconds, got 0'
-        ['run', EXAMPLE, '--transfer-timeout', '-1500']            | '--transfer-timeout must be a positive number of milliseconds, got -1500'
-        ['run', EXAMPLE, '--transfer-timeout', '1.5s']             | "Invalid value for option '--transfer-timeout': '1.5s' is not a long"
-        ['run', EXAMPLE, '--transfer-tries', '0']                  | '--transfer-tries must be at least 1, got 0'
+        ['run', EXAMPLE, '--transfer-min-timeout', '0']            | '--transfer-min-timeout must be a positive number of milliseconds, got 0'
+        ['run', EXAMPLE, '--transfer-min-timeout', '-50']          | '--transfer-min-timeout must be a positive number of milliseconds, got -50'
+        ['run', EXAMPLE, '--transfer-max-timeout', '1.5s']         | "Invalid value for option '--transfer-max-timeout': '1.5s' is not a long"
+        ['run', EXAMPLE, '--transfer-max-timeout', '20']           | '--transfer-max-timeout (20 ms) must be at least --transfer-min-timeout (50 ms)'
+        ['run', EXAMPLE, '--transfer-give-up', '1']                | '--transfer-give-up (1.0 s) must be at least --transfer-max-timeout (1500 ms)'
+        ['run', EXAMPLE, '--transfer-give-up', 'NaN']              | '--transfer-give-up (NaN s) must be at least --transfer-max-timeout (1500 ms)'
+        ['run', EXAMPLE, '--transfer-path', 'tcp']                 | "Invalid value for option '--transfer-path': 'tcp' is not auto, ftp or items"
         ['run', EXAMPLE, '--ready-timeout', '0']                   | '--ready-timeout must be a positive number of seconds, got 0'
     }
 }

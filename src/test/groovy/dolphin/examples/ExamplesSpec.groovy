@@ -182,7 +182,7 @@ class ExamplesSpec extends Specification {
         'first-flight'         | ['mission first flight on vehicle 1: done', 'the flight ended DONE, battery *']
         'from-file'            | ['read 5 mission items, a fence of 1 region (inclusion polygon of 4 vertices), return point,'
                                           + ' 1 rally point from dsl-examples/square.plan',
-                                  'mission square on vehicle 1: fence verified', 'mission square on vehicle 1: rally points verified',
+                                  'mission square on vehicle 1: fence verified*', 'mission square on vehicle 1: rally points verified*',
                                   'mission square on vehicle 1: done', 'the square from the file: DONE, fence breached: false']
         'battery-and-position' | ['vehicle { 1 }: battery 100 %, position (40.444233°, -7.375234°, 820.000)',
                                   'vehicle { 2 }: battery 100 %, position (40.444233°, -7.375116°, 820.000)']
@@ -225,7 +225,7 @@ class ExamplesSpec extends Specification {
         r.lines.any { it.startsWith('picked { 1 2 3 } from the free vehicles') }
         ['survey1': 1, 'survey2': 2, 'survey3': 3].every { survey, n ->
             ScriptLines.inOrder(r.lines, "mission ${survey} on vehicle ${n}: uploading 10 items".toString(),
-                    "mission ${survey} on vehicle ${n}: upload verified".toString(), "mission ${survey} on vehicle ${n}: armed".toString(),
+                    "mission ${survey} on vehicle ${n}: upload verified*".toString(), "mission ${survey} on vehicle ${n}: armed".toString(),
                     "mission ${survey} on vehicle ${n}: item 9 of 9 reached".toString(), "mission ${survey} on vehicle ${n}: done".toString())
         }
         r.lines.contains('Done!')
@@ -255,9 +255,9 @@ class ExamplesSpec extends Specification {
         then:
         r.code == 0
         ScriptLines.inOrder(r.lines, 'mission fenced flight on vehicle 1: uploading the fence: 6 items',
-                'mission fenced flight on vehicle 1: fence verified',
+                'mission fenced flight on vehicle 1: fence verified*',
                 'mission fenced flight on vehicle 1: uploading the rally points: 1 item',
-                'mission fenced flight on vehicle 1: rally points verified',
+                'mission fenced flight on vehicle 1: rally points verified*',
                 'mission fenced flight on vehicle 1: uploading 5 items', 'mission fenced flight on vehicle 1: item 2 of 4 reached',
                 'the mission stopped: mission fenced flight on vehicle 1: vehicle 1 breached its fence during item 3 of 4 (NAV_WAYPOINT) and left AUTO for RTL (its fence action)*',
                 'fence breached: *',

@@ -120,6 +120,8 @@ class LinkSpec extends Specification {
         def h = new FleetHarness(MAVLinkConfig.of('udpin:127.0.0.1:0', 'udpin:127.0.0.1:0'))
         def second = new InetSocketAddress('127.0.0.1', h.comms.links()[1].localPort())
         h.fleet(1)
+        // the id a vehicle gets depends on which is heard first: the first link's, then the second's
+        h.eventually { assert h.comms.nodes()*.id == ['1'] }
         def other = new dolphin.sim.SimFleet(dolphin.sim.SimFleet.Config.of(1, VehicleKind.PLANE, second), h.clock)
         other.start()
 

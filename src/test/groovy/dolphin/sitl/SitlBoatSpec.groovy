@@ -57,7 +57,7 @@ class SitlBoatSpec extends Specification {
 
         and: 'the square driven to its end, each of its four items reported reached'
         r.result.outcome() == ScriptResult.Outcome.COMPLETED
-        inOrder(r.lines, 'mission square on vehicle 31: uploading 5 items', 'mission square on vehicle 31: upload verified',
+        inOrder(r.lines, 'mission square on vehicle 31: uploading 5 items', 'mission square on vehicle 31: upload verified*',
                 'mission square on vehicle 31: armed', 'mission square on vehicle 31: started',
                 'mission square on vehicle 31: item 4 of 4 reached', 'mission square on vehicle 31: done', 'square: DONE')
         reports.itemsReached[31] == [1, 2, 3, 4] as Set

@@ -117,7 +117,7 @@ class SitlSubSpec extends Specification {
 
     /** The missions uploaded to this vehicle and verified, from the executor's "upload verified" lines. */
     static List<String> verifiedMissions(List<String> lines, int sysid) {
-        lines.findResults { (it =~ /^mission (.+) on vehicle ${sysid}: upload verified$/).with { m -> m.matches() ? m.group(1) : null } }.unique()
+        lines.findResults { (it =~ /^mission (.+) on vehicle ${sysid}: upload verified( \(.+\))?$/).with { m -> m.matches() ? m.group(1) : null } }.unique()
     }
 
     /** The number of items of a mission (home not counted), from the executor's "item k of K reached" lines. */

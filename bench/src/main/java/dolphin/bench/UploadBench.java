@@ -11,6 +11,7 @@ import dolphin.mavlink.MAVLinkNode;
 import dolphin.mission.flight.MissionService;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.transfer.MissionTransferConfig;
+import dolphin.mission.transfer.TransferPath;
 import dolphin.mission.transfer.MissionVerification;
 import dolphin.mission.transfer.TransferProgress;
 import dolphin.mission.transfer.TransferResult;
@@ -128,7 +129,8 @@ public final class UploadBench {
                 SimFleet lossless = fleet(port, 1, FaultModel.NONE);
                 fleets.add(lossless);
                 MAVLinkNode node = awaitNode(comms, "1");
-                MissionTransferConfig config = MissionTransferConfig.DEFAULT;
+                // the item protocol, which the floor's round trips stand for (the default would take FTP where offered)
+                MissionTransferConfig config = LossyUploadBench.config(TransferPath.ITEMS);
                 String ready = pyIn.readLine();
                 if (!"ready".equals(ready)) {
                     throw new IllegalStateException("pymavlink_upload.py: " + ready);

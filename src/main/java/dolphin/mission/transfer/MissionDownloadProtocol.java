@@ -12,15 +12,16 @@ import com.MAVLink.common.msg_mission_request_int;
 import com.MAVLink.common.msg_mission_request_list;
 import com.MAVLink.enums.MAV_FRAME;
 import com.MAVLink.enums.MAV_MISSION_RESULT;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 
 /**
  * Downloads a vehicle's mission (unlike the original's, it keeps the items and has timeouts and retries): MISSION_REQUEST_LIST
- * until MISSION_COUNT, then MISSION_REQUEST_INT for each seq, again on timeout, accepting
+ * until MISSION_COUNT, then MISSION_REQUEST_INT for each seq, up to four outstanding, again on timeout, accepting
  * MISSION_ITEM_INT (or float MISSION_ITEM, converted), and the final MISSION_ACK ACCEPTED.
- * The result's items include item 0 (ArduPilot's home).
+ * The result's items include item 0 (ArduPilot's home). Timeouts follow the link's round trip,
+ * which answers to messages sent once feed; it gives up after a time without progress
+ * (docs/decisions.md, "Transfers on lossy links").
  */
 public final class MissionDownloadProtocol {
 
@@ -63,11 +64,26 @@ public final class MissionDownloadProtocol {
         return new MissionItem(m.seq, m.command, m.frame, m.param1, m.param2, m.param3, m.param4, x, y, m.z, m.autocontinue != 0);
     }
 
-    /** The state machine of one download; communications thread only. */
-    private static final class Download extends Transfer {
-        private final List<MissionItem> items = new ArrayList<>();
+    /**
+     * The state machine of one download; communications thread only; the upload uses it too, to
+     * read its list back. Up to {@link #WINDOW} MISSION_REQUEST_INTs outstanding, lowest seqs first
+     * (ArduPilot answers any request in range, in any order): items may come lost, twice or out of
+     * order; each arrives once into its place, and each request unanswered for a timeout goes
+     * again.
+     */
+    static final class Download extends Transfer {
+        /** Requests outstanding at most: hides most of the round trip, while a slow radio's queue stays short. */
+        static final int WINDOW = 4;
+
+        private MissionItem[] got;
+        private int[] sends;           // sends of each request
+        private long[] sentAt;         // when each request was last sent
         private int count = -1;        // -1 until MISSION_COUNT
-        private int tries;
+        private int received;
+        private int next;              // the lowest seq never requested
+        private int low;               // the lowest seq not received
+        private int listSends;
+        private long listAt;
 
         Download(VehicleChannel vehicle, ProtocolTimers timers, MissionTransferConfig config, TransferProgress progress,
                  MissionType type) {
@@ -89,47 +105,81 @@ public final class MissionDownloadProtocol {
             m.target_system = (short) vehicle.system();
             m.target_component = (short) vehicle.component();
             m.mission_type = (short) type.wire();
-            tries++;
+            listSends++;
+            listAt = timers.nanoTime();
             send(m);
             arm(() -> {
-                if (tries >= tries()) {
-                    fail("no MISSION_COUNT after " + sent(tries, "MISSION_REQUEST_LIST"));
+                if (!patient()) {
+                    fail(waited("MISSION_COUNT", "MISSION_REQUEST_LIST", listSends));
                 } else {
+                    backOff();
                     resends++;
                     sendList();
                 }
             });
         }
 
-        private void request() {
+        private void request(int seq) {
             msg_mission_request_int m = new msg_mission_request_int();
             m.target_system = (short) vehicle.system();
             m.target_component = (short) vehicle.component();
-            m.seq = items.size();
+            m.seq = seq;
             m.mission_type = (short) type.wire();
-            tries++;
+            if (sends[seq] > 0) {
+                resends++;
+            }
+            sends[seq]++;
+            sentAt[seq] = timers.nanoTime();
             send(m);
-            arm(() -> {
-                if (tries >= tries()) {
-                    fail("no item " + items.size() + " of " + count + " after " + sent(tries, "MISSION_REQUEST_INT"));
-                } else {
-                    resends++;
-                    request();
+        }
+
+        /** Requests the next seqs while fewer than WINDOW are outstanding, and times the oldest outstanding. */
+        private void fill() {
+            while (next < count && next - received < WINDOW) {
+                request(next++);
+            }
+            long oldest = Long.MAX_VALUE;
+            for (int seq = low; seq < next; seq++) {
+                if (got[seq] == null) {
+                    oldest = Math.min(oldest, sentAt[seq]);
                 }
-            });
+            }
+            long left = oldest + timeout().toNanos() - timers.nanoTime();
+            arm(java.time.Duration.ofNanos(Math.max(0, left)), this::timedOut);
+        }
+
+        private void timedOut() {
+            if (!patient()) {
+                fail(waited("item " + low + " of " + count, "MISSION_REQUEST_INT", sends[low]));
+                return;
+            }
+            long due = timers.nanoTime() - timeout().toNanos();
+            backOff();
+            for (int seq = low; seq < next; seq++) {
+                if (got[seq] == null && sentAt[seq] <= due) {
+                    request(seq);
+                }
+            }
+            fill();
         }
 
         @Override
         void handle(MAVLinkMessage message) {
             if (message instanceof msg_mission_count c) {
                 if (count < 0) {            // a later COUNT answers a duplicated REQUEST_LIST: ignored
+                    if (listSends == 1) {
+                        sample(listAt);
+                    }
+                    advanced();
                     count = c.count;
-                    tries = 0;
+                    got = new MissionItem[count];
+                    sends = new int[count];
+                    sentAt = new long[count];
                     report(0, count);
                     if (count == 0) {
                         finishDownload();
                     } else {
-                        request();
+                        fill();
                     }
                 }
             } else if (message instanceof msg_mission_item_int m) {
@@ -140,21 +190,29 @@ public final class MissionDownloadProtocol {
                 ignoredAcks++;              // a late ACK of a duplicated item from an earlier upload, on a noisy link
             } else if (message instanceof msg_mission_ack a && a.type != MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
                 fail(MissionUploadProtocol.resultName(a.type) + (count < 0 ? " (answering MISSION_REQUEST_LIST)"
-                        : " (answering the request for item " + items.size() + " of " + count + ")"));
+                        : " (answering the request for item " + low + " of " + count + ")"));
             }
         }
 
         private void item(MissionItem item) {
-            if (count < 0 || item.seq() != items.size()) {
-                return;                     // a duplicate or a late answer to an earlier request
+            int seq = item.seq();
+            if (count < 0 || seq < 0 || seq >= next || got[seq] != null) {
+                return;                     // a duplicate, or not asked for (late, from an earlier transfer)
             }
-            items.add(item);
-            tries = 0;
-            report(items.size(), count);
-            if (items.size() == count) {
+            if (sends[seq] == 1) {
+                sample(sentAt[seq]);
+            }
+            advanced();
+            got[seq] = item;
+            received++;
+            while (low < count && got[low] != null) {
+                low++;
+            }
+            report(received, count);
+            if (received == count) {
                 finishDownload();
             } else {
-                request();
+                fill();
             }
         }
 
@@ -165,7 +223,7 @@ public final class MissionDownloadProtocol {
             ack.type = MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
             ack.mission_type = (short) type.wire();
             send(ack);
-            succeed(items);
+            succeed(got == null ? List.of() : List.of(got));
         }
     }
 }

@@ -53,7 +53,7 @@ public final class MissionTransfers {
     private Transfer active;
     private boolean ftpUnanswered;
 
-    /** @param config the timeout and tries of transfers started from now on (a command line may change them) */
+    /** @param config the timeouts and path of transfers started from now on (a command line may change them) */
     public MissionTransfers(VehicleChannel vehicle, ProtocolTimers timers, Supplier<MissionTransferConfig> config) {
         this.vehicle = vehicle;
         this.timers = timers;

@@ -10,18 +10,23 @@ import com.MAVLink.common.msg_mission_request;
 import com.MAVLink.common.msg_mission_request_int;
 import com.MAVLink.enums.MAV_MISSION_RESULT;
 import dolphin.mavlink.EnumNames;
+import java.time.Duration;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 
 /**
  * Uploads a mission to one vehicle (MAVLink mission protocol; unlike the original it sends
  * MISSION_COUNT once, resends what is lost and fails on error ACKs instead of hanging:
- * docs/decisions.md, "Mission transfers"). MISSION_COUNT, sent again on timeout until the first request;
- * MISSION_REQUEST and MISSION_REQUEST_INT both answered with MISSION_ITEM_INT, again when repeated;
- * the last item sent again when the next request does not come; MISSION_ACK ACCEPTED after the
- * last item is success, any error ACK a failure naming the item, its command and the parameter.
- * INVALID_SEQUENCE ACKs are counted and ignored (ArduPilot sends them for duplicated items on noisy
- * links; it keeps going). Transfers of one vehicle run one at a time.
+ * docs/decisions.md, "Mission transfers" and "Transfers on lossy links"). MISSION_COUNT, sent again
+ * on timeout until the first request; MISSION_REQUEST and MISSION_REQUEST_INT both answered with
+ * MISSION_ITEM_INT, again when repeated; items k and k + 1 sent again when the request after k
+ * does not come; MISSION_ACK ACCEPTED after the last item is success, any error ACK a failure
+ * naming the item, its command and the parameter, but a MAV_MISSION_ERROR after the last item, or
+ * silence until the give-up, is settled by reading the list back. INVALID_SEQUENCE ACKs are counted
+ * and ignored (ArduPilot sends them for items it already has; it keeps going). Timeouts follow the
+ * link's round trip; the upload gives up after a time without progress. Transfers of one vehicle
+ * run one at a time.
  */
 public final class MissionUploadProtocol {
 
@@ -87,18 +92,39 @@ public final class MissionUploadProtocol {
         return "MAV_MISSION_" + EnumNames.name(MAV_MISSION_RESULT.class, "MAV_MISSION_", result);
     }
 
-    /** The state machine of one upload; communications thread only. */
+    /**
+     * The state machine of one upload; communications thread only. Stop-and-wait, each item sent
+     * when the vehicle requests it; when the request after item k does not come within the
+     * timeout, items k and k + 1 go again (ArduPilot accepts an item whose seq is the one it
+     * expects, requested or not): whichever of item k or the request for k + 1 was lost, the
+     * vehicle moves on within one round trip. A request for that k + 1 arriving while it is still
+     * in flight (sent less than one timeout ago) is not answered, once: the timer resends if the
+     * request for k + 2 does not follow, a repeated request at once.
+     */
     private static final class Upload extends Transfer {
+        /**
+         * ArduPilot asks again for the item it awaits after 1 s without one: an answer later than that
+         * may answer its own repetition, not our message, and is no sample (Karn's rule, both ways).
+         */
+        private static final long VEHICLE_REPEAT_NANOS = 1_000_000_000L;
+
         private final List<MissionItem> items;
-        private boolean requested;      // a first request came: MISSION_COUNT is no longer sent
-        private int tries;              // sends of the current message without progress
+        private final int[] sends;      // sends of each item
+        private final long[] sentAt;    // when each item was last sent
+        private int countSends;
+        private long countAt;
+        private int highest = -1;       // the highest seq requested: the vehicle holds the items before it
         private int lastSent = -1;      // the item last sent, named in errors
-        private int highest = -1;       // the highest seq requested
+        private int ahead = -1;         // the item sent before its request by the recovery, until answered
+        private MissionDownloadProtocol.Download readBack;  // settles a lost final ACK
+        private String unsettled;       // the error the read-back settles
 
         Upload(VehicleChannel vehicle, ProtocolTimers timers, MissionTransferConfig config, TransferProgress progress,
                MissionType type, List<MissionItem> items) {
             super(vehicle, timers, config, progress, type);
             this.items = items;
+            this.sends = new int[items.size()];
+            this.sentAt = new long[items.size()];
         }
 
         @Override
@@ -123,45 +149,63 @@ public final class MissionUploadProtocol {
             c.target_component = (short) vehicle.component();
             c.count = items.size();
             c.mission_type = (short) type.wire();
-            tries++;
+            countSends++;
+            countAt = timers.nanoTime();
             send(c);
             arm(this::countTimedOut);
         }
 
         private void countTimedOut() {
-            if (tries >= tries()) {
-                fail("no " + (items.isEmpty() ? "MISSION_ACK" : "MISSION_REQUEST") + " after " + sent(tries, "MISSION_COUNT"));
+            if (!patient()) {
+                fail(waited(items.isEmpty() ? "MISSION_ACK" : "MISSION_REQUEST for item 0", "MISSION_COUNT", countSends));
             } else {
+                backOff();
                 resends++;
                 sendCount();
             }
         }
 
         private void sendItem(int seq) {
+            if (sends[seq] > 0) {
+                resends++;
+            }
+            sends[seq]++;
+            sentAt[seq] = timers.nanoTime();
             lastSent = seq;
-            tries++;
             send(items.get(seq).toMessage(vehicle.system(), vehicle.component(), type));
-            arm(this::itemTimedOut);
         }
 
-        /** The next request did not come: send the last item again (proactive resend). */
+        /** No request after item {@code highest} in time: it or the request was lost; send it and the next. */
         private void itemTimedOut() {
-            if (tries >= tries()) {
-                MissionItem item = items.get(lastSent);
-                String next = lastSent == items.size() - 1 ? "MISSION_ACK" : "MISSION_REQUEST for item " + (lastSent + 1);
-                String hint = lastSent == items.size() - 1 ? "; the vehicle may hold the whole mission and its ACK was lost:"
-                        + " download it to check" : "";
-                fail("no " + next + " after item " + lastSent + " (" + item.commandName() + ") was sent " + tries
-                        + (tries == 1 ? " time" : " times (" + config.timeoutText() + " apart)") + hint);
-            } else {
-                resends++;
-                sendItem(lastSent);
+            int last = items.size() - 1;
+            if (!patient()) {
+                String awaited = highest == last ? "MISSION_ACK" : "MISSION_REQUEST for item " + (highest + 1);
+                String reason = waited(awaited, "item " + highest, sends[highest]);
+                if (sends[last] > 0) {
+                    settle(reason);
+                } else {
+                    fail(reason);
+                }
+                return;
             }
+            backOff();
+            sendItem(highest);
+            if (highest < last) {
+                sendItem(highest + 1);
+                ahead = highest + 1;
+            }
+            arm(this::itemTimedOut);
         }
 
         @Override
         void handle(MAVLinkMessage message) {
-            if (message instanceof msg_mission_request r) {
+            if (readBack != null) {
+                if (message instanceof msg_mission_ack a && a.type == MAV_MISSION_RESULT.MAV_MISSION_ERROR) {
+                    ignoredAcks++;      // another repeated last item, answered after the vehicle finished
+                } else {
+                    readBack.handle(message);
+                }
+            } else if (message instanceof msg_mission_request r) {
                 request(r.seq);
             } else if (message instanceof msg_mission_request_int r) {
                 request(r.seq);
@@ -176,34 +220,93 @@ public final class MissionUploadProtocol {
                         + (items.size() - 1) + ")");
                 return;
             }
-            requested = true;
-            if (seq == lastSent) {
-                resends++;      // asked again: the item was lost; keep counting tries (no progress)
-            } else {
-                tries = 0;
+            if (seq < highest) {
+                return;                 // stale (reordered or late): the vehicle asked for a later item since
             }
             if (seq > highest) {
+                if (highest < 0 && countSends == 1) {
+                    cleanSample(countAt);
+                } else if (seq > 0 && sends[seq - 1] == 1) {
+                    cleanSample(sentAt[seq - 1]);
+                }
+                advanced();
                 highest = seq;
                 report(seq, items.size());
             }
-            sendItem(seq);
+            if (seq == ahead) {
+                ahead = -1;             // deferred once: a repeated request means the vehicle lost it
+                long left = sentAt[seq] + timeout().toNanos() - timers.nanoTime();
+                if (left > 0) {         // in flight: wait for the request of the next one
+                    arm(Duration.ofNanos(left), this::itemTimedOut);
+                    return;
+                }
+            }
+            ahead = -1;
+            sendItem(seq);              // again at once when asked again: the vehicle lost it
+            arm(this::itemTimedOut);
         }
 
         private void ack(int result) {
+            int last = items.size() - 1;
             if (result == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
-                if (items.isEmpty() || (requested && highest == items.size() - 1)) {
+                if (items.isEmpty()) {
+                    if (countSends == 1) {
+                        cleanSample(countAt);
+                    }
+                    report(0, 0);
+                    succeed(items);
+                } else if (highest < 0) {
+                    ignoredAcks++;      // a late ACK of an earlier transfer
+                } else if (sends[last] > 0) {
+                    if (sends[last] == 1) {
+                        cleanSample(sentAt[last]);
+                    }
                     report(items.size(), items.size());
                     succeed(items);
-                } else if (!requested) {
-                    ignoredAcks++;      // a late ACK of an earlier transfer
                 } else {
                     fail("the vehicle accepted the " + type.label() + " after requesting only items 0 to " + highest + " of "
                             + items.size());
                 }
             } else if (result == MAV_MISSION_RESULT.MAV_MISSION_INVALID_SEQUENCE) {
-                ignoredAcks++;          // a duplicated or reordered item on a noisy link; the vehicle keeps going
+                ignoredAcks++;          // an item it already had (a duplicate, or the recovery's item k): it keeps going
+            } else if (result == MAV_MISSION_RESULT.MAV_MISSION_ERROR && last >= 0 && sends[last] > 0) {
+                // ArduPilot's answer to an item when no upload is in progress: the last item repeated after a lost
+                // final ACK, or a refused last item; reading the list back tells which
+                settle(describe(result, items.get(last), items.size()));
             } else {
                 fail(describe(result, lastSent < 0 ? null : items.get(lastSent), items.size()));
+            }
+        }
+
+        /** The answer to a message sent once (Karn), if it came before the vehicle would have repeated its own message. */
+        private void cleanSample(long sentAt) {
+            if (timers.nanoTime() - sentAt < VEHICLE_REPEAT_NANOS) {
+                sample(sentAt);
+            }
+        }
+
+        /** Downloads the list, in this same transfer, to learn whether the vehicle holds it all. */
+        private void settle(String error) {
+            disarm();
+            unsettled = error;
+            readBack = new MissionDownloadProtocol.Download(vehicle, timers, config, progress, type);
+            readBack.begin(this::settled);
+        }
+
+        private void settled() {
+            TransferResult back = readBack.result.join();
+            resends += readBack.resends;
+            ignoredAcks += readBack.ignoredAcks;
+            if (!back.success()) {
+                fail(unsettled + "; reading the " + type.label() + " back failed: " + readBack.reason());
+                return;
+            }
+            Optional<String> difference = MissionVerification.firstDifference(type, items, back.items());
+            if (difference.isPresent()) {
+                fail(unsettled + "; read back, " + difference.get());
+            } else {
+                report(items.size(), items.size());
+                succeedVerified(items, "the final ACK was lost; the vehicle holds the whole " + type.label() + ", read back");
             }
         }
     }

@@ -4,11 +4,13 @@ import com.MAVLink.enums.MAV_CMD
 import com.MAVLink.enums.MAV_MISSION_RESULT
 import dolphin.core.ManualClock
 import dolphin.core.Position
+import dolphin.mavlink.LinkTimeouts
 import dolphin.mission.model.MissionItem
 import dolphin.mission.model.MissionType
 import java.time.Duration
 import java.util.concurrent.CompletableFuture
 import spock.lang.Specification
+import spock.lang.Timeout
 import spock.lang.Unroll
 
 import static dolphin.mission.transfer.ScriptedMissionVehicle.ack
@@ -24,14 +26,16 @@ import static dolphin.mission.transfer.ScriptedMissionVehicle.requestInt
  * ManualClock (ClockTimers). The vehicle is either the spec itself, sending one message at a time
  * ({@code channel.receive}), or a ScriptedMissionVehicle that answers as ArduPilot does, with
  * faults; its answers arrive at the clock time they were sent, so advancing the clock runs the
- * whole conversation, timeouts included, at their exact times.
+ * whole conversation, timeouts included, at their exact times. A vehicle answering at the same
+ * clock time is a link with no round trip: after its first answer the timeouts are the shortest,
+ * 50 ms, doubled per timeout in a row without progress.
  */
+@Timeout(60)
 class MissionTransferSpec extends Specification {
 
     static final Position HOME = Position.fromDegrees(41.15242, -8.64096, 72)
     static final int ACCEPTED = MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
     static final int INVALID_SEQUENCE = MAV_MISSION_RESULT.MAV_MISSION_INVALID_SEQUENCE
-    static final String LOST_ACK_HINT = '; the vehicle may hold the whole mission and its ACK was lost: download it to check'
 
     ManualClock clock = new ManualClock()
     RecordingChannel channel = new RecordingChannel(clock)
@@ -156,21 +160,21 @@ class MissionTransferSpec extends Specification {
         progress == steps
 
         and: 'what the vehicle holds'
-        vehicle.stored == (error == null || fault == 'no final ACK' ? intended() : [])
+        vehicle.stored == (error == null ? intended() : [])
 
         where:
-        fault                    | faults                | faultSeq || endsAt | repeats                                                                | resends | ignoredAcks | steps              | error
-        'no fault'               | []                    | -1       || 0.0d   | []                                                                     | 0       | 0           | [0, 1, 2, 3, 4, 5] | null
-        'COUNT lost once'        | ['countLost']         | -1       || 1.5d   | ['1.5 COUNT 5']                                                        | 1       | 0           | [0, 1, 2, 3, 4, 5] | null
-        'item 0 lost'            | ['itemLost']          | 0        || 1.5d   | ['1.5 ITEM 0']                                                         | 1       | 0           | [0, 1, 2, 3, 4, 5] | null
-        'item 2 lost'            | ['itemLost']          | 2        || 1.5d   | ['1.5 ITEM 2']                                                         | 1       | 0           | [0, 1, 2, 3, 4, 5] | null
-        'last item lost'         | ['itemLost']          | 4        || 1.5d   | ['1.5 ITEM 4']                                                         | 1       | 0           | [0, 1, 2, 3, 4, 5] | null
-        'requests duplicated'    | ['duplicateRequests'] | -1       || 0.0d   | ['0.0 ITEM 0', '0.0 ITEM 1', '0.0 ITEM 2', '0.0 ITEM 3', '0.0 ITEM 4'] | 5       | 4           | [0, 1, 2, 3, 4, 5] | null
-        'requests reordered'     | ['reorderedRequests'] | -1       || 0.0d   | ['0.0 ITEM 1', '0.0 ITEM 2', '0.0 ITEM 3']                             | 0       | 2           | [0, 1, 2, 3, 4, 5] | null
-        'MISSION_REQUEST_INT'    | ['requestInt']        | -1       || 0.0d   | []                                                                     | 0       | 0           | [0, 1, 2, 3, 4, 5] | null
-        'no final ACK'           | ['noAck']             | -1       || 7.5d   | ['1.5 ITEM 4', '3.0 ITEM 4', '4.5 ITEM 4', '6.0 ITEM 4']               | 4       | 0           | [0, 1, 2, 3, 4]    | 'upload to vehicle 2 failed: no MISSION_ACK after item 4 (NAV_WAYPOINT) was sent 5 times (1.5 s apart)' + LOST_ACK_HINT
-        'out-of-range request'   | ['outOfRange']        | -1       || 0.0d   | []                                                                     | 0       | 0           | [0, 1]             | 'upload to vehicle 2 failed: the vehicle requested item 7 but the mission has 5 items (0 to 4)'
-        'vehicle lost at item 2' | ['silentAt']          | 2        || 7.5d   | ['1.5 ITEM 2', '3.0 ITEM 2', '4.5 ITEM 2', '6.0 ITEM 2']               | 4       | 0           | [0, 1, 2]          | 'upload to vehicle 2 failed: no MISSION_REQUEST for item 3 after item 2 (NAV_WAYPOINT) was sent 5 times (1.5 s apart) (vehicle 2 is lost: no heartbeat within 5 s)'
+        fault                  | faults                | faultSeq || endsAt | repeats                                                                | resends | ignoredAcks | steps                                 | error
+        'no fault'             | []                    | -1       || 0.0d   | []                                                                     | 0       | 0           | [0, 1, 2, 3, 4, 5]                    | null
+        'COUNT lost once'      | ['countLost']         | -1       || 1.5d   | ['1.5 COUNT 5']                                                        | 1       | 0           | [0, 1, 2, 3, 4, 5]                    | null
+        'item 0 lost'          | ['itemLost']          | 0        || 0.05d  | ['0.05 ITEM 0']                                                        | 1       | 0           | [0, 1, 2, 3, 4, 5]                    | null
+        'item 2 lost'          | ['itemLost']          | 2        || 0.05d  | ['0.05 ITEM 2']                                                        | 1       | 0           | [0, 1, 2, 3, 4, 5]                    | null
+        'last item lost'       | ['itemLost']          | 4        || 0.05d  | ['0.05 ITEM 4']                                                        | 1       | 0           | [0, 1, 2, 3, 4, 5]                    | null
+        'request 2 lost'       | ['requestLost']       | 2        || 0.05d  | ['0.05 ITEM 1']                                                        | 1       | 1           | [0, 1, 3, 4, 5]                       | null
+        'requests duplicated'  | ['duplicateRequests'] | -1       || 0.0d   | ['0.0 ITEM 0', '0.0 ITEM 1', '0.0 ITEM 2', '0.0 ITEM 3', '0.0 ITEM 4'] | 5       | 4           | [0, 1, 2, 3, 4, 5]                    | null
+        'requests reordered'   | ['reorderedRequests'] | -1       || 0.0d   | []                                                                     | 0       | 0           | [0, 1, 2, 3, 4, 5]                    | null
+        'MISSION_REQUEST_INT'  | ['requestInt']        | -1       || 0.0d   | []                                                                     | 0       | 0           | [0, 1, 2, 3, 4, 5]                    | null
+        'final ACK lost'       | ['ackLost']           | -1       || 0.05d  | ['0.05 ITEM 4']                                                        | 1       | 0           | [0, 1, 2, 3, 4, 0, 1, 2, 3, 4, 5, 5]  | null
+        'out-of-range request' | ['outOfRange']        | -1       || 0.0d   | []                                                                     | 0       | 0           | [0, 1]                                | 'upload to vehicle 2 failed: the vehicle requested item 7 but the mission has 5 items (0 to 4)'
         outcome = error ?: 'success'
     }
 
@@ -189,7 +193,7 @@ class MissionTransferSpec extends Specification {
         channel.sentLines() == ['0.0 COUNT 5', '0.0 ITEM 0', '0.0 ITEM 1', '0.0 ITEM 2', '0.0 ITEM 3', '0.0 ITEM 4']
     }
 
-    def "a vehicle that never answers MISSION_COUNT: sent at 0, 1.5, 3.0, 4.5 and 6.0 s, the upload fails at 7.5 s, saying the vehicle is lost"() {
+    def "a vehicle that never answers MISSION_COUNT: sent every 1.5 s (no round trip measured yet), the upload fails 10 s after it began, saying the vehicle is lost"() {
         given: 'a vehicle silent from the start: after 5 s the ground station counts it lost'
         def vehicle = vehicle()
         vehicle.silent = true
@@ -208,32 +212,32 @@ class MissionTransferSpec extends Specification {
         sentNow() == ['0.0 COUNT 5', '1.5 COUNT 5']
 
         when:
-        runTo(7.499)
+        runTo(9.999)
 
-        then: 'five sent, the last timeout still running'
-        sentNow() == ['0.0 COUNT 5', '1.5 COUNT 5', '3.0 COUNT 5', '4.5 COUNT 5', '6.0 COUNT 5']
+        then: 'seven sent, the give-up not yet reached'
+        sentNow() == ['0.0 COUNT 5', '1.5 COUNT 5', '3.0 COUNT 5', '4.5 COUNT 5', '6.0 COUNT 5', '7.5 COUNT 5', '9.0 COUNT 5']
         !up.done
 
         when:
-        runTo(7.5)
+        runTo(10)
         def r = up.get()
 
         then:
-        endOf(up) == 7.5d
+        endOf(up) == 10.0d
         !r.success()
-        r.error() == 'upload to vehicle 2 failed: no MISSION_REQUEST after 5 MISSION_COUNTs (1.5 s apart) (vehicle 2 is lost: no heartbeat within 5 s)'
-        r.resends() == 4
+        r.error() == 'upload to vehicle 2 failed: no MISSION_REQUEST for item 0 in 10 s (MISSION_COUNT sent 7 times) (vehicle 2 is lost: no heartbeat within 5 s)'
+        r.resends() == 6
         r.items() == []
 
         when: 'nothing more is sent once it failed'
         run()
 
         then:
-        sentNow().size() == 5
+        sentNow().size() == 7
     }
 
     @Unroll
-    def "tries and timeout are configurable (#how): #error"() {
+    def "timeouts and give-up are configurable (#how): #error"() {
         given: 'a vehicle that does not answer, but is still heard'
         channel.receiver = null
 
@@ -251,67 +255,226 @@ class MissionTransferSpec extends Specification {
         up.get().error() == error
 
         where:
-        how                         | cfg                                                   || sent                                          | endsAt | error
-        'per transfer'              | new MissionTransferConfig(Duration.ofMillis(500), 2)  || ['0.0 COUNT 5', '0.5 COUNT 5']                | 1.0d   | 'upload to vehicle 2 failed: no MISSION_REQUEST after 2 MISSION_COUNTs (0.5 s apart)'
-        'for transfers from now on' | new MissionTransferConfig(Duration.ofMillis(2500), 3) || ['0.0 COUNT 5', '2.5 COUNT 5', '5.0 COUNT 5'] | 7.5d   | 'upload to vehicle 2 failed: no MISSION_REQUEST after 3 MISSION_COUNTs (2.5 s apart)'
-        'one try'                   | new MissionTransferConfig(Duration.ofSeconds(1), 1)   || ['0.0 COUNT 5']                               | 1.0d   | 'upload to vehicle 2 failed: no MISSION_REQUEST after 1 MISSION_COUNT'
+        how                         | cfg                        || sent                                          | endsAt | error
+        'per transfer'              | config(50, 500, 1000)      || ['0.0 COUNT 5', '0.5 COUNT 5']                | 1.0d   | 'upload to vehicle 2 failed: no MISSION_REQUEST for item 0 in 1 s (MISSION_COUNT sent 2 times)'
+        'for transfers from now on' | config(100, 2500, 6000)    || ['0.0 COUNT 5', '2.5 COUNT 5', '5.0 COUNT 5'] | 6.0d   | 'upload to vehicle 2 failed: no MISSION_REQUEST for item 0 in 6 s (MISSION_COUNT sent 3 times)'
+        'give-up = longest timeout' | config(1000, 1000, 1000)   || ['0.0 COUNT 5']                               | 1.0d   | 'upload to vehicle 2 failed: no MISSION_REQUEST for item 0 in 1 s (MISSION_COUNT sent 1 time)'
     }
 
-    def "an item lost is sent again exactly one timeout after it was last sent; a repeated request counts as a try; the fifth unanswered send fails"() {
-        given: 'the spec is the vehicle'
-        def up = timed(transfers.upload().upload(intended()))
+    static MissionTransferConfig config(long minMs, long maxMs, long giveUpMs) {
+        new MissionTransferConfig(new LinkTimeouts(Duration.ofMillis(minMs), Duration.ofMillis(maxMs), Duration.ofMillis(giveUpMs)),
+                TransferPath.ITEMS)
+    }
 
-        when: 'requests for items 0 and 1, item 1 then lost'
-        channel.receive(request(0))
+    def "the timeout follows the measured round trip; a missing request brings the item again and the next; the request for that next one, in flight, is not answered"() {
+        given: 'the spec is the vehicle, 200 ms away (round trip)'
+        def statuses = []
+        def up = timed(transfers.upload().upload(intended(), config, { TransferStatus s -> statuses << s }))
+
+        when: 'COUNT answered after 200 ms: round trip 200 ms, deviation 100 ms, timeout 600 ms'
         runTo(0.2)
-        channel.receive(request(1))
-        runTo(1.699)
+        channel.receive(request(0))
 
         then:
-        sentNow() == ['0.0 COUNT 5', '0.0 ITEM 0', '0.2 ITEM 1']
+        channel.roundTrip.smoothedNanos() == 200_000_000
+        channel.roundTrip.timeoutNanos(0) == 600_000_000
+
+        when: 'item 0 answered after 200 ms: deviation 75 ms, timeout 500 ms; item 1 then lost'
+        runTo(0.4)
+        channel.receive(request(1))
+        runTo(0.899)
+
+        then:
+        channel.roundTrip.timeoutNanos(0) == 500_000_000
+        sentNow() == ['0.0 COUNT 5', '0.2 ITEM 0', '0.4 ITEM 1']
+
+        when: 'no request for item 2 within 500 ms'
+        runTo(0.9)
+
+        then: 'item 1 again and item 2, which ArduPilot takes as the one it expects'
+        sentNow() == ['0.0 COUNT 5', '0.2 ITEM 0', '0.4 ITEM 1', '0.9 ITEM 1', '0.9 ITEM 2']
+
+        when: 'the vehicle got both: its request for item 2 comes while item 2 is in flight, then the one for item 3'
+        runTo(1.05)
+        channel.receive(request(2))
+
+        then: 'not answered'
+        sentNow().size() == 5
 
         when:
-        runTo(1.7)
+        runTo(1.1)
+        channel.receive(request(3))
 
-        then: 'sent again 1.5 s after it was sent'
-        sentNow() == ['0.0 COUNT 5', '0.0 ITEM 0', '0.2 ITEM 1', '1.7 ITEM 1']
+        then: 'item 1 went twice: its answer is no sample (Karn); item 2 went once: 200 ms, timeout 425 ms'
+        sentNow().last() == '1.1 ITEM 3'
+        channel.roundTrip.samples() == 3
+        channel.roundTrip.timeoutNanos(0) == 425_000_000
 
-        when: 'the vehicle asks for item 2 at 2.0 s, and again at 2.5 s, then falls silent'
-        runTo(2.0)
-        channel.receive(request(2))
-        runTo(2.5)
-        channel.receive(request(2))
-        runTo(8.499)
+        when: 'the vehicle falls silent for a while'
+        runTo(3.874)
 
-        then: 'the timer restarts at each send: 4.0, 5.5, 7.0 s'
-        sentNow() == ['0.0 COUNT 5', '0.0 ITEM 0', '0.2 ITEM 1', '1.7 ITEM 1',
-                      '2.0 ITEM 2', '2.5 ITEM 2', '4.0 ITEM 2', '5.5 ITEM 2', '7.0 ITEM 2']
-        !up.done
+        then: 'items 3 and 4 again after 425 ms, then after twice and four times that (backed off), at most 1.5 s'
+        channel.repeats() == ['0.9 ITEM 1', '1.525 ITEM 3', '2.375 ITEM 3', '2.375 ITEM 4']
+        sentNow().takeRight(4) == ['1.525 ITEM 3', '1.525 ITEM 4', '2.375 ITEM 3', '2.375 ITEM 4']
 
         when:
-        runTo(8.5)
+        runTo(3.875)
 
-        then: 'five sends of item 2 without a request for item 3'
-        endOf(up) == 8.5d
-        up.get().error() == 'upload to vehicle 2 failed: no MISSION_REQUEST for item 3 after item 2 (NAV_WAYPOINT) was sent 5 times (1.5 s apart)'
-        up.get().resends() == 5
+        then:
+        sentNow().takeRight(2) == ['3.875 ITEM 3', '3.875 ITEM 4']
+
+        when: 'the vehicle asks for item 4 (in flight: not answered) and accepts it'
+        runTo(4.0)
+        channel.receive(request(4))
+        channel.receive(ack(ACCEPTED))
+
+        then:
+        with(up.get()) {
+            success()
+            !verified()
+            resends() == 6
+            ignoredAcks() == 0
+        }
+        endOf(up) == 4.0d
+        sentNow().size() == 12
+
+        and: 'progress as items advance, with the resends so far'
+        statuses.collect { "${it.done()}/${it.total()} ${it.resends()}".toString() } ==
+                ['0/5 0', '1/5 0', '2/5 1', '3/5 1', '4/5 6', '5/5 6']
+        statuses.every { it.path() == TransferPath.ITEMS && it.upload() }
+    }
+
+    def "a vehicle that keeps asking for the next item, however slowly, never makes the upload give up"() {
+        given: 'the spec is the vehicle: each answer 9 s after the last, each within the 10 s without progress'
+        def up = timed(transfers.upload().upload(intended().take(3)))
+
+        when:
+        [0, 1, 2].each { seq ->
+            runTo(9.0 * (seq + 1))
+            channel.receive(request(seq))
+        }
+        runTo(36)
+        channel.receive(ack(ACCEPTED))
+
+        then: '36 s, while five sends of one message without an answer (7.5 s) failed it before'
+        up.get().success()
+        endOf(up) == 36.0d
+        sentNow().count { it.endsWith('COUNT 3') } == 7
+    }
+
+    def "a vehicle lost at item 2: items 2 and 3 again at each timeout, backed off twice, and the upload fails 10 s after the request for item 2"() {
+        given:
+        vehicle(['silentAt'], 2)
+
+        when:
+        def up = timed(transfers.upload().upload(intended()))
+        run()
+
+        then:
+        endOf(up) == 10.0d
+        up.get().error() == 'upload to vehicle 2 failed: no MISSION_REQUEST for item 3 in 10 s (item 2 sent 52 times) (vehicle 2 is lost: no heartbeat within 5 s)'
+        def times = channel.repeats().findAll { it.endsWith('ITEM 2') }*.split(' ')*.getAt(0)
+        times.take(5) == ['0.05', '0.15', '0.35', '0.55', '0.75']
+        times.size() == 51
+        times.last() == '9.95'
+        up.get().resends() == 51 + 50
+    }
+
+    static final String READ_BACK = 'the final ACK was lost; the vehicle holds the whole mission, read back'
+
+    def "a MAV_MISSION_ERROR after the last item (its final ACK lost, the item repeated) is settled by reading the mission back: equal, verified"() {
+        given:
+        def vehicle = vehicle(['ackLost'])
+
+        when:
+        def up = timed(transfers.upload().upload(intended()))
+        run()
+        def r = up.get()
+
+        then: 'one transfer: the upload, then the download inside it'
+        channel.conversation.drop(10) == ['0.0 > ITEM 4', '0.05 > ITEM 4', '0.05 < ACK ERROR', '0.05 > REQUEST_LIST', '0.05 < COUNT 5',
+                                          '0.05 > REQUEST_INT 0', '0.05 > REQUEST_INT 1', '0.05 > REQUEST_INT 2', '0.05 > REQUEST_INT 3',
+                                          '0.05 < ITEM 0', '0.05 > REQUEST_INT 4', '0.05 < ITEM 1', '0.05 < ITEM 2', '0.05 < ITEM 3',
+                                          '0.05 < ITEM 4', '0.05 > ACK ACCEPTED']
+        with(r) {
+            success()
+            verified()
+            note() == READ_BACK
+            items() == intended()
+            resends() == 1
+        }
+        endOf(up) == 0.05d
+        vehicle.stored == intended()
+    }
+
+    def "a refused last item (MAV_MISSION_ERROR) is settled the same way: the list read back differs, the upload fails saying both"() {
+        given:
+        def vehicle = vehicle(['errorAck'], 4, MAV_MISSION_RESULT.MAV_MISSION_ERROR)
+
+        when:
+        def up = timed(transfers.upload().upload(intended()))
+        run()
+        def r = up.get()
+
+        then:
+        !r.success()
+        r.error().startsWith('upload to vehicle 2 failed: item 4 (NAV_WAYPOINT): MAV_MISSION_ERROR (frame GLOBAL_INT, params ')
+        r.error().endsWith('; read back, the vehicle has 0 items (home included), 5 were sent')
+        endOf(up) == 0.0d
+        sentNow().takeRight(2) == ['0.0 REQUEST_LIST', '0.0 ACK ACCEPTED']
+    }
+
+    def "silence after the last item until the give-up is settled by reading back: the vehicle had it all, verified"() {
+        given: 'the final ACK and the answers to the repeated last item never arrive'
+        vehicle(['noAck'])
+
+        when:
+        def up = timed(transfers.upload().upload(intended()))
+        run()
+        def r = up.get()
+
+        then: 'the last item again at each timeout, then at 10 s the read-back'
+        channel.repeats().findAll { it.endsWith('ITEM 4') }.size() == 51
+        with(r) {
+            success()
+            verified()
+            note() == READ_BACK
+            resends() == 51
+        }
+        endOf(up) == 10.0d
+    }
+
+    def "silence after the last item, and the read-back failing too: the upload fails with both reasons"() {
+        given: 'the vehicle takes the last item and falls silent'
+        def vehicle = vehicle(['silentAfterLast'])
+
+        when:
+        def up = timed(transfers.upload().upload(intended()))
+        run()
+
+        then:
+        up.get().error() == 'upload to vehicle 2 failed: no MISSION_ACK in 10 s (item 4 sent 52 times); reading the mission back' +
+                ' failed: no MISSION_COUNT in 10 s (MISSION_REQUEST_LIST sent 52 times) (vehicle 2 is lost: no heartbeat within 5 s)'
+        endOf(up) == 20.0d
+        vehicle.stored == intended()
     }
 
     def "INVALID_SEQUENCE ACKs (a duplicated item on a noisy link) are ignored and counted; the upload goes on"() {
         given:
         def up = timed(transfers.upload().upload(intended().take(3)))
 
-        when:
+        when: 'answers 200 ms after each send (timeout 600 ms, then 500 ms)'
+        runTo(0.2)
         channel.receive(request(0))
         channel.receive(ack(INVALID_SEQUENCE))
-        runTo(1.0)
+        runTo(0.4)
         channel.receive(request(1))
         channel.receive(ack(INVALID_SEQUENCE))
         channel.receive(request(2))
 
         then:
         !up.done
-        sentNow() == ['0.0 COUNT 3', '0.0 ITEM 0', '1.0 ITEM 1', '1.0 ITEM 2']
+        sentNow() == ['0.0 COUNT 3', '0.2 ITEM 0', '0.4 ITEM 1', '0.4 ITEM 2']
 
         when:
         channel.receive(ack(ACCEPTED))
@@ -322,7 +485,7 @@ class MissionTransferSpec extends Specification {
             ignoredAcks() == 2
             resends() == 0
         }
-        endOf(up) == 1.0d
+        endOf(up) == 0.4d
     }
 
     @Unroll
@@ -445,7 +608,7 @@ class MissionTransferSpec extends Specification {
         run()
 
         then:
-        up.get().error() == 'upload to vehicle 2 failed: no MISSION_ACK after 5 MISSION_COUNTs (1.5 s apart)'
+        up.get().error() == 'upload to vehicle 2 failed: no MISSION_ACK in 10 s (MISSION_COUNT sent 7 times)'
     }
 
     // ---- download
@@ -476,26 +639,27 @@ class MissionTransferSpec extends Specification {
         where:
         fault               | faults         | faultSeq | stored     || endsAt | repeats
         'no fault'          | []             | -1       | intended() || 0.0d   | []
-        'item 3 lost'       | ['dlItemLost'] | 3        | intended() || 1.5d   | ['1.5 REQUEST_INT 3']
+        'item 3 lost'       | ['dlItemLost'] | 3        | intended() || 0.05d  | ['0.05 REQUEST_INT 3']
         'REQUEST_LIST lost' | ['listLost']   | -1       | intended() || 1.5d   | ['1.5 REQUEST_LIST']
         'an empty mission'  | []             | -1       | []         || 0.0d   | []
     }
 
-    def "a download as ArduPilot answers it: REQUEST_LIST, the COUNT, a MISSION_REQUEST_INT per item, our ACK"() {
+    def "a download as ArduPilot answers it: REQUEST_LIST, the COUNT, a MISSION_REQUEST_INT per item, four at most outstanding, our ACK"() {
         given:
-        vehicle().stored = intended().take(3)
+        vehicle().stored = intended()
 
         when:
         def down = transfers.download().download()
         run()
 
         then:
-        down.get().items() == intended().take(3)
-        channel.conversation == ['0.0 > REQUEST_LIST', '0.0 < COUNT 3', '0.0 > REQUEST_INT 0', '0.0 < ITEM 0', '0.0 > REQUEST_INT 1',
-                                 '0.0 < ITEM 1', '0.0 > REQUEST_INT 2', '0.0 < ITEM 2', '0.0 > ACK ACCEPTED']
+        down.get().items() == intended()
+        channel.conversation == ['0.0 > REQUEST_LIST', '0.0 < COUNT 5', '0.0 > REQUEST_INT 0', '0.0 > REQUEST_INT 1', '0.0 > REQUEST_INT 2',
+                                 '0.0 > REQUEST_INT 3', '0.0 < ITEM 0', '0.0 > REQUEST_INT 4', '0.0 < ITEM 1', '0.0 < ITEM 2', '0.0 < ITEM 3',
+                                 '0.0 < ITEM 4', '0.0 > ACK ACCEPTED']
     }
 
-    def "a vehicle that never answers MISSION_REQUEST_LIST fails the download after 5 of them, 1.5 s apart"() {
+    def "a vehicle that never answers MISSION_REQUEST_LIST fails the download 10 s on, after 7 of them, 1.5 s apart"() {
         given:
         vehicle().silent = true
 
@@ -504,53 +668,56 @@ class MissionTransferSpec extends Specification {
         run()
 
         then:
-        sentNow() == ['0.0 REQUEST_LIST', '1.5 REQUEST_LIST', '3.0 REQUEST_LIST', '4.5 REQUEST_LIST', '6.0 REQUEST_LIST']
-        endOf(down) == 7.5d
-        down.get().error() == 'download from vehicle 2 failed: no MISSION_COUNT after 5 MISSION_REQUEST_LISTs (1.5 s apart)' +
+        sentNow() == ['0.0 REQUEST_LIST', '1.5 REQUEST_LIST', '3.0 REQUEST_LIST', '4.5 REQUEST_LIST', '6.0 REQUEST_LIST',
+                      '7.5 REQUEST_LIST', '9.0 REQUEST_LIST']
+        endOf(down) == 10.0d
+        down.get().error() == 'download from vehicle 2 failed: no MISSION_COUNT in 10 s (MISSION_REQUEST_LIST sent 7 times)' +
                 ' (vehicle 2 is lost: no heartbeat within 5 s)'
-        down.get().resends() == 4
+        down.get().resends() == 6
     }
 
-    def "a download's MISSION_REQUEST_INT is sent again at each timeout; five unanswered fail the download naming the item"() {
+    def "a download's MISSION_REQUEST_INT is sent again at each timeout, backed off; 10 s without the item fail the download naming it"() {
         given: 'a vehicle that never answers the request for item 3'
         def vehicle = vehicle(['dlItemNever'], 3)
         vehicle.stored = intended()
 
         when:
         def down = timed(transfers.download().download())
-        runTo(1.499)
+        runTo(0.049)
 
         then:
-        sentNow() == ['0.0 REQUEST_LIST', '0.0 REQUEST_INT 0', '0.0 REQUEST_INT 1', '0.0 REQUEST_INT 2', '0.0 REQUEST_INT 3']
+        sentNow() == ['0.0 REQUEST_LIST', '0.0 REQUEST_INT 0', '0.0 REQUEST_INT 1', '0.0 REQUEST_INT 2', '0.0 REQUEST_INT 3',
+                      '0.0 REQUEST_INT 4']
 
         when:
         run()
 
-        then:
-        channel.repeats() == ['1.5 REQUEST_INT 3', '3.0 REQUEST_INT 3', '4.5 REQUEST_INT 3', '6.0 REQUEST_INT 3']
-        endOf(down) == 7.5d
-        down.get().error() == 'download from vehicle 2 failed: no item 3 of 5 after 5 MISSION_REQUEST_INTs (1.5 s apart)'
+        then: '50 ms (the shortest), doubled per timeout in a row, twice at most'
+        channel.repeats().take(5) == ['0.05', '0.15', '0.35', '0.55', '0.75'].collect { "$it REQUEST_INT 3".toString() }
+        channel.repeats().size() == 51
+        endOf(down) == 10.0d
+        down.get().error() == 'download from vehicle 2 failed: no item 3 of 5 in 10 s (MISSION_REQUEST_INT sent 52 times)'
         !sentNow().any { it.contains('ACK') }
     }
 
-    def "a download ignores a second MISSION_COUNT, items it did not ask for, and INVALID_SEQUENCE ACKs (counted)"() {
+    def "a download ignores a second MISSION_COUNT, items it did not ask for, duplicates and INVALID_SEQUENCE ACKs (counted); items may come in any order"() {
         given: 'the spec is the vehicle'
         def down = timed(transfers.download().download())
 
         when:
         channel.receive(count(2))
         channel.receive(count(7))                   // answers a duplicated REQUEST_LIST
-        channel.receive(itemInt(intended()[1]))     // not asked for
+        channel.receive(itemInt(intended()[3]))     // not asked for
         channel.receive(ack(INVALID_SEQUENCE))      // from an earlier upload, late
-        channel.receive(itemInt(intended()[0]))
-        channel.receive(itemInt(intended()[0]))     // a duplicate
+        channel.receive(itemInt(intended()[1]))     // before item 0
+        channel.receive(itemInt(intended()[1]))     // a duplicate
 
         then:
         sentNow() == ['0.0 REQUEST_LIST', '0.0 REQUEST_INT 0', '0.0 REQUEST_INT 1']
         !down.done
 
         when:
-        channel.receive(itemInt(intended()[1]))
+        channel.receive(itemInt(intended()[0]))
 
         then:
         with(down.get()) {
@@ -559,6 +726,43 @@ class MissionTransferSpec extends Specification {
             resends() == 0
         }
         sentNow().last() == '0.0 ACK ACCEPTED'
+    }
+
+    def "a download with four requests outstanding: a lost item's request goes again at the timeout, alone; the window slides past it"() {
+        given: 'the spec is the vehicle, 100 ms away'
+        def down = timed(transfers.download().download())
+        runTo(0.1)
+        channel.receive(count(6))
+
+        when: 'items 1 and 2 come back, out of order; item 0 is lost'
+        runTo(0.2)
+        channel.receive(itemInt(intended()[2]))
+        channel.receive(itemInt(intended()[1]))
+
+        then: 'two more requested as two came'
+        sentNow() == ['0.0 REQUEST_LIST', '0.1 REQUEST_INT 0', '0.1 REQUEST_INT 1', '0.1 REQUEST_INT 2', '0.1 REQUEST_INT 3',
+                      '0.2 REQUEST_INT 4', '0.2 REQUEST_INT 5']
+
+        when: 'item 3 comes: four samples of 100 ms, timeout 184 ms; it passes for item 0 at 0.284 s'
+        channel.receive(itemInt(intended()[3]))
+        runTo(0.35)
+
+        then: 'request 0 goes again, alone: 4 and 5 are not yet due'
+        channel.repeats() == ['0.284 REQUEST_INT 0']
+
+        when:
+        channel.receive(itemInt(intended()[0]))
+        channel.receive(itemInt(intended()[4]))
+        channel.receive(itemInt(intended()[4]))
+        channel.receive(itemInt(MissionItem.command(5, MAV_CMD.MAV_CMD_DO_CHANGE_SPEED, 0, 3, -1, 0)))
+
+        then:
+        with(down.get()) {
+            items()*.seq() == [0, 1, 2, 3, 4, 5]
+            items().take(5) == intended()
+            resends() == 1
+        }
+        sentNow().last() == '0.35 ACK ACCEPTED'
     }
 
     def "an error ACK fails the download, saying what it answered"() {
@@ -578,7 +782,8 @@ class MissionTransferSpec extends Specification {
 
         then:
         failed.get().error() == 'download from vehicle 2 failed: MAV_MISSION_ERROR (answering the request for item 2 of 5)'
-        sentNow() == ['0.0 REQUEST_LIST', '0.0 REQUEST_LIST', '0.0 REQUEST_INT 0', '0.0 REQUEST_INT 1', '0.0 REQUEST_INT 2']
+        sentNow() == ['0.0 REQUEST_LIST', '0.0 REQUEST_LIST', '0.0 REQUEST_INT 0', '0.0 REQUEST_INT 1', '0.0 REQUEST_INT 2',
+                      '0.0 REQUEST_INT 3', '0.0 REQUEST_INT 4']
     }
 
     def "a vehicle answering with the float MISSION_ITEM: its degrees become degE7 (to float precision), the rest as sent"() {
@@ -629,17 +834,17 @@ class MissionTransferSpec extends Specification {
     }
 
     def "the queue moves on when a transfer fails: the next one starts at the failure's clock time"() {
-        given: 'a vehicle deaf for 7.5 s'
+        given: 'a vehicle deaf for 10 s'
         channel.receiver = null
 
         when:
         def up = timed(transfers.upload().upload(intended()))
         def down = timed(transfers.download().download())
-        runTo(7.5)
+        runTo(10)
 
         then:
         !up.get().success()
-        sentNow().takeRight(2) == ['6.0 COUNT 5', '7.5 REQUEST_LIST']
+        sentNow().takeRight(2) == ['9.0 COUNT 5', '10.0 REQUEST_LIST']
         !down.done
 
         when: 'the vehicle answers again'
@@ -648,7 +853,7 @@ class MissionTransferSpec extends Specification {
 
         then:
         down.get().items() == intended()
-        endOf(down) == 9.0d
+        endOf(down) == 11.5d
     }
 
     def "a late ACK of the previous upload, arriving at the next one's MISSION_COUNT, is ignored and counted"() {
@@ -744,8 +949,8 @@ class MissionTransferSpec extends Specification {
         run()
 
         then:
-        failed.get().error() == 'upload of the rally points to vehicle 2 failed: no MISSION_REQUEST after 5 MISSION_COUNTs (1.5 s apart)'
-        failedDown.get().error() == 'download of the fence from vehicle 2 failed: no MISSION_COUNT after 5 MISSION_REQUEST_LISTs (1.5 s apart)'
+        failed.get().error() == 'upload of the rally points to vehicle 2 failed: no MISSION_REQUEST for item 0 in 10 s (MISSION_COUNT sent 52 times)'
+        failedDown.get().error() == 'download of the fence from vehicle 2 failed: no MISSION_COUNT in 10 s (MISSION_REQUEST_LIST sent 52 times)'
     }
 
     def "a transfer that ended keeps its result: later messages and timeouts change nothing"() {

@@ -109,8 +109,10 @@ class RecordingChannel implements VehicleChannel {
         sent.findAll { !seen.add(describe(it.message)) }.collect { it.toString() }
     }
 
+    /** "0.0", "1.5", "1.525": to the millisecond, at least one decimal. */
     static String seconds(double t) {
-        String.format(Locale.ROOT, '%.1f', t)
+        BigDecimal s = BigDecimal.valueOf(Math.round(t * 1000), 3).stripTrailingZeros()
+        (s.scale() < 1 ? s.setScale(1) : s).toPlainString()
     }
 
     /** "COUNT 5", "REQUEST_INT 3", "ITEM 2", "ACK ACCEPTED", "REQUEST_LIST"; " (fence)" or " (rally points)" for those lists. */

@@ -19,10 +19,13 @@ import java.time.Duration
  * and a manual clock, with no socket and no thread: MISSION_REQUEST during an upload,
  * INVALID_SEQUENCE for an item out of order, a COUNT clears the list, one list per mission type.
  * It answers each message when it gets it; its answers reach the transfers after {@link #latency}
- * of clock time (zero: at the same clock time, when the clock is advanced). Faults by name:
+ * of clock time (zero: at the same clock time, when the clock is advanced). An item when no upload
+ * is in progress gets MAV_MISSION_ERROR, as from ArduPilot. Faults by name:
  * countLost (the first COUNT), denyCount (errorAck answers COUNT), itemLost (item faultSeq, the
- * first time), duplicateRequests, reorderedRequests, errorAck (result errorAck at item faultSeq),
- * noAck, outOfRange, silentAt (item faultSeq: the vehicle falls silent), requestInt, listLost (the
+ * first time), requestLost (the first request for item faultSeq), duplicateRequests,
+ * reorderedRequests, errorAck (result errorAck at item faultSeq), ackLost (the final ACK, the first
+ * time), noAck (no final ACK, and no answer to items after the last), silentAfterLast (the vehicle takes the last
+ * item, then falls silent), outOfRange, silentAt (item faultSeq: the vehicle falls silent), requestInt, listLost (the
  * first REQUEST_LIST), denyList (errorAck answers REQUEST_LIST), dlItemLost (the first request for
  * item faultSeq), dlItemNever (every request for item faultSeq), floatItems (downloads answered
  * with the float MISSION_ITEM).
@@ -113,6 +116,9 @@ class ScriptedMissionVehicle {
             return
         }
         if (expected < 0 || MissionType.of(m.mission_type) != uploading) {
+            if (!faults.contains('noAck')) {
+                reply(ack(MAV_MISSION_RESULT.MAV_MISSION_ERROR, MissionType.of(m.mission_type)))  // no upload in progress
+            }
             return
         }
         if (seq != expected) {
@@ -135,7 +141,9 @@ class ScriptedMissionVehicle {
         } else if (expected == incoming.length) {
             lists[uploading] = incoming as List
             expected = -1
-            if (!faults.contains('noAck')) {
+            if (faults.contains('silentAfterLast')) {
+                setSilent(true)
+            } else if (!faults.contains('noAck') && !(faults.contains('ackLost') && first('ack'))) {
                 reply(ack(MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED, uploading))
             }
         } else if (faults.contains('reorderedRequests') && seq >= 1) {
@@ -147,6 +155,9 @@ class ScriptedMissionVehicle {
     }
 
     private void ask(int seq) {
+        if (faults.contains('requestLost') && seq == faultSeq && first('request')) {
+            return
+        }
         MAVLinkMessage r = faults.contains('requestInt') ? requestInt(seq, uploading) : request(seq, uploading)
         reply(r)
         if (faults.contains('duplicateRequests')) {
