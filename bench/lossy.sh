@@ -5,10 +5,11 @@
 # and seed), every upload verified against the simulated vehicle's stored list. Real UDP on
 # 127.0.0.1, real time. Plain Java main (dolphin.bench.LossyUploadBench). See bench/README.md.
 #
-#   bench/lossy.sh [--no-build] [--quick] [--baseline REV | --baseline-jar JAR] [--rounds N] [--cell-seconds S] [--deadline S]
+#   bench/lossy.sh [--no-build] [--quick] [--lossless] [--baseline REV | --baseline-jar JAR] [--rounds N] [--cell-seconds S] [--deadline S]
 #
 # --quick: 3 lossless rounds, lossy 10 and 100 items only, at most 2 rounds a cell, reference deadline 20 s
 #   (under 2 minutes).
+# --lossless: only the lossless rounds (with --baseline, the before/after check alone; about a minute).
 # --baseline REV: also builds the main project at git revision REV (once, in bench/target/baseline-REV)
 #   and compares its lossless uploads with this tree's, each in a JVM of its own (UploadServer);
 #   --baseline-jar JAR: the same with a jar already built (its runtime classpath in JAR's lib/).

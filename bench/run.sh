@@ -14,8 +14,8 @@
 # otherwise, e.g. `bench/run.sh -wi 5 -i 10`), runs pymavlink_parse.py on the same file with the
 # project's venv Python, and prints the summary (also in bench/target/results/summary.txt).
 # DOLPHIN_JAR=path/to/dolphin.jar measures that jar instead of target/dolphin.jar (before/after).
-# Takes about 1.5 minutes on 2 cores once Maven's cache is warm, plus about 2 minutes for the upload
-# benchmark, 10 for the lossy links and 4 for the fleet.
+# Takes about 1.5 minutes on 2 cores once Maven's cache is warm, plus about 10 seconds for the upload
+# benchmark, 10 minutes for the lossy links and 4 for the fleet.
 set -euo pipefail
 bench="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(dirname "$bench")"

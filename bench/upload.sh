@@ -7,10 +7,10 @@
 #
 #   bench/upload.sh [--no-build] [--quick]
 #
-# --quick: 3 runs per size instead of 21 (a smoke test, about 20 s).
+# --quick: 3 runs per size instead of 21 (a smoke test, a few seconds).
 # Prints the summary, also in bench/target/results/upload-summary.txt; every sample is in
 # upload.json and pymavlink-upload.json there. Exit status 1 if an upload failed or did not verify.
-# Takes about a minute on 2 cores.
+# Takes about 10 seconds on 2 cores.
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 
 if [ "${1:-}" = "--no-build" ]; then shift; else "$bench/build.sh"; fi
