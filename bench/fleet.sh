@@ -14,10 +14,7 @@
 # Prints the summary, also in bench/target/results/fleet-summary.txt; every reaction time is in
 # fleet.json there. Exit status 1 if a run did not complete or a vehicle was not cut.
 # Takes about 3 minutes on 2 cores.
-set -euo pipefail
-bench="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-root="$(dirname "$bench")"
-out="$bench/target/results"
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 
 if [ "${1:-}" = "--no-build" ]; then shift; else "$bench/build.sh"; fi
 web=()
@@ -25,11 +22,5 @@ if [ "${1:-}" = "--web" ]; then web=(--web); shift; fi
 if [ "${1:-}" = "--flood" ]; then web=(--flood "$2"); shift 2; fi
 sizes=("$@")
 [ ${#sizes[@]} -gt 0 ] || sizes=(50 250 1000)
-jar="${DOLPHIN_JAR:-$root/target/dolphin.jar}"
-for f in "$jar" "$bench/target/classes/dolphin/bench/FleetBench.class"; do
-  [ -e "$f" ] || { echo "bench/fleet.sh: missing $f (run without --no-build)" >&2; exit 1; }
-done
-mkdir -p "$out"
 echo "== fleet scale: ${sizes[*]} vehicles" >&2
-java -Dorg.slf4j.simpleLogger.defaultLogLevel=warn -cp "$bench/target/classes:$bench/target/lib/*:$jar:$root/target/lib/*" \
-  dolphin.bench.FleetBench "$out" "$bench/fleet.dolphin" "$(command -v java)" "$jar:$root/target/lib/*" "${web[@]}" "${sizes[@]}"
+bench_main fleet.sh FleetBench "$out" "$bench/fleet.dolphin" "$(command -v java)" "$jar:$root/target/lib/*" "${web[@]}" "${sizes[@]}"

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # The benchmarks (bench/README.md): the codec throughput benchmark (dolphin.mavlink.codec, JMH, one
 # thread, against pymavlink's parser on the same bytes), then the mission upload benchmark
-# (bench/upload.sh: dolphin's uploader against the protocol floor and a pymavlink uploader), then
-# the fleet-scale benchmark (bench/fleet.sh: 50, 250 and 1000 simulated vehicles).
+# (bench/upload.sh: dolphin's uploader against the protocol floor and a pymavlink uploader), the
+# lossy-link upload benchmark (bench/lossy.sh: 0-30 % loss against a pymavlink wp load reference),
+# then the fleet-scale benchmark (bench/fleet.sh: 50, 250 and 1000 simulated vehicles).
 #
 #   bench/run.sh [--no-build] [JMH options...]
-#   BENCH=codec bench/run.sh ...     # only the codec benchmark; BENCH=upload or BENCH=fleet: only that one
+#   BENCH=codec bench/run.sh ...     # only the codec benchmark; BENCH=upload, lossy or fleet: only that one
 #
 # Builds the main project (its jar, runtime classpath and .venv with the pinned pymavlink) and
 # this benchmark project, writes the mixed stream to bench/target/results/stream.bin, runs the
@@ -13,8 +14,8 @@
 # otherwise, e.g. `bench/run.sh -wi 5 -i 10`), runs pymavlink_parse.py on the same file with the
 # project's venv Python, and prints the summary (also in bench/target/results/summary.txt).
 # DOLPHIN_JAR=path/to/dolphin.jar measures that jar instead of target/dolphin.jar (before/after).
-# Takes about 1.5 minutes on 2 cores once Maven's cache is warm, plus about 2 minutes for the upload
-# benchmark and 4 for the fleet.
+# Takes about 1.5 minutes on 2 cores once Maven's cache is warm, plus about 10 seconds for the upload
+# benchmark, 10 minutes for the lossy links and 4 for the fleet.
 set -euo pipefail
 bench="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(dirname "$bench")"
@@ -23,7 +24,7 @@ frames=10000   # CodecBenchmark.FRAMES
 which="${BENCH:-all}"
 
 if [ "${1:-}" = "--no-build" ]; then shift; else "$bench/build.sh"; fi
-if [ "$which" = upload ] || [ "$which" = fleet ]; then
+if [ "$which" = upload ] || [ "$which" = lossy ] || [ "$which" = fleet ]; then
   exec "$bench/$which.sh" --no-build
 fi
 for f in "${DOLPHIN_JAR:-$root/target/dolphin.jar}" "$root/.venv/bin/python" "$bench/target/classes/META-INF/BenchmarkList"; do
@@ -98,6 +99,8 @@ PY
 if [ "$which" = all ]; then
   echo >&2
   "$bench/upload.sh" --no-build
+  echo >&2
+  "$bench/lossy.sh" --no-build
   echo >&2
   "$bench/fleet.sh" --no-build
 fi

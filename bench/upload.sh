@@ -2,27 +2,17 @@
 # Mission upload benchmark: dolphin's MissionUploadProtocol against a simulated copter over loopback
 # UDP (real-time clock), compared in the same run with the protocol floor (N + 2 COMMAND_LONG /
 # COMMAND_ACK round trips on the same link) and with a pymavlink uploader (pymavlink_upload.py)
-# against the same kind of simulated vehicle; then 50 uploads at 10% and 30% loss both ways.
+# against the same kind of simulated vehicle. Lossy links: bench/lossy.sh.
 # Plain Java main (dolphin.bench.UploadBench), not JMH. See bench/README.md.
 #
 #   bench/upload.sh [--no-build] [--quick]
 #
-# --quick: 3 runs per size and 8 lossy uploads instead of 21 and 50 (a smoke test, about 40 s).
+# --quick: 3 runs per size instead of 21 (a smoke test, a few seconds).
 # Prints the summary, also in bench/target/results/upload-summary.txt; every sample is in
 # upload.json and pymavlink-upload.json there. Exit status 1 if an upload failed or did not verify.
-# Takes about 2 minutes on 2 cores (the 30% loss uploads are most of it).
-set -euo pipefail
-bench="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-root="$(dirname "$bench")"
-out="$bench/target/results"
+# Takes about 10 seconds on 2 cores.
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 
 if [ "${1:-}" = "--no-build" ]; then shift; else "$bench/build.sh"; fi
-jar="${DOLPHIN_JAR:-$root/target/dolphin.jar}"
-for f in "$jar" "$root/.venv/bin/python" "$bench/target/classes/dolphin/bench/UploadBench.class"; do
-  [ -e "$f" ] || { echo "bench/upload.sh: missing $f (run without --no-build)" >&2; exit 1; }
-done
-mkdir -p "$out"
-echo "== mission upload: floor, dolphin and pymavlink interleaved, then the lossy uploads" >&2
-# The simulator and the runtime log at INFO ("Flight plan received" per upload): keep that out of the summary.
-java -Dorg.slf4j.simpleLogger.defaultLogLevel=warn -cp "$bench/target/classes:$bench/target/lib/*:$jar:$root/target/lib/*" \
-  dolphin.bench.UploadBench "$out" "$root/.venv/bin/python" "$bench/pymavlink_upload.py" "$@"
+echo "== mission upload: floor, dolphin and pymavlink interleaved" >&2
+bench_main upload.sh UploadBench "$out" "$python" "$bench/pymavlink_upload.py" "$@"

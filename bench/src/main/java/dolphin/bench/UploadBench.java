@@ -6,7 +6,6 @@ import dolphin.core.Position;
 import dolphin.core.SystemClock;
 import dolphin.mavlink.CommandResult;
 import dolphin.mavlink.MAVLinkCommunications;
-import dolphin.mavlink.LinkTimeouts;
 import dolphin.mavlink.MAVLinkConfig;
 import dolphin.mavlink.MAVLinkNode;
 import dolphin.mission.flight.MissionService;
@@ -26,7 +25,6 @@ import java.net.InetSocketAddress;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
@@ -41,7 +39,7 @@ import java.util.function.BooleanSupplier;
  * End-to-end mission upload times over loopback UDP against a simulated copter (dolphin.sim) on a
  * real-time clock, compared in the same run with the protocol floor (N + 2 COMMAND_LONG /
  * COMMAND_ACK round trips on the same link) and with a pymavlink uploader (bench/pymavlink_upload.py)
- * against the same kind of simulated vehicle; then 50 uploads with 10% and 30% loss both ways.
+ * against the same kind of simulated vehicle. Lossy links: {@link LossyUploadBench}.
  * Not JMH: these are wall-clock times of whole transfers, in ms. See bench/README.md.
  *
  * <pre>UploadBench OUT_DIR PYTHON PYMAVLINK_SCRIPT [--quick]</pre>
@@ -51,8 +49,6 @@ import java.util.function.BooleanSupplier;
 public final class UploadBench {
 
     static final int[] SIZES = {10, 100, 500};
-    static final int LOSSY_SIZE = 10;
-    static final int LOSSY_UPLOADS_EACH = 25;   // of LOSSY_SIZE items at 10% and at 30%: 50 in all
     /** The floor command: MAV_CMD_REQUEST_MESSAGE for HEARTBEAT, which the simulator does not send on request: one COMMAND_ACK (FAILED) back, no other message. */
     static final int FLOOR_COMMAND = MAV_CMD.MAV_CMD_REQUEST_MESSAGE;
 
@@ -133,7 +129,8 @@ public final class UploadBench {
                 SimFleet lossless = fleet(port, 1, FaultModel.NONE);
                 fleets.add(lossless);
                 MAVLinkNode node = awaitNode(comms, "1");
-                MissionTransferConfig config = MissionTransferConfig.DEFAULT;
+                // the item protocol, which the floor's round trips stand for (the default would take FTP where offered)
+                MissionTransferConfig config = LossyUploadBench.config(TransferPath.ITEMS);
                 String ready = pyIn.readLine();
                 if (!"ready".equals(ready)) {
                     throw new IllegalStateException("pymavlink_upload.py: " + ready);
@@ -142,7 +139,7 @@ public final class UploadBench {
                 // warm-up (JIT of both sides): not measured
                 for (int i = 0; i < (quick ? 2 : 10); i++) {
                     floorMs(comms, node, 102);
-                    uploadMs(node, mission(node.getHome(), 100), config, lossless, 1, null);
+                    uploadMs(node, mission(node.getHome(), 100), config, lossless, 1);
                 }
                 for (int n : SIZES) {
                     List<MissionItem> items = mission(node.getHome(), n);
@@ -152,7 +149,7 @@ public final class UploadBench {
                     double[] q = new double[reps];
                     for (int r = 0; r < reps; r++) {          // floor, ours and pymavlink alternate: same conditions
                         f[r] = floorMs(comms, node, n + 2);
-                        double[] ud = uploadMs(node, items, config, lossless, 1, null);
+                        double[] ud = uploadMs(node, items, config, lossless, 1);
                         if (ud == null) {
                             failures++;
                             u[r] = Double.NaN;
@@ -193,36 +190,6 @@ public final class UploadBench {
                 pyFleet.close();
                 Files.writeString(out.resolve("pymavlink-upload.json"), pj == null ? "" : pj + "\n");
 
-                // ---- (4) lossy: 25 uploads at 10% (one vehicle) and 25 at 30% (three vehicles, 9 + 8 + 8), in parallel.
-                // Each vehicle has its own fleet, seeded fault model (both ways) and thread; the uploads
-                // wait on timeouts, not on the CPU, so running them side by side changes no time.
-                // The default timeouts (following the measured round trip, 50 ms to 1.5 s, giving up after 10 s
-                // without progress) over the item protocol, as every lossy upload is measured.
-                int lossyEach = quick ? 4 : LOSSY_UPLOADS_EACH;
-                MissionTransferConfig c10 = new MissionTransferConfig(LinkTimeouts.DEFAULT, TransferPath.ITEMS);
-                MissionTransferConfig c30 = c10;
-                List<Lossy> lossy = new ArrayList<>();
-                // {loss, items, sysid, seed, config, uploads}; besides the 50 uploads of 10 items, 3 of 100 items at 10%
-                Object[][] plan = {{"10%", 10, 2, 0.10, 10L, c10, lossyEach},
-                        {"30%", 10, 3, 0.30, 30L, c30, lossyEach - 2 * (lossyEach / 3)},
-                        {"30%", 10, 4, 0.30, 31L, c30, lossyEach / 3}, {"30%", 10, 5, 0.30, 32L, c30, lossyEach / 3},
-                        {"10%", 100, 6, 0.10, 60L, c10, quick ? 1 : 3}};
-                for (Object[] v : plan) {
-                    SimFleet f = fleet(port, (Integer) v[2], FaultModel.loss((Double) v[3], (Long) v[4]));
-                    fleets.add(f);
-                    lossy.add(new Lossy((String) v[0], (Integer) v[1], awaitNode(comms, String.valueOf(v[2])), f, (Integer) v[2],
-                            (MissionTransferConfig) v[5], (Integer) v[6]));
-                }
-                List<Thread> threads = new ArrayList<>();
-                for (Lossy l : lossy) {
-                    Thread t = new Thread(l, "lossy-" + l.sysid);
-                    t.start();
-                    threads.add(t);
-                }
-                for (Thread t : threads) {
-                    t.join();
-                }
-
                 // ---- report ours ------------------------------------------------------------------
                 line("");
                 line("lossless, %d runs each (after warm-up); ms, median / p90", reps);
@@ -236,36 +203,6 @@ public final class UploadBench {
                     lossless0.put(String.valueOf(n), Map.of("floor_ms", list(f), "upload_ms", list(u), "download_ms", list(oursDownload.get(n))));
                 }
                 json.put("lossless", lossless0);
-                line("");
-                line("lossy, loss both ways (seeded), each upload verified by download; ms");
-                for (String[] group : new String[][] {{"10%", "10"}, {"30%", "10"}, {"10%", "100"}}) {
-                    String name = group[0];
-                    int size = Integer.parseInt(group[1]);
-                    double base = median(ours.get(size));
-                    List<Lossy> ls = lossy.stream().filter(l -> l.name.equals(name) && l.size == size).toList();
-                    double[] times = ls.stream().flatMap(l -> l.times.stream()).mapToDouble(Double::doubleValue).toArray();
-                    double[] resends = ls.stream().flatMap(l -> l.resends.stream()).mapToDouble(Double::doubleValue).toArray();
-                    int rounds = ls.stream().mapToInt(l -> l.rounds).sum();
-                    int verified = ls.stream().mapToInt(l -> l.verified).sum();
-                    int ackLost = ls.stream().mapToInt(l -> l.ackLost).sum();
-                    int failed = ls.stream().mapToInt(l -> l.failed).sum();
-                    List<String> errors = ls.stream().flatMap(l -> l.errors.stream().map(e -> "vehicle " + l.sysid + ", " + e)).toList();
-                    MissionTransferConfig c = ls.get(0).config;
-                    failures += failed;
-                    lossyFailed += failed;
-                    lossyTotal += rounds;
-                    line("%s loss, %d items: %d/%d uploads complete and verify (%d of them ACK-lost, read back by the upload;"
-                            + " %d failed); %d vehicle(s); timeout %d to %d ms, giving up after %d s without progress", name, size,
-                            verified, rounds, ackLost, failed, ls.size(), c.timeouts().min().toMillis(), c.timeouts().max().toMillis(),
-                            c.timeouts().giveUp().toSeconds());
-                    line("   upload median %.0f / p90 %.0f / max %.0f ms = %.0f x the lossless %d-item median (%.2f ms); resends median %.0f",
-                            median(times), p90(times), max(times), median(times) / base, size, base, median(resends));
-                    json.put("lossy_" + name + "_" + size, Map.of("upload_ms", list(times), "resends", list(resends), "ack_lost", ackLost,
-                            "failed", failed, "verified", verified, "errors", errors));
-                    for (String e : errors) {
-                        line("   error: %s", e);
-                    }
-                }
             } finally {
                 fleets.forEach(SimFleet::close);
                 pyFleet.close();
@@ -302,104 +239,23 @@ public final class UploadBench {
             double r = median(ours.get(n)) / median(py.get(n));
             line("target %-52s %s (%.2fx its time)", "lossless " + n + " items faster than pymavlink", r < 1 ? "met" : "MISSED", r);
         }
-        line("target %-52s %s (%d failed)", "all " + lossyTotal + " lossy uploads complete and verify", lossyFailed == 0 ? "met" : "MISSED",
-                lossyFailed);
-        @SuppressWarnings("unchecked")
-        double r10 = median(((List<Double>) ((Map<String, Object>) json.get("lossy_10%_" + LOSSY_SIZE)).get("upload_ms")).stream()
-                .mapToDouble(Double::doubleValue).toArray()) / median(ours.get(LOSSY_SIZE));
-        line("target %-52s %s (%.0fx)", "10% loss <= 3 x lossless (" + LOSSY_SIZE + " items)", r10 <= 3 ? "met" : "MISSED", r10);
 
         Files.writeString(out.resolve("upload-summary.txt"), summary);
         Files.writeString(out.resolve("upload.json"), toJson(json));
         return failures;
     }
 
-    /** 25 uploads of 10 items to one lossy vehicle, each verified by download. */
-    final class Lossy implements Runnable {
-        final String name;
-        final MAVLinkNode node;
-        final SimFleet fleet;
-        final int sysid;
-        final MissionTransferConfig config;
-        final int rounds;
-        final List<Double> times = new ArrayList<>();
-        final List<Double> resends = new ArrayList<>();
-        final List<String> errors = new ArrayList<>();
-        int verified;
-        int ackLost;
-        int failed;
-
-        final int size;
-
-        Lossy(String name, int size, MAVLinkNode node, SimFleet fleet, int sysid, MissionTransferConfig config, int rounds) {
-            this.name = name;
-            this.size = size;
-            this.node = node;
-            this.fleet = fleet;
-            this.sysid = sysid;
-            this.config = config;
-            this.rounds = rounds;
-        }
-
-        @Override
-        public void run() {
-            for (int round = 0; round < rounds; round++) {
-                final int r = round;
-                try {
-                    // a different mission each round, so a stale vehicle mission cannot pass verification
-                    List<MissionItem> items = mission(node.getHome(), size).stream()
-                            .map(i -> i.seq() == 0 ? i : new MissionItem(i.seq(), i.command(), i.frame(), i.param1(), i.param2(),
-                                    i.param3(), i.param4(), i.x(), i.y(), i.z() + sysid * 100 + r, i.autocontinue()))
-                            .toList();
-                    int[] counts = new int[2];
-                    double[] t = uploadMs(node, items, config, fleet, sysid, counts);
-                    if (t == null) {
-                        failed++;
-                        errors.add("round " + r + ": " + lastError);
-                        continue;
-                    }
-                    times.add(t[0]);
-                    resends.add((double) counts[0]);
-                    ackLost += counts[1];
-                    verified++;
-                } catch (Exception e) {
-                    failed++;
-                    errors.add("round " + r + ": " + e);
-                }
-            }
-        }
-
-        double[] times() {
-            return times.stream().mapToDouble(Double::doubleValue).toArray();
-        }
-
-        double[] resends() {
-            return resends.stream().mapToDouble(Double::doubleValue).toArray();
-        }
-    }
-
-    private volatile String lastError;
-    private int lossyFailed;
-    private int lossyTotal;
-
     /**
-     * Uploads and then downloads to verify; returns {upload ms, download ms}, or null if it failed
-     * or did not verify. An upload whose final MISSION_ACK was lost reads the list back itself and
-     * succeeds, verified ({@link TransferResult#verified()}); counts[1] = 1 then.
+     * Uploads and then downloads to verify; returns {upload ms, download ms}, or null (and the
+     * reason printed) if it failed or did not verify.
      */
-    double[] uploadMs(MAVLinkNode node, List<MissionItem> items, MissionTransferConfig config, SimFleet fleet, int sysid,
-                      int[] counts) throws Exception {
+    double[] uploadMs(MAVLinkNode node, List<MissionItem> items, MissionTransferConfig config, SimFleet fleet, int sysid) throws Exception {
         long t0 = System.nanoTime();
         TransferResult up = MissionService.of(node.communications()).vehicle(node).transfers().upload().upload(items, config, TransferProgress.NONE).get(120, TimeUnit.SECONDS);
         long t1 = System.nanoTime();
         if (!up.success()) {
-            lastError = up.error();
+            line("upload of %d items: %s", items.size(), up.error());
             return null;
-        }
-        boolean ackLost = up.verified();
-        if (counts != null) {
-            counts[0] = up.resends();
-            counts[1] = ackLost ? 1 : 0;
         }
         long t2 = System.nanoTime();
         TransferResult down = null;
@@ -408,7 +264,7 @@ public final class UploadBench {
         }
         long t3 = System.nanoTime();
         if (!down.success()) {
-            lastError = "download: " + down.error();
+            line("download after the upload of %d items: %s", items.size(), down.error());
             return null;
         }
         String diff = MissionVerification.firstDifference(items, down.items()).orElse(null);
@@ -416,7 +272,7 @@ public final class UploadBench {
             diff = MissionVerification.firstDifference(items, fleet.vehicle(sysid).mission()).orElse(null);
         }
         if (diff != null) {
-            lastError = "verification: " + diff;
+            line("upload of %d items did not verify: %s", items.size(), diff);
             return null;
         }
         return new double[] {(t1 - t0) / 1e6, (t3 - t2) / 1e6};

@@ -70,8 +70,8 @@ final class FtpRead implements FtpSession.Owner {
             reported = d.length < 4 ? -1 : (d[0] & 0xff) | (d[1] & 0xff) << 8 | (d[2] & 0xff) << 16 | (long) (d[3] & 0xff) << 24;
             burst = session.send(FtpPayload.BURST_READ_FILE, BLOCK, 0, null);
             bursting = true;
-        } else if (!reset && FtpErrors.busy(reply.error())) {
-            // a session of ours left open (its TerminateSession lost): close them all, then open again
+        } else if (!reset && FtpErrors.busy(reply)) {
+            // sessions of ours left open (their TerminateSession lost): close them all, then open again
             reset = true;
             session.send(FtpPayload.RESET_SESSIONS, 0, 0, null);
         } else {

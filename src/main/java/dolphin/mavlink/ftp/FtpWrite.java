@@ -45,8 +45,8 @@ final class FtpWrite implements FtpSession.Owner {
             case FtpPayload.CREATE_FILE -> {
                 if (ack) {
                     next = 0;
-                } else if (!reset && FtpErrors.busy(reply.error())) {
-                    // a session of ours left open (its TerminateSession lost): close them all, then create again
+                } else if (!reset && FtpErrors.busy(reply)) {
+                    // sessions of ours left open (their TerminateSession lost): close them all, then create again
                     reset = true;
                     session.send(FtpPayload.RESET_SESSIONS, 0, 0, null);
                     return;

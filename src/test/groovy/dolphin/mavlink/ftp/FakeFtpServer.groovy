@@ -12,8 +12,9 @@ import java.time.Duration
  * no socket: requests go through a queue of 5 (more are dropped), replies echo the session with
  * seq + 1, a request repeating the last one answered gets that reply again, bursts stream 239-byte
  * packets ending with a short one (burst_complete) and an EOF NAK. Files are kept in
- * {@link #files}; @MISSION files report a fake size of 1 MiB and are parsed when closed after a
- * write: magic, an item count matching the length, no all-zero item, then {@link #refuseList}.
+ * {@link #files}; @MISSION files report a fake size of 1 MiB, at most four are open at a time,
+ * and they are parsed when closed after a write: magic, an item count matching the length, no
+ * all-zero item, then {@link #refuseList}.
  * The link may lose, duplicate and reorder packets, from a seed, or by rules
  * ({@link #dropRequest}, {@link #dropReply}); {@link #silent} answers nothing (a vehicle without FTP).
  */
@@ -21,6 +22,8 @@ class FakeFtpServer {
 
     static final int MISSION_MAGIC = 0x763d
     static final int ITEM_BYTES = 38
+    /** AP_Filesystem_Mission's open files (max_open_file): an open beyond them is refused, FailErrno ENFILE. */
+    static final int MISSION_FILES = 4
 
     final ManualClock clock
     /** Hands a reply to the client. */
@@ -133,6 +136,8 @@ class FakeFtpServer {
                 String path = name(r)
                 if (s.path != null) {
                     reply(nak(r, FtpErrors.FAIL))
+                } else if (noMissionFile(path)) {
+                    reply(nak(r, FtpErrors.FAIL_ERRNO, FtpErrors.ENFILE))
                 } else if (!files.containsKey(path)) {
                     reply(nak(r, 10))
                 } else {
@@ -145,6 +150,8 @@ class FakeFtpServer {
             case FtpPayload.CREATE_FILE:
                 if (s.path != null) {
                     reply(nak(r, FtpErrors.FAIL))
+                } else if (noMissionFile(name(r))) {
+                    reply(nak(r, FtpErrors.FAIL_ERRNO, FtpErrors.ENFILE))
                 } else {
                     s.path = name(r)
                     s.mode = 'write'
@@ -203,6 +210,11 @@ class FakeFtpServer {
     }
 
     private static boolean mission(String path) { path.startsWith('@MISSION/') }
+
+    /** Whether every @MISSION file is open already, so an @MISSION path cannot be opened. */
+    private boolean noMissionFile(String path) {
+        mission(path) && sessions.values().count { it.path != null && mission(it.path) } >= MISSION_FILES
+    }
 
     private static String name(FtpPayload r) { new String(r.data(), 0, r.size(), StandardCharsets.UTF_8) }
 

@@ -185,6 +185,21 @@ class FtpClientSpec extends Specification {
         server.requests.OpenFileRO == 2
     }
 
+    def "every @MISSION file held by sessions of ours left open (lost TerminateSessions): ENFILE, ResetSessions, then the file is created again"() {
+        given: 'four read-backs whose TerminateSession was lost: ArduPilot closes them only after 20 s without a reply'
+        (20..23).each { server.sessions[it] = [path: MISSION, mode: 'read'] }
+        byte[] file = missionFile(5)
+
+        when:
+        settle(client.write(MISSION, file, timeouts, null))
+
+        then:
+        server.files[MISSION] == file
+        server.log.any { it.contains('FailErrno') && it.contains('CreateFile') }
+        server.requests.ResetSessions == 1
+        server.requests.CreateFile == 2
+    }
+
     def "a vehicle without FTP: no answer, the read gives up after 10 s without progress, backing off"() {
         given:
         server.silent = true
