@@ -161,7 +161,10 @@ class SitlSpec extends Specification {
 
         then:
         r.result.outcome() == ScriptResult.Outcome.COMPLETED
-        inOrder(lines, "mission fenced flight on vehicle ${n}: fence verified*", "mission fenced flight on vehicle ${n}: rally points verified*",
+        // ArduCopter offers MAVLink FTP: each list goes as one file and is read back
+        inOrder(lines, "mission fenced flight on vehicle ${n}: fence verified (over FTP)",
+                "mission fenced flight on vehicle ${n}: rally points verified (over FTP)",
+                "mission fenced flight on vehicle ${n}: upload verified (over FTP)",
                 "mission fenced flight on vehicle ${n}: item 2 of 4 reached",
                 "the mission stopped: mission fenced flight on vehicle ${n}: vehicle ${n} breached its fence during item 3 of 4 (NAV_WAYPOINT) and left AUTO for RTL (its fence action)*",
                 'back home: the fence did its job')
