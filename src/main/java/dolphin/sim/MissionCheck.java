@@ -4,13 +4,18 @@ import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_FRAME;
 import com.MAVLink.enums.MAV_MISSION_RESULT;
 import dolphin.mission.model.MissionItem;
+import java.util.Map;
 import java.util.Set;
 
 /**
- * The checks ArduPilot makes on each uploaded item (AP_Mission::mavlink_int_to_mission_cmd), with
- * its MAV_MISSION_RESULT codes: commands it does not know (DO_CHANGE_ALTITUDE,
- * DO_TRIGGER_CONTROL and CONDITION_CHANGE_ALT among them) are UNSUPPORTED; commands with a position accept only the global
- * frames (and MISSION); latitude, longitude and altitude must be sane.
+ * The checks ArduPilot makes on each uploaded item (AP_Mission::mavlink_int_to_mission_cmd), in its
+ * order and with its MAV_MISSION_RESULT codes: param1 to param4 must be finite, NaN allowed only
+ * where {@link #NAN_ALLOWED} says (AP_Mission::sanity_check_params, before the command is even
+ * looked at); commands it does not know (DO_CHANGE_ALTITUDE, DO_TRIGGER_CONTROL and
+ * CONDITION_CHANGE_ALT among them) are UNSUPPORTED; a waypoint's hold time (param1) must fit 0 to
+ * 65535 s, but on ArduPlane, which ignores it and refuses SPLINE_WAYPOINT (UNSUPPORTED); commands
+ * with a position accept only the global frames (and MISSION); latitude, longitude and altitude
+ * must be sane.
  */
 final class MissionCheck {
 
@@ -36,17 +41,42 @@ final class MissionCheck {
             MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT, MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT,
             MAV_FRAME.MAV_FRAME_GLOBAL_TERRAIN_ALT_INT);
 
+    /**
+     * The params (bit 0 = param1) in which AP_Mission::sanity_check_params lets a command have NaN;
+     * every other command may have none.
+     */
+    static final Map<Integer, Integer> NAN_ALLOWED = Map.of(MAV_CMD.MAV_CMD_NAV_WAYPOINT, 0b1000,
+            MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM, 0b1000, MAV_CMD.MAV_CMD_NAV_LAND, 0b1000,
+            MAV_CMD.MAV_CMD_NAV_TAKEOFF, 0b1000, MAV_CMD.MAV_CMD_NAV_ARC_WAYPOINT, 0b1110,
+            MAV_CMD.MAV_CMD_NAV_VTOL_TAKEOFF, 0b1000, MAV_CMD.MAV_CMD_NAV_VTOL_LAND, 0b1100);
+
+    /** The MAV_MISSION_RESULT of a bad param1 to param4, in order. */
+    private static final int[] INVALID_PARAM = {MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM1,
+            MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM2, MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM3,
+            MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM4};
+
     /** ArduPilot's LOCATION_ALT_MAX_M: heights beyond it do not fit its Location. */
     static final double ALT_MAX_METRES = 83_000;
 
     private MissionCheck() {
     }
 
-    /** MAV_MISSION_ACCEPTED, or the error the vehicle answers the item with. */
-    static int result(MissionItem item) {
+    /**
+     * MAV_MISSION_ACCEPTED, or the error the vehicle answers the item with; {@code plane} for
+     * ArduPlane, whose build of AP_Mission converts some commands differently.
+     */
+    static int result(MissionItem item, boolean plane) {
+        int params = params(item);
+        if (params != MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
+            return params;
+        }
         if (!POSITIONAL.contains(item.command())) {
             return OTHERS.contains(item.command()) ? MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
                     : MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED;
+        }
+        int command = plane ? planeCommand(item) : holdTime(item);
+        if (command != MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
+            return command;
         }
         int position = position(item);
         if (position != MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
@@ -54,6 +84,31 @@ final class MissionCheck {
         }
         if (!Float.isFinite(item.z()) || Math.abs(item.z()) >= ALT_MAX_METRES) {
             return MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM7;
+        }
+        return MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
+    }
+
+    /** ArduPlane has no spline waypoints. */
+    private static int planeCommand(MissionItem item) {
+        return item.command() == MAV_CMD.MAV_CMD_NAV_SPLINE_WAYPOINT ? MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED
+                : MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
+    }
+
+    /** The other vehicles store a waypoint's hold time (param1) in 16 bits. */
+    private static int holdTime(MissionItem item) {
+        boolean fits = item.command() != MAV_CMD.MAV_CMD_NAV_WAYPOINT || item.param1() >= 0 && item.param1() <= 0xffff;
+        return fits ? MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED : MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM1;
+    }
+
+    /** ACCEPTED, or INVALID_PARAM1 to 4 for the first of param1 to param4 that is infinite or a NaN not allowed there. */
+    static int params(MissionItem item) {
+        float[] params = {item.param1(), item.param2(), item.param3(), item.param4()};
+        int nanAllowed = NAN_ALLOWED.getOrDefault(item.command(), 0);
+        for (int i = 0; i < params.length; i++) {
+            boolean nanRefused = Float.isNaN(params[i]) && (nanAllowed & (1 << i)) == 0;
+            if (nanRefused || Float.isInfinite(params[i])) {
+                return INVALID_PARAM[i];
+            }
         }
         return MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
     }

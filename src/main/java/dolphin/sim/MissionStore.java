@@ -48,7 +48,7 @@ final class MissionStore implements ItemStore {
 
     @Override
     public int check(MissionItem item) {
-        return MissionCheck.result(item);
+        return MissionCheck.result(item, plane);
     }
 
     /** Each item was checked as it came: the mission is stored as it arrived. */

@@ -96,7 +96,7 @@ class CommandStorageSpec extends Specification {
 
     def "CONDITION_CHANGE_ALT, which AP_Mission does not know, is UNSUPPORTED"() {
         expect:
-        MissionCheck.result(MissionItem.command(1, MAV_CMD.MAV_CMD_CONDITION_CHANGE_ALT, 1, 0, 0, 10)) ==
+        MissionCheck.result(MissionItem.command(1, MAV_CMD.MAV_CMD_CONDITION_CHANGE_ALT, 1, 0, 0, 10), false) ==
                 MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED
     }
 }

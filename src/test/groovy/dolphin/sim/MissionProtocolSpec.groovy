@@ -196,6 +196,31 @@ class MissionProtocolSpec extends Specification {
         'latitude 95°'            | new MissionItem(1, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_FRAME.MAV_FRAME_GLOBAL_INT, 0, 0, 0, 0, 950_000_000, 0, 10, true) || MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM5_X
         'longitude 190°'          | new MissionItem(1, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_FRAME.MAV_FRAME_GLOBAL_INT, 0, 0, 0, 0, 0, 1_900_000_000, 10, true) || MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM6_Y
         'IMAGE_START_CAPTURE'     | MissionItem.command(1, MAV_CMD.MAV_CMD_IMAGE_START_CAPTURE, 0, 2, 0, 0)               || MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
+        'a NaN delay'             | MissionItem.command(1, MAV_CMD.MAV_CMD_CONDITION_DELAY, Float.NaN, 0, 0, 0)           || MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM1
+        'a NaN in a speed change' | MissionItem.command(1, MAV_CMD.MAV_CMD_DO_CHANGE_SPEED, 1, 5, -1, Float.NaN)          || MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM4
+        'a NaN in an unknown command, checked first' | MissionItem.command(1, MAV_CMD.MAV_CMD_DO_CHANGE_ALTITUDE, 30, Float.NaN, 0, 0) || MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM2
+        'a waypoint with a NaN yaw' | new MissionItem(1, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT, 0, 0, 0, Float.NaN, 404442330, -73752340, 10, true) || MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
+        'a waypoint with a NaN pass radius' | new MissionItem(1, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT, 0, 0, Float.NaN, 0, 404442330, -73752340, 10, true) || MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM3
+        'an infinite hold time'   | rel(1, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 10, 0, 10, Float.POSITIVE_INFINITY)              || MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM1
+        'a hold time of 70000 s'  | rel(1, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 10, 0, 10, 70_000)                               || MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM1
+        'a negative hold time'    | rel(1, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 10, 0, 10, -1)                                   || MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM1
+        'a hold time of 65535 s'  | rel(1, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 10, 0, 10, 65_535)                               || MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
+    }
+
+    def "ArduPlane ignores a waypoint's hold time (param1): 70000 is accepted, a NaN is not; it refuses spline waypoints"() {
+        given:
+        def plane = new RawGroundStation(VehicleKind.PLANE)
+
+        expect:
+        plane.upload([plan()[0], rel(1, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 10, 0, 10, 70_000)]) ==
+                MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
+        plane.upload([plan()[0], rel(1, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 10, 0, 10, Float.NaN)]) ==
+                MAV_MISSION_RESULT.MAV_MISSION_INVALID_PARAM1
+        plane.upload([plan()[0], rel(1, MAV_CMD.MAV_CMD_NAV_SPLINE_WAYPOINT, 10, 0, 10)]) ==
+                MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED
+
+        cleanup:
+        plane?.close()
     }
 
     def "a COUNT above the capacity is NO_SPACE"() {
