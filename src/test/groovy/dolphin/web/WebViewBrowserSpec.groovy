@@ -25,7 +25,7 @@ import spock.lang.Specification
 import spock.lang.Timeout
 
 /**
- * The page in a real browser (issue 13's acceptance): Debian's chromium, driven by Selenium, watches
+ * The page in a real browser: Debian's chromium, driven by Selenium, watches
  * the report's two-vehicle scenario (dsl-examples/two-drones-survey.dolphin) on the simulated fleet.
  * The browser is on the page before the script starts, so every phase is seen as it happens. It
  * saves target/web-view-survey.png (the surveys flying) and target/web-view.png (the end); a mapping

@@ -45,7 +45,7 @@ import java.util.stream.Stream;
  *
  * <p>With {@code --flood RATE}, each size runs twice: without, then with every vehicle also sending RATE
  * NAMED_VALUE_FLOAT readings per second from a companion component (id 191), each of which wakes the
- * script's task tree; the summary gives the ratio of the reaction p99 (issue 21). One link only.
+ * script's task tree; the summary gives the ratio of the reaction p99. One link only.
  *
  * <pre>FleetBench OUT_DIR SCRIPT JAVA CLASSPATH [--web | --flood RATE] SIZE...</pre>
  */

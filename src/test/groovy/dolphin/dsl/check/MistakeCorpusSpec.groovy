@@ -30,7 +30,7 @@ import spock.lang.Shared
 import spock.lang.Specification
 
 /**
- * The check against single mistakes (issue 20's acceptance): every correct example (dsl-examples/,
+ * The check against single mistakes (the figure in README.md's status table): every correct example (dsl-examples/,
  * the correct scripts under src/test/resources, the groovy blocks of docs/ that must pass) is made
  * wrong in one place at a time, in five ways: a word misspelt by one edit, a wrong number of
  * arguments, an argument of a wrong type, a block's word copied outside its block, a variable read
