@@ -30,11 +30,11 @@ final class FtpMissionDownload extends FtpMissionTransfer {
                     try {
                         c = MissionFtpFile.decode(read.bytes());
                     } catch (IllegalArgumentException x) {
-                        fail("over FTP: " + path + " is not a list: " + x.getMessage());
+                        failOverFtp(path + " is not a list: " + x.getMessage());
                         return;
                     }
                     if (c.type() != type) {
-                        fail("over FTP: " + path + " holds the " + c.type().label() + " instead");
+                        failOverFtp(path + " holds the " + c.type().label() + " instead");
                     } else {
                         succeed(c.items());
                     }

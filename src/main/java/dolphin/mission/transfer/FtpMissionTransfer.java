@@ -16,6 +16,8 @@ import java.util.concurrent.CompletionException;
  */
 abstract class FtpMissionTransfer extends Transfer {
 
+    private static final String OVER_FTP = "over FTP: ";
+
     final FtpClient ftp;
     final String path;
     private boolean unanswered;
@@ -58,10 +60,20 @@ abstract class FtpMissionTransfer extends Transfer {
             unanswered = !f.answered();
             String verdict = f.refusedAtClose() && what().startsWith("upload")
                     ? ": ArduPilot could not read a complete list from it" : "";
-            fail("over FTP: " + f.getMessage() + verdict);
+            failOverFtp(f.getMessage() + verdict);
         } else {
-            fail("over FTP: " + cause);
+            failOverFtp(String.valueOf(cause));
         }
+    }
+
+    /** Fails saying the FTP path did: "over FTP: why". */
+    final void failOverFtp(String why) {
+        fail(OVER_FTP + why);
+    }
+
+    /** Why the transfer failed, without the "over FTP: " of its reason. */
+    final String why() {
+        return reason().startsWith(OVER_FTP) ? reason().substring(OVER_FTP.length()) : reason();
     }
 
     /** Reports progress in bytes. */

@@ -59,12 +59,12 @@ final class FtpMissionUpload extends FtpMissionTransfer {
         try {
             held = MissionFtpFile.decode(readBack).items();
         } catch (IllegalArgumentException e) {
-            fail("over FTP: " + path + " read back is not a list: " + e.getMessage());
+            failOverFtp(path + " read back is not a list: " + e.getMessage());
             return;
         }
         Optional<String> difference = MissionVerification.firstDifference(type, items, held);
         if (difference.isPresent()) {
-            fail("over FTP: " + path + " read back differs from what was sent: " + difference.get());
+            failOverFtp(path + " read back differs from what was sent: " + difference.get());
         } else {
             succeed(items);
         }

@@ -164,7 +164,7 @@ public final class MissionTransfers {
             } else if (items.config.path() == TransferPath.AUTO) {
                 // item by item, right after: its errors name the item the vehicle refuses
                 ftpUnanswered |= f.unanswered();
-                items.fallingBackFrom("item by item, as FTP failed (" + f.reason().replaceFirst("^over FTP: ", "") + ")");
+                items.fallingBackFrom("item by item, as FTP failed (" + f.why() + ")");
                 waiting.addFirst(new Queued(items, null, true));
             } else {
                 items.result.complete(r);
