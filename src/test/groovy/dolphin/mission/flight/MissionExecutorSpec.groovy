@@ -266,15 +266,9 @@ class MissionExecutorSpec extends MissionFlights {
     def "a long upload says how far it is every 5 s of clock time; one the transfer read back itself is not downloaded again"() {
         given:
         vehicle.ready()
-        def task = MissionDsl.mission {
-            name 'hop'
-            takeOff Position.fromDegrees(40.444233, -7.375234, 840)
-            goPos 40.4446, -7.375234, 840
-            landingPoint 40.4446, -7.375234, 820
-        }
 
         when:
-        launch(task)
+        launch(hop())
         step()
         vehicle.transferStatus = new TransferStatus(MissionType.MISSION, true, TransferPath.ITEMS, 2, 4, 1)
         clock.advance(Duration.ofSeconds(4))
@@ -309,14 +303,9 @@ class MissionExecutorSpec extends MissionFlights {
     def "an upload that went item by item after FTP failed: its download verifies it and the line says how it went"() {
         given:
         vehicle.ready()
-        def task = MissionDsl.mission {
-            name 'hop'
-            takeOff Position.fromDegrees(40.444233, -7.375234, 840)
-            landingPoint 40.444233, -7.375234, 820
-        }
 
         when:
-        launch(task)
+        launch(hop())
         step()
         def t = vehicle.pendingTransfer()
         vehicle.stored[MissionType.MISSION] = t.items
@@ -326,8 +315,8 @@ class MissionExecutorSpec extends MissionFlights {
         step()
 
         then:
-        vehicle.transfers*.toString() == ['0.0 upload mission: 3 items', '0.0 download mission']
-        messages == said(['uploading 3 items', 'upload verified (item by item, as FTP failed (no answer))'])
+        vehicle.transfers*.toString() == ['0.0 upload mission: 4 items', '0.0 download mission']
+        messages == said(['uploading 4 items', 'upload verified (item by item, as FTP failed (no answer))'])
     }
 
     def "a mission naming its home: DO_SET_HOME with it before the upload, sent again every 2 s while the vehicle answers FAILED, said once"() {
