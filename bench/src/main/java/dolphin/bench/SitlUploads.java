@@ -17,8 +17,9 @@ import java.io.BufferedReader;
 import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicReference;
@@ -89,26 +90,16 @@ public final class SitlUploads {
         }
         double seconds = (System.nanoTime() - t0) / 1e9;
         TransferStatus status = last.get();
-        return String.format(Locale.ROOT, "{\"path\": \"%s\", \"done\": %s, \"time_s\": %.3f, \"error\": %s, \"resends\": %d, "
-                        + "\"ignored_acks\": %d, \"verified\": %s, \"note\": %s, \"progress\": %s}",
-                path, r.success(), seconds, quote(r.error()), r.resends(), r.ignoredAcks(), r.verified(), quote(r.note()),
-                quote(status == null ? null : status.text()));
-    }
-
-    static String quote(String s) {
-        if (s == null) {
-            return "null";
-        }
-        StringBuilder b = new StringBuilder("\"");
-        for (char c : s.toCharArray()) {
-            if (c == '"' || c == '\\') {
-                b.append('\\').append(c);
-            } else if (c < 0x20) {
-                b.append(String.format(Locale.ROOT, "\\u%04x", (int) c));
-            } else {
-                b.append(c);
-            }
-        }
-        return b.append('"').toString();
+        Map<String, Object> json = new LinkedHashMap<>();
+        json.put("path", path.name());
+        json.put("done", r.success());
+        json.put("time_s", Math.round(seconds * 1000) / 1000.0);
+        json.put("error", r.error());
+        json.put("resends", r.resends());
+        json.put("ignored_acks", r.ignoredAcks());
+        json.put("verified", r.verified());
+        json.put("note", r.note());
+        json.put("progress", status == null ? null : status.text());
+        return UploadBench.toJson(json);
     }
 }
