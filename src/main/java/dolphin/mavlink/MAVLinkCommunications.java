@@ -410,7 +410,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
         // ArduPilot sends 0, 0 until its EKF has a position estimate: that is no position yet.
         handler.on(msg_global_position_int.class, (n, m) -> changed(n, s -> s.withPosition(m.lat == 0 && m.lon == 0 ? null
                 : Position.fromDegrees(m.lat * 1e-7, m.lon * 1e-7, m.alt * 1e-3), m.relative_alt * 1e-3,
-                m.hdg == UNKNOWN_HEADING ? Double.NaN : m.hdg / 100.0, clock.nanoTime())));
+                m.hdg == UNKNOWN_HEADING ? Double.NaN : m.hdg / 100.0, clock.nanoTime()).withBootTime(m.time_boot_ms)));
         handler.on(msg_home_position.class, (n, m) -> changed(n, s -> s.withHome(
                 Position.fromDegrees(m.latitude * 1e-7, m.longitude * 1e-7, m.altitude * 1e-3))));
         handler.on(msg_extended_sys_state.class, (n, m) -> changed(n, s -> s.withLandedState(m.landed_state)));

@@ -27,18 +27,25 @@ import java.util.List;
  * @param ekfFlags EKF_STATUS_REPORT.flags (ArduPilot's EKF_STATUS_FLAGS), -1 before the first
  * @param fenceBreached FENCE_STATUS.breach_status: the vehicle is outside its fence; false before the first
  *        (ArduPilot sends FENCE_STATUS only with its fence on)
+ * @param bootMillis the vehicle's time since boot (GLOBAL_POSITION_INT.time_boot_ms), -1 before the first
+ * @param reboots how often that time went back by more than {@link #REBOOT_STEP_MILLIS}: the vehicle rebooted
  */
 public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, VehicleFamily family,
                            msg_sys_status systemStatus, long systemStatusNanos,
                            Position position, double relativeAlt, double heading, long positionNanos, Position home,
                            int landedState, int missionSeq, int missionTotal, int missionState,
-                           List<String> statusTexts, int ekfFlags, boolean fenceBreached) {
+                           List<String> statusTexts, int ekfFlags, boolean fenceBreached, long bootMillis, int reboots) {
 
     public static final int STATUS_LINES = 20;
+    /**
+     * How far back time since boot must go to count as a reboot: a reboot starts it again from 0, long
+     * after a mission could start, while frames reordered on a link are seconds apart at most.
+     */
+    public static final long REBOOT_STEP_MILLIS = 5_000;
     private static final int ARMED_FLAG = 128;
 
     public static VehicleState initial(VehicleFamily family) {
-        return new VehicleState(null, 0, family, null, 0, null, 0, Double.NaN, 0, null, 0, -1, -1, 0, List.of(), -1, false);
+        return new VehicleState(null, 0, family, null, 0, null, 0, Double.NaN, 0, null, 0, -1, -1, 0, List.of(), -1, false, -1, 0);
     }
 
     public boolean armed() {
@@ -70,43 +77,43 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
 
     public VehicleState withHeartbeat(msg_heartbeat hb, long nanos) {
         return new VehicleState(hb, nanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
+                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     public VehicleState withSystemStatus(msg_sys_status s, long nanos) {
         return new VehicleState(heartbeat, heartbeatNanos, family, s, nanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
+                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     public VehicleState withPosition(Position p, double relAlt, double hdg, long nanos) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, p, relAlt, hdg,
-                nanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
+                nanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     public VehicleState withHome(Position h) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, h, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
+                heading, positionNanos, h, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     public VehicleState withLandedState(int landed) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landed, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached);
+                heading, positionNanos, home, landed, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     public VehicleState withMissionCurrent(int seq, int total, int state) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, seq, total, state, statusTexts, ekfFlags, fenceBreached);
+                heading, positionNanos, home, landedState, seq, total, state, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     public VehicleState withEkfFlags(int flags) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, flags, fenceBreached);
+                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, flags, fenceBreached, bootMillis, reboots);
     }
 
     /** From FENCE_STATUS.breach_status. */
     public VehicleState withFenceBreached(boolean breached) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, breached);
+                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, breached, bootMillis, reboots);
     }
 
     public VehicleState withStatusText(String line) {
@@ -116,6 +123,14 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
             lines.remove(0);
         }
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, List.copyOf(lines), ekfFlags, fenceBreached);
+                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, List.copyOf(lines), ekfFlags, fenceBreached, bootMillis, reboots);
+    }
+
+    /** The vehicle's time since boot; going back by more than {@link #REBOOT_STEP_MILLIS} counts a reboot. */
+    public VehicleState withBootTime(long millis) {
+        int r = bootMillis >= 0 && millis + REBOOT_STEP_MILLIS < bootMillis ? reboots + 1 : reboots;
+        return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
+                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags,
+                fenceBreached, millis, r);
     }
 }

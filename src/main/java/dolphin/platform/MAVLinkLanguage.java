@@ -166,6 +166,26 @@ public final class MAVLinkLanguage implements DslExtension {
         }
 
         /**
+         * Whether someone else holds the vehicle out of AUTO now, pausing a mission of ours on it
+         * (docs/failures.md, "A pilot's pause"). A condition: {@code waitFor { takenOver(v) } then ...}.
+         */
+        @Word("Whether a pilot or another ground station holds the vehicle out of AUTO now, pausing its mission")
+        public boolean takenOver(Object vehicle) {
+            MAVLinkNode node = OneVehicle.of(context, "takenOver", vehicle);
+            return MissionService.of(node.communications()).vehicle(node).takenOver();
+        }
+
+        /**
+         * How many times a pilot or another ground station took the vehicle out of AUTO while a mission
+         * of ours flew on it: after a mission that ended DONE, more than before means it was paused.
+         */
+        @Word("How many times a pilot or another ground station paused a mission on the vehicle")
+        public int takeovers(Object vehicle) {
+            MAVLinkNode node = OneVehicle.of(context, "takeovers", vehicle);
+            return MissionService.of(node.communications()).vehicle(node).takeovers();
+        }
+
+        /**
          * A mission task from a mission file (docs/mission-files.md, "Missions from files"): any
          * format {@link MissionFile#read(Path)} reads, its fence and rally points with it. The path is
          * relative to the current directory. Item 0 of the file (its planned home) is not flown: the

@@ -9,6 +9,7 @@ import dolphin.mission.model.ChangeSpeed
 import dolphin.mission.model.DelayCommand
 import dolphin.mission.model.DroneCommand
 import dolphin.mission.model.Fence
+import dolphin.mission.model.FlightLimits
 import dolphin.mission.model.GoToPoint
 import dolphin.mission.model.HeightCheck
 import dolphin.mission.model.JumpToItem
@@ -67,6 +68,7 @@ class MissionBuilder {
     private String missionName
     private Position missionHome
     private boolean belowHomeAllowed
+    private FlightLimits limits = FlightLimits.RUN
     /** Set by maxDepth: the mission is under water (docs/underwater.md). */
     private Underwater water
     /** Where each point was written: an exception made there, whose stack trace gives a later error that line. */
@@ -97,6 +99,18 @@ class MissionBuilder {
     @Word('Allows items lower than home plus 2 m: the script\'s explicit choice')
     void allowBelowHome(boolean allowed) {
         belowHomeAllowed = allowed
+    }
+
+    /** How long the flight may make no progress toward an item before it fails (docs/failures.md, "A stall"). */
+    @Word('How long the vehicle may make no progress toward an item before the mission fails: stallLimit 2.minutes')
+    void stallLimit(Number seconds) {
+        limits = limits.withStallLimit(Args.duration('stallLimit', 'stall limit', seconds))
+    }
+
+    /** How long a pilot may hold the vehicle out of AUTO before the mission fails (docs/failures.md, "A pilot's pause"). */
+    @Word('How long a pilot may hold the vehicle out of AUTO before the mission fails: takeoverTimeout 5.minutes')
+    void takeoverTimeout(Number seconds) {
+        limits = limits.withTakeoverTimeout(Args.duration('takeoverTimeout', 'takeover timeout', seconds))
     }
 
     /** The mission's name: its task id in messages and exports. */
@@ -526,6 +540,7 @@ class MissionBuilder {
         }
         Mission m = new Mission(missionName, missionHome, commands, belowHomeAllowed)
         m.setUnderwater(water)
+        m.setLimits(limits)
         if (missionHome != null && !belowHomeAllowed && water == null) {
             Position low = rallyPoints.find { Position p -> p.hae() < missionHome.hae() + HeightCheck.CLEARANCE }
             if (low != null) {

@@ -94,6 +94,11 @@ public final class Args {
         return d;
     }
 
+    /** A positive number of seconds, as a Duration (to the millisecond). */
+    public static java.time.Duration duration(String word, String what, Number seconds) {
+        return java.time.Duration.ofMillis(Math.round(positive(word, what, seconds) * 1000));
+    }
+
     /** A whole number in [min, max]. */
     public static int whole(String word, String what, Number v, int min, int max) {
         double d = number(word, what, v);

@@ -65,6 +65,34 @@ public interface FlightRules {
     /** The mode that holds the vehicle where it is, e.g. before its mission is replaced. */
     String holdMode();
 
+    /**
+     * The modes a pilot or another ground station takes the vehicle into to hold it or fly it by hand:
+     * leaving AUTO for one of these pauses the mission until AUTO is back (ArduPilot resumes at its
+     * current item). Any other mode (RTL, LAND, SMART_RTL, SURFACE) ends the mission's purpose
+     * (docs/failures.md, "A pilot's pause").
+     */
+    Set<String> takeoverModes();
+
+    /** Whether the vehicle flies, so being on the ground with items left is an accident; rovers and subs do not. */
+    default boolean flies() {
+        return false;
+    }
+
+    /** The family's default WP_RADIUS, in metres. */
+    double waypointRadius();
+
+    /**
+     * How close to a waypoint item the vehicle counts as there, in metres: there, it is doing the item's
+     * own waiting, which is no stall. By default the family's WP_RADIUS: AP_Mission keeps an item's
+     * acceptance radius (param2) on ArduPlane only.
+     */
+    default double arrivalRadius(MissionItem waypoint) {
+        return waypointRadius();
+    }
+
+    /** The radius the vehicle circles a loiter item at when the item names none (ArduPilot's default). */
+    double loiterRadius();
+
     /** Whether a mission whose last navigation command is {@code command} ends on the ground, disarmed. */
     boolean landsAfter(int command);
 
@@ -91,6 +119,29 @@ public interface FlightRules {
         }
 
         @Override
+        public Set<String> takeoverModes() {
+            return Set.of("LOITER", "BRAKE", "POSHOLD", "ALT_HOLD", "STABILIZE", "ACRO", "GUIDED", "CIRCLE", "SPORT", "DRIFT",
+                    "FLOWHOLD", "ZIGZAG");
+        }
+
+        @Override
+        public boolean flies() {
+            return true;
+        }
+
+        /** WPNAV_RADIUS 200 cm. */
+        @Override
+        public double waypointRadius() {
+            return 2;
+        }
+
+        /** CIRCLE_RADIUS 1000 cm. */
+        @Override
+        public double loiterRadius() {
+            return 10;
+        }
+
+        @Override
         public boolean landsAfter(int command) {
             return command == MAV_CMD.MAV_CMD_NAV_LAND || command == MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH;
         }
@@ -106,6 +157,34 @@ public interface FlightRules {
         @Override
         public String holdMode() {
             return "LOITER";
+        }
+
+        @Override
+        public Set<String> takeoverModes() {
+            return Set.of("LOITER", "CIRCLE", "MANUAL", "STABILIZE", "TRAINING", "ACRO", "FLY_BY_WIRE_A", "FLY_BY_WIRE_B",
+                    "CRUISE", "GUIDED", "QSTABILIZE", "QHOVER", "QLOITER", "QACRO", "THERMAL");
+        }
+
+        @Override
+        public boolean flies() {
+            return true;
+        }
+
+        /** WP_RADIUS 90 m. */
+        @Override
+        public double waypointRadius() {
+            return 90;
+        }
+
+        @Override
+        public double arrivalRadius(MissionItem waypoint) {
+            return Math.max(waypoint.param2(), waypointRadius());
+        }
+
+        /** WP_LOITER_RAD 60 m. */
+        @Override
+        public double loiterRadius() {
+            return 60;
         }
 
         @Override
@@ -126,6 +205,23 @@ public interface FlightRules {
         @Override
         public String holdMode() {
             return "HOLD";
+        }
+
+        @Override
+        public Set<String> takeoverModes() {
+            return Set.of("HOLD", "LOITER", "MANUAL", "ACRO", "STEERING", "GUIDED", "SIMPLE", "CIRCLE");
+        }
+
+        /** WP_RADIUS 2 m. */
+        @Override
+        public double waypointRadius() {
+            return 2;
+        }
+
+        /** LOIT_RADIUS 2 m. */
+        @Override
+        public double loiterRadius() {
+            return 2;
         }
 
         @Override
@@ -192,6 +288,22 @@ public interface FlightRules {
         @Override
         public String holdMode() {
             return "POSHOLD";
+        }
+
+        @Override
+        public Set<String> takeoverModes() {
+            return Set.of("POSHOLD", "ALT_HOLD", "STABILIZE", "MANUAL", "ACRO", "GUIDED", "CIRCLE", "SURFTRAK");
+        }
+
+        /** WPNAV_RADIUS 200 cm. */
+        @Override
+        public double waypointRadius() {
+            return 2;
+        }
+
+        @Override
+        public double loiterRadius() {
+            return 10;
         }
 
         @Override

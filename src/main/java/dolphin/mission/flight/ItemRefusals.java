@@ -36,6 +36,7 @@ final class ItemRefusals {
     private static final Pattern STARTED = Pattern.compile("^Mission: (\\d+) ");
 
     private final List<MissionItem> items;
+    private final ItemNames names;
     private final String vehicle;
     private final int last;
     private final int lastNav;
@@ -56,6 +57,7 @@ final class ItemRefusals {
 
     ItemRefusals(FlightRules rules, List<MissionItem> items, String vehicle) {
         this.items = List.copyOf(items);
+        this.names = new ItemNames(items);
         this.vehicle = vehicle;
         this.last = items.size() - 1;
         this.lastNav = MissionEnd.lastNavigation(items);
@@ -156,6 +158,6 @@ final class ItemRefusals {
     }
 
     private String item(int seq) {
-        return "item " + seq + " of " + last + " (" + items.get(Math.min(seq, last)).commandName() + ")";
+        return names.item(seq);
     }
 }

@@ -55,6 +55,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     private final ItemsReached reached = new ItemsReached();
     /** What the vehicle says of its items, in order, once the plan is made; fed on the communications thread. */
     private volatile ItemRefusals refusals;
+    /** What the vehicle said and when, for the errors of a flight that goes wrong; fed on the communications thread. */
+    private final VehicleWords words = new VehicleWords();
     private MissionVehicle vehicle;
     private MissionExecutorConfig config;
     private FlightRules rules;
@@ -96,9 +98,11 @@ public final class MissionExecutor extends PlatformTaskExecutor {
 
     /** STATUSTEXT, on the communications thread, in the order the vehicle sent it. */
     public void consume(msg_statustext message) {
+        long now = clock().nanoTime();
+        words.heard(message.severity, message.getText(), now);
         ItemRefusals r = refusals;
         if (r != null) {
-            r.text(message.severity, message.getText(), clock().nanoTime());
+            r.text(message.severity, message.getText(), now);
         }
     }
 
@@ -110,7 +114,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             failure = "vehicle " + node.getId() + " is not a MAVLink vehicle";
             return;
         }
-        config = vehicle.executorConfig();
+        config = vehicle.executorConfig().with(mission.limits());
         rules = FlightRules.of(vehicle.state().family());
         vehicle.flying(this);
         enter(new Preparing(clock().nanoTime()));
@@ -153,6 +157,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
 
     private void landed() {
         if (vehicle != null) {
+            vehicle.takeover(false);
             vehicle.landed(this);
         }
     }
@@ -268,8 +273,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             }
             lists.add(Map.entry(MissionType.MISSION, items));
             refusals = new ItemRefusals(rules, items, vehicle.vehicleId());
-            enter(new Uploading(lists, new Plan(items, new MissionEnd(rules, items, vehicle.vehicleId(), config.modeGrace(),
-                    config.landingStall()), keyed)));
+            enter(new Uploading(lists, new Plan(items, new MissionEnd(rules, items, vehicle.vehicleId(), config.stallLimit()),
+                    keyed)));
             return CompletionState.IN_PROGRESS;
         }
 
@@ -509,6 +514,9 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     private final class Starting extends Stage {
         private final Plan plan;
         private final CommandSteps steps = commandSteps(what -> { });
+        /** The vehicle's reboots before the flight, and when AUTO was first asked: from then on its words count. */
+        private final int rebootsBefore = vehicle.state().reboots();
+        private long autoAsked = -1;
 
         Starting(Plan plan) {
             super(FlightState.START, config.start());
@@ -521,6 +529,9 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                     MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT, 1, 1), st -> st.missionSeq() == 1));
             steps.add(new CommandSteps.Step("AUTO", () -> {
                 refusals.begin();
+                if (autoAsked < 0) {
+                    autoAsked = clock().nanoTime();
+                }
                 return setMode("AUTO");
             }, st -> isMode(st, "AUTO")));
             if (rules.needsMissionStart()) {
@@ -538,15 +549,21 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         CompletionState step(long now) {
             if (steps.run(now)) {
                 progress("started");
-                enter(new Following(plan));
+                enter(new Following(plan, autoAsked, rebootsBefore));
             }
             return steps.failure() != null ? fail(steps.failure()) : CompletionState.IN_PROGRESS;
         }
     }
 
-    /** Follows the flight: items reached, ground-side commands and jumps at their items, and the end (MissionEnd). */
+    /**
+     * Follows the flight: items reached, ground-side commands and jumps at their items, the end
+     * (MissionEnd), someone else's hand (Takeovers), faults (FlightAlarms) and stalls (StallWatch).
+     */
     private final class Following extends Stage {
         private final Plan plan;
+        private final Takeovers takeovers;
+        private final FlightAlarms alarms;
+        private final StallWatch stalls;
         private final Map<JumpToItem, Integer> jumpsLeft = new HashMap<>();
         /** Whether the vehicle has shown the mission active (MISSION_CURRENT), so its current item counts as progress. */
         private boolean active;
@@ -554,9 +571,15 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         private int reported;
         private long resendJump;
 
-        Following(Plan plan) {
+        Following(Plan plan, long since, int rebootsBefore) {
             super(FlightState.RUNNING, Duration.ZERO);
             this.plan = plan;
+            ItemNames names = new ItemNames(plan.items());
+            String id = vehicle.vehicleId();
+            takeovers = new Takeovers(rules, names, id, words, MissionEnd.lastNavigation(plan.items()), config.modeGrace(),
+                    config.takeoverTimeout());
+            alarms = new FlightAlarms(rules, names, id, words, since, rebootsBefore);
+            stalls = new StallWatch(rules, names, id, config.stallWarning(), config.stallLimit());
             plan.keyed().values().forEach(cmds -> cmds.stream().filter(c -> c instanceof JumpToItem)
                     .forEach(c -> jumpsLeft.put((JumpToItem) c, ((JumpToItem) c).repetitions())));
         }
@@ -588,7 +611,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 // The flight goes back: what the vehicle said before the jump no longer tells its end.
                 return CompletionState.IN_PROGRESS;
             }
-            MissionEnd.Verdict verdict = plan.end().judge(s, r, isMode(s, "AUTO"), now);
+            boolean auto = isMode(s, "AUTO");
+            MissionEnd.Verdict verdict = plan.end().judge(s, r, auto, now);
             var refused = refusals.refusal();
             if (verdict.error() == null && refused.isPresent()) {
                 return fail(refused.get());
@@ -598,7 +622,42 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 progress("done");
                 return CompletionState.DONE;
             }
-            return verdict.error() != null ? fail(verdict.error()) : CompletionState.IN_PROGRESS;
+            if (verdict.error() != null) {
+                return fail(verdict.error());
+            }
+            return watch(s, plan.end().current(s, r), auto, now);
+        }
+
+        /** Someone else's hand, the faults, and a stall: an error, or a line for a takeover, a hand-back or a stall's warning. */
+        private CompletionState watch(VehicleState s, int current, boolean auto, long now) {
+            Takeovers.Look look = takeovers.look(s, auto, current, now);
+            var alarm = alarms.judge(s, current, takeovers.paused(), now);
+            if (alarm.isPresent()) {
+                return fail(alarm.get());
+            }
+            switch (look.kind()) {
+                case FAILED -> {
+                    return fail(look.text());
+                }
+                case TAKEN_OVER -> {
+                    vehicle.takeover(true);
+                    progress(look.text() + " (paused until AUTO is back, for " + config.takeoverTimeout().toSeconds()
+                            + " s at most)");
+                }
+                case HANDED_BACK -> {
+                    vehicle.takeover(false);
+                    progress(look.text());
+                }
+                default -> { }
+            }
+            StallWatch.Look stall = stalls.look(s, current, auto && !takeovers.paused(), now);
+            if (stall.error() != null) {
+                return fail(stall.error());
+            }
+            if (stall.warning() != null) {
+                progress(stall.warning());
+            }
+            return CompletionState.IN_PROGRESS;
         }
 
         /**

@@ -1,5 +1,6 @@
 package dolphin.mission.flight;
 
+import dolphin.mission.model.FlightLimits;
 import java.time.Duration;
 
 /**
@@ -10,19 +11,24 @@ import java.time.Duration;
  *        passing pre-arm checks, DO_SET_HOME accepted): ArduPilot needs about 40 s after boot
  * @param arm how long to keep trying to arm
  * @param retry the pause between attempts to arm or to set home
- * @param landingStall how long a landing may make no progress (no movement, not disarmed) before it is an error
+ * @param stallLimit how long the vehicle may make no progress toward its item, or its landing, before it is an
+ *        error (a mission's {@code stallLimit} overrides it)
+ * @param stallWarning how long without progress before a line says so, once per stall
+ * @param takeoverTimeout how long someone else may hold the vehicle out of AUTO in a takeover mode before the
+ *        mission fails (a mission's {@code takeoverTimeout} overrides it)
  * @param modeGrace how long after leaving AUTO at the last item the mission's end may still be reported
  *        (ArduPlane switches to RTL just before it reports the last item reached)
  */
 public record MissionExecutorConfig(boolean verify, Duration prepare, Duration upload, Duration arm, Duration retry,
-                                    Duration start, Duration landingStall, Duration modeGrace) {
+                                    Duration start, Duration stallLimit, Duration stallWarning, Duration takeoverTimeout,
+                                    Duration modeGrace) {
 
     public static final MissionExecutorConfig DEFAULT = new MissionExecutorConfig(true, Duration.ofMinutes(3),
             Duration.ofSeconds(120), Duration.ofSeconds(90), Duration.ofSeconds(2), Duration.ofSeconds(30),
-            Duration.ofSeconds(60), Duration.ofSeconds(3));
+            Duration.ofSeconds(60), Duration.ofSeconds(20), Duration.ofSeconds(120), Duration.ofSeconds(3));
 
     public MissionExecutorConfig {
-        for (Duration d : new Duration[] {prepare, upload, arm, retry, start, landingStall, modeGrace}) {
+        for (Duration d : new Duration[] {prepare, upload, arm, retry, start, stallLimit, stallWarning, takeoverTimeout, modeGrace}) {
             if (d == null || d.isNegative()) {
                 throw new IllegalArgumentException("mission executor deadlines must not be negative, got " + d);
             }
@@ -30,18 +36,33 @@ public record MissionExecutorConfig(boolean verify, Duration prepare, Duration u
     }
 
     public MissionExecutorConfig withVerify(boolean on) {
-        return new MissionExecutorConfig(on, prepare, upload, arm, retry, start, landingStall, modeGrace);
+        return new MissionExecutorConfig(on, prepare, upload, arm, retry, start, stallLimit, stallWarning, takeoverTimeout, modeGrace);
     }
 
     public MissionExecutorConfig withPrepare(Duration deadline) {
-        return new MissionExecutorConfig(verify, deadline, upload, arm, retry, start, landingStall, modeGrace);
+        return new MissionExecutorConfig(verify, deadline, upload, arm, retry, start, stallLimit, stallWarning, takeoverTimeout,
+                modeGrace);
     }
 
     public MissionExecutorConfig withArm(Duration deadline) {
-        return new MissionExecutorConfig(verify, prepare, upload, deadline, retry, start, landingStall, modeGrace);
+        return new MissionExecutorConfig(verify, prepare, upload, deadline, retry, start, stallLimit, stallWarning, takeoverTimeout,
+                modeGrace);
     }
 
-    public MissionExecutorConfig withLandingStall(Duration limit) {
-        return new MissionExecutorConfig(verify, prepare, upload, arm, retry, start, limit, modeGrace);
+    /** The stall limit; the warning comes at a third of it, at most 20 s. */
+    public MissionExecutorConfig withStallLimit(Duration limit) {
+        Duration warn = limit.dividedBy(3);
+        return new MissionExecutorConfig(verify, prepare, upload, arm, retry, start, limit,
+                warn.compareTo(DEFAULT.stallWarning) < 0 ? warn : DEFAULT.stallWarning, takeoverTimeout, modeGrace);
+    }
+
+    /** With a mission's own stall limit and takeover timeout, where its script sets them. */
+    public MissionExecutorConfig with(FlightLimits limits) {
+        MissionExecutorConfig c = limits.stall().map(this::withStallLimit).orElse(this);
+        return limits.takeover().map(c::withTakeoverTimeout).orElse(c);
+    }
+
+    public MissionExecutorConfig withTakeoverTimeout(Duration timeout) {
+        return new MissionExecutorConfig(verify, prepare, upload, arm, retry, start, stallLimit, stallWarning, timeout, modeGrace);
     }
 }

@@ -42,4 +42,7 @@ public interface MissionVehicle extends VehicleChannel {
 
     /** The executor has ended; a newer one that took the vehicle stays. */
     void landed(MissionExecutor executor);
+
+    /** Someone else took the vehicle out of AUTO in a takeover mode ({@code true}), or handed it back, or the mission ended. */
+    void takeover(boolean held);
 }

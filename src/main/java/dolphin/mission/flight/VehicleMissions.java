@@ -28,6 +28,9 @@ public final class VehicleMissions implements MissionVehicle {
     private final AtomicReference<MissionExecutor> executor = new AtomicReference<>();
     /** The latest progress of a transfer in progress, null when none is. */
     private volatile TransferStatus transfer;
+    /** Whether a mission of ours on the vehicle is paused by someone else's hand now, and how often that began. */
+    private volatile boolean takenOver;
+    private final java.util.concurrent.atomic.AtomicInteger takeovers = new java.util.concurrent.atomic.AtomicInteger();
 
     VehicleMissions(MAVLinkNode node, MissionService service) {
         this.node = node;
@@ -53,6 +56,24 @@ public final class VehicleMissions implements MissionVehicle {
     @Override
     public void landed(MissionExecutor e) {
         executor.compareAndSet(e, null);
+    }
+
+    @Override
+    public void takeover(boolean held) {
+        if (held && !takenOver) {
+            takeovers.incrementAndGet();
+        }
+        takenOver = held;
+    }
+
+    /** Whether a mission of ours on the vehicle is paused now by someone else's hand (docs/failures.md). */
+    public boolean takenOver() {
+        return takenOver;
+    }
+
+    /** How many times someone else took the vehicle out of AUTO while a mission of ours flew on it. */
+    public int takeovers() {
+        return takeovers.get();
     }
 
     @Override

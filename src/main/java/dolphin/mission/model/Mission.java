@@ -27,6 +27,7 @@ public final class Mission {
     private volatile boolean fenceEnabled;
     private volatile VehicleProfile vehicleProfile = VehicleProfile.ARDUPILOT_COPTER;
     private volatile Underwater underwater;
+    private volatile FlightLimits limits = FlightLimits.RUN;
 
     /** @param home the home the script named, or null */
     public Mission(String name, Position home, List<DroneCommand> commands) {
@@ -56,6 +57,15 @@ public final class Mission {
 
     public void setUnderwater(Underwater bounds) {
         underwater = bounds;
+    }
+
+    /** The script's stall limit and takeover timeout for this mission, where it sets them. */
+    public FlightLimits limits() {
+        return limits;
+    }
+
+    public void setLimits(FlightLimits limits) {
+        this.limits = limits;
     }
 
     public void setDroneCommands(List<DroneCommand> commands) {

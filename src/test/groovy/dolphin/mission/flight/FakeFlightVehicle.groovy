@@ -224,6 +224,18 @@ class FakeFlightVehicle implements MissionVehicle {
     @Override
     void wake() { wakes++ }
 
+    /** Whether a takeover holds the vehicle now, and how many began, as the executor reported them. */
+    boolean takenOver
+    int takeovers
+
+    @Override
+    void takeover(boolean held) {
+        if (held && !takenOver) {
+            takeovers++
+        }
+        takenOver = held
+    }
+
     @Override
     void flying(MissionExecutor executor) {
         executors << "flying ${executor.mission().id}".toString()

@@ -2,6 +2,7 @@ package dolphin.mission.flight
 
 import com.MAVLink.enums.MAV_LANDED_STATE
 import com.MAVLink.enums.MAV_RESULT
+import com.MAVLink.enums.MAV_SEVERITY
 import com.MAVLink.enums.MISSION_STATE
 import dolphin.core.Allocation
 import dolphin.core.CompletionState
@@ -478,21 +479,166 @@ class MissionExecutorFaultsSpec extends MissionFlights {
         change.resolveStrategy = Closure.DELEGATE_FIRST
         change.delegate = vehicle
         change()
-        def cs = runTo(6)
+        def waiting = runTo(6.9)
+        def cs = runTo(8)
 
-        then:
+        then: 'judged 2 s after the first sign (a text at 5.0 s as it came, a state at the step of 5.1 s), with what the vehicle said'
+        waiting == CompletionState.IN_PROGRESS
         cs.error
-        now() == 5.1d
+        now() == at
         failure() == "mission hop on vehicle 1: ${text}".toString()
         executor.state() == FlightState.ERROR
         vehicle.commands.size() == sent
         vehicle.executors == ['flying hop', 'landed hop']
 
         where:
-        what                                     | change                                                                                                                    || text
-        'someone switched it to LOITER'          | { -> mode('LOITER') }                                                                                                     || 'vehicle 1 left AUTO for LOITER during item 2 of 4 (NAV_WAYPOINT), before the mission ended: armed, LOITER, landed state IN_AIR, 20.0 m above home'
-        'its fence breached, RTL (fence action)' | { -> text('Polygon fence breached'); mode('RTL') }                                                                        || "vehicle 1 breached its fence during item 2 of 4 (NAV_WAYPOINT) and left AUTO for RTL (its fence action): armed, RTL, landed state IN_AIR, 20.0 m above home, last text 'Polygon fence breached'"
-        'it crashed and disarmed'                | { -> text('SIM Hit ground at 12 m/s'); at(0, 0); landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND); armed(false) } || "vehicle 1 disarmed during item 2 of 4 (NAV_WAYPOINT): disarmed, AUTO, landed state ON_GROUND, 0.0 m above home, last text 'SIM Hit ground at 12 m/s'"
+        what                                     | change                                                                                                                    || at   | text
+        'someone switched it to RTL'             | { -> mode('RTL') }                                                                                                        || 7.1d | 'vehicle 1 left AUTO for RTL during item 2 of 4 (NAV_WAYPOINT), before the mission ended: armed, RTL, landed state IN_AIR, 20.0 m above home'
+        'a failsafe switched it to BRAKE'        | { -> mode('BRAKE'); text('GCS Failsafe', MAV_SEVERITY.MAV_SEVERITY_WARNING) }                                            || 7.1d | "vehicle 1 left AUTO for BRAKE during item 2 of 4 (NAV_WAYPOINT), before the mission ended, saying 'GCS Failsafe': armed, BRAKE, landed state IN_AIR, 20.0 m above home"
+        'the EKF failsafe landed it'             | { -> text('EKF variance', MAV_SEVERITY.MAV_SEVERITY_WARNING); mode('LAND'); text('EKF Failsafe: changed to LAND Mode', MAV_SEVERITY.MAV_SEVERITY_CRITICAL) } || 7.0d | "vehicle 1 reported 'EKF variance', 'EKF Failsafe: changed to LAND Mode' during item 2 of 4 (NAV_WAYPOINT): armed, LAND, landed state IN_AIR, 20.0 m above home"
+        'a motor failed and it fell'             | { -> text('Potential Thrust Loss (2)', MAV_SEVERITY.MAV_SEVERITY_EMERGENCY); at(0, 0); landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND) } || 7.0d | "vehicle 1 reported 'Potential Thrust Loss (2)' during item 2 of 4 (NAV_WAYPOINT): armed, AUTO, landed state ON_GROUND, 0.0 m above home"
+        'it came down without a word'            | { -> at(0, 0); landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND) }                                               || 7.1d | 'vehicle 1 is on the ground during item 2 of 4 (NAV_WAYPOINT) with items left: armed, AUTO, landed state ON_GROUND, 0.0 m above home'
+        'its fence breached, RTL (fence action)' | { -> text('Polygon fence breached'); mode('RTL') }                                                                        || 7.1d | "vehicle 1 breached its fence during item 2 of 4 (NAV_WAYPOINT) and left AUTO for RTL (its fence action): armed, RTL, landed state IN_AIR, 20.0 m above home, last text 'Polygon fence breached'"
+        'it crashed and disarmed'                | { -> text('SIM Hit ground at 12 m/s'); at(0, 0); landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND); armed(false) } || 7.1d | "vehicle 1 disarmed during item 2 of 4 (NAV_WAYPOINT): disarmed, AUTO, landed state ON_GROUND, 0.0 m above home, last text 'SIM Hit ground at 12 m/s'"
+    }
+
+    /** A copter flying item 2 of hop at 20 m from 5 s on, item 1 reported reached. */
+    private void flyingItem2(MissionTask task = hop5()) {
+        vehicle.ready()
+        vehicle.autopilot = true
+        launch(task)
+        stepUntil(FlightState.RUNNING)
+        vehicle.landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR)
+        vehicle.at(0, 20)
+        vehicle.next(2)
+        runTo(5)
+    }
+
+    def "a pilot's pause is not an abort: LOITER for 15 s is reported, AUTO again is followed to the end, and the script can tell"() {
+        given:
+        flyingItem2()
+        int sent = vehicle.commands.size()
+
+        when: 'a safety pilot switches to LOITER at 5.1 s and back to AUTO at 20.1 s; the copter resumes item 2'
+        vehicle.mode('LOITER')
+        def paused = runTo(20)
+        boolean heldThen = vehicle.takenOver
+        vehicle.mode('AUTO')
+        runTo(21)
+
+        then: 'no error, the pause and the hand-back said, nothing sent to the vehicle'
+        paused == CompletionState.IN_PROGRESS
+        heldThen
+        !vehicle.takenOver
+        vehicle.takeovers == 1
+        vehicle.commands.size() == sent
+        messages.containsAll(said([
+                'vehicle 1 taken over: LOITER during item 2 of 4 (NAV_WAYPOINT) (paused until AUTO is back, for 120 s at most)',
+                'vehicle 1 back in AUTO after 15 s: item 2 of 4 (NAV_WAYPOINT)']))
+
+        when: 'the copter flies on and lands'
+        vehicle.next(3)
+        vehicle.next(4)
+        vehicle.landAndDisarm()
+        def end = runTo(30)
+
+        then:
+        end == CompletionState.DONE
+    }
+
+    def "a takeover that is not handed back within the mission's takeover timeout is an error"() {
+        given:
+        flyingItem2(MissionDsl.mission {
+            name 'hop'
+            takeoverTimeout 30
+            takeOff Position.fromDegrees(40.444233, -7.375234, 840)
+            goPos 40.4444, -7.375234, 840
+            goPos 40.4446, -7.375234, 840
+            landingPoint 40.4446, -7.375234, 820
+        })
+
+        when:
+        vehicle.mode('POSHOLD')
+        def held = runTo(35)
+        def cs = runTo(40)
+
+        then: 'the takeover began at 5.1 s; 30 s later it fails'
+        held == CompletionState.IN_PROGRESS
+        cs.error
+        now() == 35.2d
+        failure() == 'mission hop on vehicle 1: vehicle 1 taken over: POSHOLD for 30 s during item 2 of 4 (NAV_WAYPOINT),' +
+                ' not handed back to AUTO within the takeover timeout of 30 s: armed, POSHOLD, landed state IN_AIR, 20.0 m above home'
+    }
+
+    def "a pilot who pauses and then sends the vehicle home ends the mission: RTL during the pause is an error"() {
+        given:
+        flyingItem2()
+        vehicle.mode('LOITER')
+        runTo(10)
+
+        when:
+        vehicle.mode('RTL')
+        def cs = runTo(15)
+
+        then:
+        cs.error
+        now() == 12.1d
+        failure() == 'mission hop on vehicle 1: vehicle 1 left AUTO for RTL during item 2 of 4 (NAV_WAYPOINT), before the mission' +
+                ' ended: armed, RTL, landed state IN_AIR, 20.0 m above home'
+    }
+
+    def "what must not end a flight: a warning during a long leg, notices, a takeover's own texts"() {
+        given:
+        flyingItem2()
+
+        when:
+        vehicle.text('Vibration compensation ON', MAV_SEVERITY.MAV_SEVERITY_WARNING)
+        vehicle.text('Mission: 2 WP', MAV_SEVERITY.MAV_SEVERITY_INFO)
+        vehicle.text('EKF3 IMU0 switching to compass 1', MAV_SEVERITY.MAV_SEVERITY_NOTICE)
+        def cs = runTo(12)
+
+        then:
+        cs == CompletionState.IN_PROGRESS
+    }
+
+    def "a reboot in mid-mission (time since boot going back) is an error at once"() {
+        given:
+        flyingItem2()
+        vehicle.state = vehicle.state.withBootTime(300_000)
+
+        when:
+        vehicle.state = vehicle.state.withBootTime(2_500)
+        def cs = runTo(6)
+
+        then:
+        cs.error
+        now() == 5.1d
+        failure().startsWith('mission hop on vehicle 1: vehicle 1 rebooted during item 2 of 4 (NAV_WAYPOINT): its time since boot went back to 2.5 s')
+    }
+
+    def "a vehicle that makes no progress: a warning line, then an error at the mission's stall limit"() {
+        given: 'the copter hangs 10 m short of item 2 from 5 s on'
+        flyingItem2(MissionDsl.mission {
+            name 'hop'
+            stallLimit 45
+            takeOff Position.fromDegrees(40.444233, -7.375234, 840)
+            goPos 40.4446, -7.375234, 840
+            goPos 40.4448, -7.375234, 840
+            landingPoint 40.4448, -7.375234, 820
+        })
+        vehicle.at(30, 20)
+        runTo(6)
+
+        when:
+        def warned = runTo(50)
+        def cs = runTo(60)
+
+        then: 'warned after 15 s (a third of the limit), failed after 45 s, both saying how far it is'
+        warned == CompletionState.IN_PROGRESS
+        messages.contains(said(['vehicle 1 makes no progress toward item 2 of 4 (NAV_WAYPOINT): 11 m from it, no closer for 15 s'])[0])
+        cs.error
+        failure() == 'mission hop on vehicle 1: vehicle 1 stalled: no progress toward item 2 of 4 (NAV_WAYPOINT) for 45 s,' +
+                ' 11 m from it (the stall limit): armed, AUTO, landed state IN_AIR, 20.0 m above home'
     }
 
     def "a vehicle lost during the mission (no contact within its connection timeout): ERROR at the next step, no command sent"() {
