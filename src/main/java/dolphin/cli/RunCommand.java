@@ -145,6 +145,18 @@ final class RunCommand implements Callable<Integer> {
                     + "checks passing) before it fails quoting the vehicle's PreArm text (default: ${DEFAULT-VALUE}).")
     private long readyTimeoutSeconds;
 
+    @Option(names = "--stall-limit", paramLabel = "SECONDS", defaultValue = "60",
+            description = "How long a vehicle may make no progress toward its mission item, or its landing, before the "
+                    + "mission fails; a line warns after a third of it, at most 20 s; a mission's stallLimit overrides it "
+                    + "(default: ${DEFAULT-VALUE}).")
+    private long stallLimitSeconds;
+
+    @Option(names = "--takeover-timeout", paramLabel = "SECONDS", defaultValue = "120",
+            description = "How long a pilot or another ground station may hold a vehicle out of AUTO (LOITER, HOLD, ...) "
+                    + "before its mission fails; the mission is paused until then; a mission's takeoverTimeout overrides it "
+                    + "(default: ${DEFAULT-VALUE}).")
+    private long takeoverTimeoutSeconds;
+
     @Option(names = "--fleet", paramLabel = "FILE", converter = Converters.FleetFileConverter.class,
             description = "A fleet file: by system id, the vehicles' names, Dolphin types, payloads and sensors, for vehicles "
                     + "that do not announce them (docs/sensors.md).")
@@ -323,11 +335,16 @@ final class RunCommand implements Callable<Integer> {
 
     /** The mission executor's deadlines, from the options. */
     MissionExecutorConfig executorConfig() {
-        if (readyTimeoutSeconds <= 0) {
-            throw new ParameterException(spec.commandLine(),
-                    "--ready-timeout must be a positive number of seconds, got " + readyTimeoutSeconds);
+        return MissionExecutorConfig.DEFAULT.withPrepare(positiveSeconds("--ready-timeout", readyTimeoutSeconds))
+                .withStallLimit(positiveSeconds("--stall-limit", stallLimitSeconds))
+                .withTakeoverTimeout(positiveSeconds("--takeover-timeout", takeoverTimeoutSeconds));
+    }
+
+    private Duration positiveSeconds(String option, long seconds) {
+        if (seconds <= 0) {
+            throw new ParameterException(spec.commandLine(), option + " must be a positive number of seconds, got " + seconds);
         }
-        return MissionExecutorConfig.DEFAULT.withPrepare(Duration.ofSeconds(readyTimeoutSeconds));
+        return Duration.ofSeconds(seconds);
     }
 
     /** The simulated link's faults; refused without --sim, where there is no simulated link to apply them to. */

@@ -160,6 +160,19 @@ release v
         MissionExecutorConfig.DEFAULT.prepare() == Duration.ofMinutes(3)
     }
 
+    def "--stall-limit and --takeover-timeout set how long a flight may make no progress and be held by someone else"() {
+        when:
+        def c = parsed(EXAMPLE, '--stall-limit', '30', '--takeover-timeout', '300').executorConfig()
+
+        then: 'the warning comes at a third of the stall limit'
+        c.stallLimit() == Duration.ofSeconds(30)
+        c.stallWarning() == Duration.ofSeconds(10)
+        c.takeoverTimeout() == Duration.ofMinutes(5)
+        MissionExecutorConfig.DEFAULT.stallLimit() == Duration.ofSeconds(60)
+        MissionExecutorConfig.DEFAULT.stallWarning() == Duration.ofSeconds(20)
+        MissionExecutorConfig.DEFAULT.takeoverTimeout() == Duration.ofSeconds(120)
+    }
+
     def "dolphin run talks to vehicles that dolphin sim started separately"() {
         given:
         int port = freePort()
@@ -317,5 +330,7 @@ release v
         ['run', EXAMPLE, '--transfer-give-up', 'NaN']              | '--transfer-give-up (NaN s) must be at least --transfer-max-timeout (1500 ms)'
         ['run', EXAMPLE, '--transfer-path', 'tcp']                 | "Invalid value for option '--transfer-path': 'tcp' is not auto, ftp or items"
         ['run', EXAMPLE, '--ready-timeout', '0']                   | '--ready-timeout must be a positive number of seconds, got 0'
+        ['run', EXAMPLE, '--stall-limit', '-5']                    | '--stall-limit must be a positive number of seconds, got -5'
+        ['run', EXAMPLE, '--takeover-timeout', '0']                | '--takeover-timeout must be a positive number of seconds, got 0'
     }
 }
