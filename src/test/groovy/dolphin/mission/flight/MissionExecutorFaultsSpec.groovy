@@ -495,7 +495,7 @@ class MissionExecutorFaultsSpec extends MissionFlights {
         what                                     | change                                                                                                                    || at   | text
         'someone switched it to RTL'             | { -> mode('RTL') }                                                                                                        || 7.1d | 'vehicle 1 left AUTO for RTL during item 2 of 4 (NAV_WAYPOINT), before the mission ended: armed, RTL, landed state IN_AIR, 20.0 m above home'
         'a failsafe switched it to BRAKE'        | { -> mode('BRAKE'); text('GCS Failsafe', MAV_SEVERITY.MAV_SEVERITY_WARNING) }                                            || 7.1d | "vehicle 1 left AUTO for BRAKE during item 2 of 4 (NAV_WAYPOINT), before the mission ended, saying 'GCS Failsafe': armed, BRAKE, landed state IN_AIR, 20.0 m above home"
-        'the EKF failsafe landed it'             | { -> text('EKF variance', MAV_SEVERITY.MAV_SEVERITY_WARNING); mode('LAND'); text('EKF Failsafe: changed to LAND Mode', MAV_SEVERITY.MAV_SEVERITY_CRITICAL) } || 7.0d | "vehicle 1 reported 'EKF variance', 'EKF Failsafe: changed to LAND Mode' during item 2 of 4 (NAV_WAYPOINT): armed, LAND, landed state IN_AIR, 20.0 m above home"
+        'the EKF failsafe landed it'             | { -> text('EKF variance: position lost', MAV_SEVERITY.MAV_SEVERITY_CRITICAL); mode('LAND'); text('EKF Failsafe: changed to LAND Mode', MAV_SEVERITY.MAV_SEVERITY_CRITICAL) } || 7.0d | "vehicle 1 reported 'EKF variance: position lost', 'EKF Failsafe: changed to LAND Mode' during item 2 of 4 (NAV_WAYPOINT): armed, LAND, landed state IN_AIR, 20.0 m above home"
         'a motor failed and it fell'             | { -> text('Potential Thrust Loss (2)', MAV_SEVERITY.MAV_SEVERITY_EMERGENCY); at(0, 0); landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND) } || 7.0d | "vehicle 1 reported 'Potential Thrust Loss (2)' during item 2 of 4 (NAV_WAYPOINT): armed, AUTO, landed state ON_GROUND, 0.0 m above home"
         'it came down without a word'            | { -> at(0, 0); landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND) }                                               || 7.1d | 'vehicle 1 is on the ground during item 2 of 4 (NAV_WAYPOINT) with items left: armed, AUTO, landed state ON_GROUND, 0.0 m above home'
         'its fence breached, RTL (fence action)' | { -> text('Polygon fence breached'); mode('RTL') }                                                                        || 7.1d | "vehicle 1 breached its fence during item 2 of 4 (NAV_WAYPOINT) and left AUTO for RTL (its fence action): armed, RTL, landed state IN_AIR, 20.0 m above home, last text 'Polygon fence breached'"
@@ -592,7 +592,7 @@ class MissionExecutorFaultsSpec extends MissionFlights {
         flyingItem2()
 
         when:
-        vehicle.text('Vibration compensation ON', MAV_SEVERITY.MAV_SEVERITY_WARNING)
+        vehicle.text('EKF primary changed:1', MAV_SEVERITY.MAV_SEVERITY_WARNING)
         vehicle.text('Mission: 2 WP', MAV_SEVERITY.MAV_SEVERITY_INFO)
         vehicle.text('EKF3 IMU0 switching to compass 1', MAV_SEVERITY.MAV_SEVERITY_NOTICE)
         def cs = runTo(12)
