@@ -36,7 +36,9 @@ public final class Wgs84 {
         double lat = Math.atan2(z / p, 0.01);
         double n = n(lat);
         double h = p / Math.cos(lat) - n;
-        double previous = -1e-9;
+        // At least one refinement: the first guess's height can fall within 0.1 mm of any start value (at
+        // the equator, at sea level), and the first guess's latitude is far off.
+        double previous = Double.POSITIVE_INFINITY;
         while (Math.abs(h - previous) > 1e-4) {
             previous = h;
             lat = Math.atan2(z / p, 1 - E2 * n / (n + h));

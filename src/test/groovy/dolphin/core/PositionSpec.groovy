@@ -188,4 +188,18 @@ class PositionSpec extends Specification {
         expect:
         !new Area(APDL, 1e7).contains(null)
     }
+
+    def "at the equator at sea level, where the first guess's height is already 0, displacing east stays on the equator"() {
+        given: 'just south of the equator, at height 0: the ECEF inversion once kept its crude first guess there'
+        def p = Position.fromDegrees(-9e-7, 0.0002246, 0)
+
+        when:
+        def q = p.displace(0, 5, 0)
+        def ned = p.displacementTo(q)
+
+        then:
+        Math.abs(ned[0]) < 0.01
+        Math.abs(ned[1] - 5) < 0.01
+        Math.abs(Wgs84.fromEcef(*Wgs84.toEcef(p.lat(), p.lon(), 0)).lat() - p.lat()) < 1e-12
+    }
 }

@@ -81,7 +81,7 @@ surveyNorth = mission {
 ''')
 
         then: 'the clauses that begin with t, then the script words that do'
-        items*.label == ['timeout', 'type', 'task', 'telemetry']
+        items*.label == ['timeout', 'type', 'takenOver', 'takeovers', 'task', 'telemetry']
     }
 
     def "inside pick { } with nothing typed: the six clauses, then the script's words"() {

@@ -53,7 +53,7 @@ class GdslContributionsSpec extends Specification {
         signatures(contributed.methods) == expected(added)
         contributed.properties == []
         inherited*.name().containsAll(['pick', 'execute', 'waitFor', 'release'])
-        added*.name().toSet() == ['mission', 'pos', 'moveDistance', 'move', 'sendMessage', 'downloadMission', 'fenceBreached',
+        added*.name().toSet() == ['mission', 'pos', 'moveDistance', 'move', 'sendMessage', 'downloadMission', 'fenceBreached', 'takenOver', 'takeovers',
                                   'missionFromFile', 'sensor', 'sensorKnown', 'telemetry', 'payloads', 'useSensor',
                                   'declareSensors'] as Set
     }

@@ -635,7 +635,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             if (alarm.isPresent()) {
                 return fail(alarm.get());
             }
-            switch (look.kind()) {
+            switch (look.hand()) {
                 case FAILED -> {
                     return fail(look.text());
                 }
@@ -650,7 +650,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 }
                 default -> { }
             }
-            StallWatch.Look stall = stalls.look(s, current, auto && !takeovers.paused(), now);
+            StallWatch.Stall stall = stalls.look(s, current, auto && !takeovers.paused(), now);
             if (stall.error() != null) {
                 return fail(stall.error());
             }

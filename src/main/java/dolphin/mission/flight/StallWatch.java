@@ -15,14 +15,15 @@ import java.util.Set;
  * for the warning time (one line), then for the limit (the error). The distance is three-dimensional,
  * so a climb, a sub's slow dive or a descent is progress. Items that make the vehicle wait are never a
  * stall: a vehicle at its waypoint (within the item's acceptance radius or the family's) holding for
- * the item's time, one circling a loiter item, a NAV_DELAY, and any item without a place. Fed one
+ * the item's time, one circling a loiter item, a NAV_DELAY, any item without a place, and a vehicle
+ * whose position has not been heard for 5 s (a sub silent at depth: the link's rules judge it). Fed one
  * snapshot at a time with the clock's time.
  */
 final class StallWatch {
 
     /** What one look found: a warning to report once, an error, or neither. */
-    record Look(String warning, String error) {
-        static final Look NONE = new Look(null, null);
+    record Stall(String warning, String error) {
+        static final Stall NONE = new Stall(null, null);
     }
 
     /** How much closer the vehicle must get for it to count as progress: more than a hover's wander. */
@@ -34,6 +35,8 @@ final class StallWatch {
     private static final Set<Integer> WAYPOINTS = Set.of(MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_CMD.MAV_CMD_NAV_SPLINE_WAYPOINT);
     private static final Set<Integer> LOITERS = Set.of(MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM, MAV_CMD.MAV_CMD_NAV_LOITER_TURNS,
             MAV_CMD.MAV_CMD_NAV_LOITER_TIME, MAV_CMD.MAV_CMD_NAV_LOITER_TO_ALT);
+    /** A position older than this is no evidence: a vehicle we do not hear (a sub deep down) is the link's to judge. */
+    private static final long FRESH_NANOS = 5_000_000_000L;
     private static final Set<Integer> CLIMBS = Set.of(MAV_CMD.MAV_CMD_NAV_TAKEOFF, MAV_CMD.MAV_CMD_NAV_VTOL_TAKEOFF);
 
     private final FlightRules rules;
@@ -60,27 +63,27 @@ final class StallWatch {
      * @param current the item under way
      * @param watching whether the vehicle flies its mission itself (in AUTO, not paused): the clock runs only then
      */
-    Look look(VehicleState s, int current, boolean watching, long now) {
-        double away = watching ? distance(s, names.get(current)) : Double.NaN;
+    Stall look(VehicleState s, int current, boolean watching, long now) {
+        double away = watching && now - s.positionNanos() <= FRESH_NANOS ? distance(s, names.get(current)) : Double.NaN;
         if (current != item || Double.isNaN(away) || away < best - PROGRESS_METRES) {
             item = current;
             best = Double.isNaN(away) ? Double.MAX_VALUE : away;
             since = now;
             warned = false;
-            return Look.NONE;
+            return Stall.NONE;
         }
         long still = now - since;
         String where = String.format(Locale.ROOT, "%.0f m from", away);
         if (still > limit.toNanos()) {
-            return new Look(null, "vehicle " + vehicle + " stalled: no progress toward " + names.item(current) + " for "
+            return new Stall(null, "vehicle " + vehicle + " stalled: no progress toward " + names.item(current) + " for "
                     + limit.toSeconds() + " s, " + where + " it (the stall limit)" + ItemNames.where(s));
         }
         if (still > warning.toNanos() && !warned) {
             warned = true;
-            return new Look("vehicle " + vehicle + " makes no progress toward " + names.item(current) + ": " + where
+            return new Stall("vehicle " + vehicle + " makes no progress toward " + names.item(current) + ": " + where
                     + " it, no closer for " + warning.toSeconds() + " s", null);
         }
-        return Look.NONE;
+        return Stall.NONE;
     }
 
     /**

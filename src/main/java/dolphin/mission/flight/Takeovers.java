@@ -22,17 +22,14 @@ import java.util.List;
  */
 final class Takeovers {
 
-    /** What one look found; {@code text} says it for the pause's report lines and the error. */
-    record Look(Kind kind, String text) {
-        enum Kind { FLYING, LEFT, TAKEN_OVER, PAUSED, HANDED_BACK, FAILED }
+    /** What one look found: whose hand the vehicle is in; {@code text} says it for the pause's lines and the error. */
+    record Look(Hand hand, String text) {
+        enum Hand { FLYING, LEFT, TAKEN_OVER, PAUSED, HANDED_BACK, FAILED }
 
-        static final Look FLYING = new Look(Kind.FLYING, null);
-        static final Look LEFT = new Look(Kind.LEFT, null);
-        static final Look PAUSED = new Look(Kind.PAUSED, null);
+        static final Look FLYING = new Look(Hand.FLYING, null);
+        static final Look LEFT = new Look(Hand.LEFT, null);
+        static final Look PAUSED = new Look(Hand.PAUSED, null);
 
-        boolean paused() {
-            return kind == Kind.PAUSED || kind == Kind.TAKEN_OVER;
-        }
     }
 
     /** How many of the vehicle's last texts may tell of a fence breach. */
@@ -47,7 +44,7 @@ final class Takeovers {
     private final Duration grace;
     private final Duration timeout;
     private boolean sawAuto;
-    private Phase phase = new InAuto();
+    private AutoPhase phase = new InAuto();
 
     /**
      * @param grace how long after leaving AUTO at the last navigation item the mission's end may still come
@@ -78,9 +75,9 @@ final class Takeovers {
     Look look(VehicleState s, boolean auto, int current, long now) {
         if (auto) {
             sawAuto = true;
-            Phase was = phase;
+            AutoPhase was = phase;
             phase = new InAuto();
-            return was instanceof Paused p ? new Look(Look.Kind.HANDED_BACK, "vehicle " + vehicle + " back in AUTO after "
+            return was instanceof Paused p ? new Look(Look.Hand.HANDED_BACK, "vehicle " + vehicle + " back in AUTO after "
                     + seconds(now - p.since) + " s: " + names.item(current)) : Look.FLYING;
         }
         if (!sawAuto) {
@@ -89,12 +86,12 @@ final class Takeovers {
         return phase.look(s, current, now);
     }
 
-    private abstract static class Phase {
+    private abstract static class AutoPhase {
         abstract Look look(VehicleState s, int current, long now);
     }
 
     /** Flying the mission in AUTO; a change of mode starts a {@link Left}. */
-    private final class InAuto extends Phase {
+    private final class InAuto extends AutoPhase {
         @Override
         Look look(VehicleState s, int current, long now) {
             phase = new Left(s.modeName(), now, -1);
@@ -106,7 +103,7 @@ final class Takeovers {
      * Out of AUTO, waiting for the vehicle's words (and, at the last item, for the mission's end).
      * {@code pausedSince} is when the takeover began, when this change came during one; -1 otherwise.
      */
-    private final class Left extends Phase {
+    private final class Left extends AutoPhase {
         private final String mode;
         private final long since;
         private final long pausedSince;
@@ -129,7 +126,7 @@ final class Takeovers {
             }
             String item = names.item(current);
             if (fenceBreached(s)) {
-                return new Look(Look.Kind.FAILED, "vehicle " + vehicle + " breached its fence during " + item
+                return new Look(Look.Hand.FAILED, "vehicle " + vehicle + " breached its fence during " + item
                         + " and left AUTO for " + mode + " (its fence action)" + ItemNames.where(s));
             }
             String said = words.quote(since, now);
@@ -139,16 +136,16 @@ final class Takeovers {
                     return Look.PAUSED;
                 }
                 phase = new Paused(since);
-                return new Look(Look.Kind.TAKEN_OVER, "vehicle " + vehicle + " taken over: " + mode + " during " + item);
+                return new Look(Look.Hand.TAKEN_OVER, "vehicle " + vehicle + " taken over: " + mode + " during " + item);
             }
-            return new Look(Look.Kind.FAILED, "vehicle " + vehicle + " left AUTO for " + mode + " during " + item
+            return new Look(Look.Hand.FAILED, "vehicle " + vehicle + " left AUTO for " + mode + " during " + item
                     + ", before the mission ended" + (said.isEmpty() ? ItemNames.where(s)
                     : ", saying " + said + ItemNames.whereWithout(s)));
         }
     }
 
     /** Held or flown by someone else in one of the takeover modes, since {@code since}. */
-    private final class Paused extends Phase {
+    private final class Paused extends AutoPhase {
         private final long since;
 
         Paused(long since) {
@@ -162,7 +159,7 @@ final class Takeovers {
                 return Look.LEFT;
             }
             if (now - since > timeout.toNanos()) {
-                return new Look(Look.Kind.FAILED, "vehicle " + vehicle + " taken over: " + s.modeName() + " for "
+                return new Look(Look.Hand.FAILED, "vehicle " + vehicle + " taken over: " + s.modeName() + " for "
                         + seconds(now - since) + " s during " + names.item(current) + ", not handed back to AUTO within"
                         + " the takeover timeout of " + timeout.toSeconds() + " s" + ItemNames.where(s));
             }

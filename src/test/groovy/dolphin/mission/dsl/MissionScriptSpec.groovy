@@ -271,7 +271,7 @@ class MissionScriptSpec extends Specification {
         !variable('m1').executor.is(variable('m1').executor)
     }
 
-    def "every command of C.6 rows 1 to 30, allowBelowHome, fence, rally, the underwater and the mapping words, is a builder method, has its forms for errors and is documented"() {
+    def "every command of C.6 rows 1 to 30, allowBelowHome, fence, rally, the underwater and the mapping words, the flight limits, is a builder method, has its forms for errors and is documented"() {
         given:
         Set<String> methods = MissionBuilder.declaredMethods
                 .findAll { Modifier.isPublic(it.modifiers) && !it.synthetic && !it.name.startsWith('\$') }*.name
@@ -285,8 +285,28 @@ class MissionScriptSpec extends Specification {
                     'moveAndLoiterTimeFromHome', 'loiterPos', 'loiterTurns', 'loiterTime', 'landingPoint', 'returnHome',
                     'returnHomeAndLoiter', 'returnHomeAndLand', 'speed', 'altitude', 'delay', 'surveyArea', 'capturePhoto',
                     'captureSeveralPhotos', 'captureUntilStop', 'stopCapturing', 'jumpToItem', 'allowBelowHome', 'fence',
-                    'rally', 'maxDepth', 'dive', 'surface', 'survey', 'corridorScan', 'structureScan'].toSet()
+                    'rally', 'maxDepth', 'dive', 'surface', 'survey', 'corridorScan', 'structureScan', 'stallLimit',
+                    'takeoverTimeout'].toSet()
         methods.every { doc.contains("`${it}(") || doc.contains("`${it} {") }
+    }
+
+    def "stallLimit and takeoverTimeout are the mission's own flight limits; without them the run's apply"() {
+        when:
+        def r = run("""
+            limited = mission {
+                stallLimit 90
+                takeoverTimeout 5.minutes
+                goPos 41, -8, 100
+            }
+            plain = mission { goPos 41, -8, 100 }
+            """)
+
+        then:
+        r.outcome == COMPLETED
+        def limits = (h.engine.variable('limited') as MissionTask).mission().limits()
+        limits.stall().get() == java.time.Duration.ofSeconds(90)
+        limits.takeover().get() == java.time.Duration.ofMinutes(5)
+        (h.engine.variable('plain') as MissionTask).mission().limits() == dolphin.mission.model.FlightLimits.RUN
     }
 
     def "bad input is a script error naming the command, the file and the line: #kind"() {
@@ -323,6 +343,8 @@ class MissionScriptSpec extends Specification {
         'null position'               | "p = null\nm = mission {\n  takeOff p // <<\n}"                                                  || "takeOff: the position is null (a variable that holds no position?)"
         'speed type'                  | "m = mission {\n  speed 12, 7 // <<\n}"                                                         || "speed: the speed type must be 0 (airspeed), 1 (ground speed), 2 (climb) or 3 (descent), got 7"
         'non-positive speed'          | "m = mission {\n  speed 0 // <<\n}"                                                             || "speed: the speed must be positive, got 0"
+        'a stall limit of 0'          | "m = mission {\n  stallLimit 0 // <<\n  goPos 41, -8, 100\n}"                                || "stallLimit: the stall limit must be positive, got 0"
+        'a negative takeover timeout' | "m = mission {\n  takeoverTimeout(-1.minutes) // <<\n  goPos 41, -8, 100\n}"                  || "takeoverTimeout: the takeover timeout must be positive, got -60.0"
         'land mode'                   | "m = mission {\n  landingPoint 41, -8, 0, 0, 5 // <<\n}"                                        || "landingPoint: the land mode must be 0 (disabled), 1 (opportunistic) or 2 (required), got 5"
         'survey spacing'              | "m = mission {\n  home 41, -8\n  surveyArea 1000, 500, 0 // <<\n}"                              || "surveyArea: the spacing must be positive, got 0"
         'survey too large'            | "m = mission {\n  home 41, -8\n  surveyArea 1000, 100000, 1 // <<\n}"                           || "surveyArea: a width of 100000.0 m with passes 1.0 m apart makes more than 32767 passes (2 items each); a MAVLink mission holds at most 65535 items"

@@ -629,9 +629,11 @@ class MissionExecutorFaultsSpec extends MissionFlights {
         vehicle.at(30, 20)
         runTo(6)
 
-        when:
-        def warned = runTo(50)
-        def cs = runTo(60)
+        when: 'it keeps reporting the same position every second'
+        (7..50).each { vehicle.at(30, 20); runTo(it) }
+        def warned = executor.completionState
+        (51..60).each { vehicle.at(30, 20); runTo(it) }
+        def cs = executor.completionState
 
         then: 'warned after 15 s (a third of the limit), failed after 45 s, both saying how far it is'
         warned == CompletionState.IN_PROGRESS

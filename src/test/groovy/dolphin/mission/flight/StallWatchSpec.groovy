@@ -33,12 +33,28 @@ class StallWatchSpec extends Specification {
         MissionItem.at(1, MAV_CMD.MAV_CMD_NAV_WAYPOINT, HOME.displace(north, 0, -up), hold, radius, 0, 0)
     }
 
-    /** In AUTO, armed, {@code north} metres north of home and {@code up} above it. */
-    static VehicleState at(VehicleFamily family, double north, double up) {
+    /** In AUTO, armed, {@code north} metres north of home and {@code up} above it, heard at {@code t} seconds. */
+    static VehicleState at(VehicleFamily family, double north, double up, long t = 0) {
         def hb = new msg_heartbeat()
         hb.base_mode = (short) 129
         hb.custom_mode = family.modeNumber('AUTO').asLong
-        VehicleState.initial(family).withHeartbeat(hb, 0).withPosition(HOME.displace(north, 0, -up), up, Double.NaN, 0)
+        VehicleState.initial(family).withHeartbeat(hb, 0).withPosition(HOME.displace(north, 0, -up), up, Double.NaN, t * S)
+    }
+
+    /** The same state, its position heard at {@code t} seconds. */
+    static VehicleState fresh(VehicleState s, long t) {
+        s.withPosition(s.position(), s.relativeAlt(), s.heading(), t * S)
+    }
+
+    def "a position not heard for over 5 s is no evidence of a stall: a sub silent at depth is the link's to judge"() {
+        given: 'the last position heard at 0 s, 200 m short of the waypoint'
+        def w = watch(VehicleFamily.SUB, waypoint(500, -5))
+        def silent = at(VehicleFamily.SUB, 300, -5, 0)
+
+        expect:
+        (0..120).every { t -> w.look(silent, 1, true, t * S) == StallWatch.Stall.NONE }
+        (121..140).every { t -> w.look(fresh(silent, t), 1, true, t * S) == StallWatch.Stall.NONE }
+        w.look(fresh(silent, 142), 1, true, 142 * S).warning != null
     }
 
     def "a copter that hangs 200 m short of its waypoint: one warning after 20 s, the error after 60 s, naming item and distance"() {
@@ -47,12 +63,12 @@ class StallWatchSpec extends Specification {
         def s = at(VehicleFamily.COPTER, 300, 30)
 
         expect:
-        w.look(s, 1, true, 0) == StallWatch.Look.NONE
-        w.look(s, 1, true, 20 * S) == StallWatch.Look.NONE
-        w.look(s, 1, true, 21 * S).warning == 'vehicle 1 makes no progress toward item 1 of 1 (NAV_WAYPOINT): 200 m from it, no closer for 20 s'
-        w.look(s, 1, true, 22 * S) == StallWatch.Look.NONE
-        w.look(s, 1, true, 60 * S) == StallWatch.Look.NONE
-        w.look(s, 1, true, 61 * S).error == 'vehicle 1 stalled: no progress toward item 1 of 1 (NAV_WAYPOINT) for 60 s, 200 m from it' +
+        w.look(fresh(s, 0), 1, true, 0) == StallWatch.Stall.NONE
+        w.look(fresh(s, 20), 1, true, 20 * S) == StallWatch.Stall.NONE
+        w.look(fresh(s, 21), 1, true, 21 * S).warning == 'vehicle 1 makes no progress toward item 1 of 1 (NAV_WAYPOINT): 200 m from it, no closer for 20 s'
+        w.look(fresh(s, 22), 1, true, 22 * S) == StallWatch.Stall.NONE
+        w.look(fresh(s, 60), 1, true, 60 * S) == StallWatch.Stall.NONE
+        w.look(fresh(s, 61), 1, true, 61 * S).error == 'vehicle 1 stalled: no progress toward item 1 of 1 (NAV_WAYPOINT) for 60 s, 200 m from it' +
                 ' (the stall limit): armed, AUTO, landed state UNDEFINED, 30.0 m above home'
     }
 
@@ -61,12 +77,12 @@ class StallWatchSpec extends Specification {
         def w = watch(VehicleFamily.COPTER, waypoint(5000, 30))
 
         expect: '5 km at 5 m/s: 1000 s without a warning'
-        (0..1000).every { t -> w.look(at(VehicleFamily.COPTER, t * 5, 30), 1, true, t * S) == StallWatch.Look.NONE }
+        (0..1000).every { t -> w.look(at(VehicleFamily.COPTER, t * 5, 30, t), 1, true, t * S) == StallWatch.Stall.NONE }
 
         and: 'wandering half a metre back and forth is no progress'
         def stuck = watch(VehicleFamily.COPTER, waypoint(500, 30))
-        (0..20).each { t -> stuck.look(at(VehicleFamily.COPTER, 100 + (t % 2) * 0.5, 30), 1, true, t * S) }
-        stuck.look(at(VehicleFamily.COPTER, 100.5, 30), 1, true, 21 * S).warning != null
+        (0..20).each { t -> stuck.look(at(VehicleFamily.COPTER, 100 + (t % 2) * 0.5, 30, t), 1, true, t * S) }
+        stuck.look(at(VehicleFamily.COPTER, 100.5, 30, 21), 1, true, 21 * S).warning != null
     }
 
     @Unroll
@@ -75,7 +91,7 @@ class StallWatchSpec extends Specification {
         def w = watch(family, item)
 
         expect: 'ten minutes at the same place'
-        (0..600).every { t -> w.look(at(family, north, up), 1, true, t * S) == StallWatch.Look.NONE }
+        (0..600).every { t -> w.look(at(family, north, up, t), 1, true, t * S) == StallWatch.Stall.NONE }
 
         where:
         what                                                      | family               | item                                                                                                    | north | up
@@ -95,7 +111,7 @@ class StallWatchSpec extends Specification {
         def w = watch(VehicleFamily.PLANE, MissionItem.at(1, MAV_CMD.MAV_CMD_NAV_LOITER_TO_ALT, HOME.displace(1000, 0, -400), 0, 0, 0, 0))
 
         expect:
-        (0..150).every { t -> w.look(at(VehicleFamily.PLANE, 1060, 100 + 2 * t), 1, true, t * S) == StallWatch.Look.NONE }
+        (0..150).every { t -> w.look(at(VehicleFamily.PLANE, 1060, 100 + 2 * t, t), 1, true, t * S) == StallWatch.Stall.NONE }
     }
 
     def "a sub's slow dive is progress: 0.1 m/s toward a depth of 30 m"() {
@@ -104,7 +120,7 @@ class StallWatchSpec extends Specification {
                 0, 0, 0, 0, MissionItem.degE7(HOME.latitudeDegrees()), MissionItem.degE7(HOME.longitudeDegrees()), -30, true))
 
         expect:
-        (0..290).every { t -> w.look(at(VehicleFamily.SUB, 0, -0.1 * t), 1, true, t * S) == StallWatch.Look.NONE }
+        (0..290).every { t -> w.look(at(VehicleFamily.SUB, 0, -0.1 * t, t), 1, true, t * S) == StallWatch.Stall.NONE }
     }
 
     def "a copter's take-off is judged by its height: climbing is progress, stuck on the ground is a stall"() {
@@ -114,9 +130,9 @@ class StallWatchSpec extends Specification {
         def stuck = watch(VehicleFamily.COPTER, takeoff)
 
         expect:
-        (0..25).every { t -> climbing.look(at(VehicleFamily.COPTER, 0, t), 1, true, t * S) == StallWatch.Look.NONE }
-        (0..20).every { t -> stuck.look(at(VehicleFamily.COPTER, 0, 0), 1, true, t * S) == StallWatch.Look.NONE }
-        stuck.look(at(VehicleFamily.COPTER, 0, 0), 1, true, 21 * S).warning.contains('30 m from it')
+        (0..25).every { t -> climbing.look(at(VehicleFamily.COPTER, 0, t, t), 1, true, t * S) == StallWatch.Stall.NONE }
+        (0..20).every { t -> stuck.look(at(VehicleFamily.COPTER, 0, 0, t), 1, true, t * S) == StallWatch.Stall.NONE }
+        stuck.look(at(VehicleFamily.COPTER, 0, 0, 21), 1, true, 21 * S).warning.contains('30 m from it')
     }
 
     def "held by someone else, or out of AUTO, the clock does not run; back in AUTO it starts again"() {
@@ -125,9 +141,9 @@ class StallWatchSpec extends Specification {
         def s = at(VehicleFamily.COPTER, 300, 30)
 
         expect:
-        (0..100).every { t -> w.look(s, 1, false, t * S) == StallWatch.Look.NONE }
-        (101..120).every { t -> w.look(s, 1, true, t * S) == StallWatch.Look.NONE }
-        w.look(s, 1, true, 122 * S).warning != null
+        (0..100).every { t -> w.look(fresh(s, t), 1, false, t * S) == StallWatch.Stall.NONE }
+        (101..120).every { t -> w.look(fresh(s, t), 1, true, t * S) == StallWatch.Stall.NONE }
+        w.look(fresh(s, 122), 1, true, 122 * S).warning != null
     }
 
     def "a new item starts the clock again; no position (GPS lost) is no stall"() {
@@ -136,9 +152,9 @@ class StallWatchSpec extends Specification {
         def s = at(VehicleFamily.COPTER, 300, 30)
 
         expect:
-        (0..19).every { t -> w.look(s, 1, true, t * S) == StallWatch.Look.NONE }
-        w.look(s, 0, true, 20 * S) == StallWatch.Look.NONE
-        w.look(VehicleState.initial(VehicleFamily.COPTER), 1, true, 30 * S) == StallWatch.Look.NONE
-        (31..50).every { t -> w.look(s, 1, true, t * S) == StallWatch.Look.NONE }
+        (0..19).every { t -> w.look(fresh(s, t), 1, true, t * S) == StallWatch.Stall.NONE }
+        w.look(fresh(s, 20), 0, true, 20 * S) == StallWatch.Stall.NONE
+        w.look(VehicleState.initial(VehicleFamily.COPTER), 1, true, 30 * S) == StallWatch.Stall.NONE
+        (31..50).every { t -> w.look(fresh(s, t), 1, true, t * S) == StallWatch.Stall.NONE }
     }
 }

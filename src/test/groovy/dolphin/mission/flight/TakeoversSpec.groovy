@@ -11,12 +11,12 @@ import java.time.Duration
 import spock.lang.Specification
 import spock.lang.Unroll
 
-import static dolphin.mission.flight.Takeovers.Look.Kind.FAILED
-import static dolphin.mission.flight.Takeovers.Look.Kind.FLYING
-import static dolphin.mission.flight.Takeovers.Look.Kind.HANDED_BACK
-import static dolphin.mission.flight.Takeovers.Look.Kind.LEFT
-import static dolphin.mission.flight.Takeovers.Look.Kind.PAUSED
-import static dolphin.mission.flight.Takeovers.Look.Kind.TAKEN_OVER
+import static dolphin.mission.flight.Takeovers.Look.Hand.FAILED
+import static dolphin.mission.flight.Takeovers.Look.Hand.FLYING
+import static dolphin.mission.flight.Takeovers.Look.Hand.HANDED_BACK
+import static dolphin.mission.flight.Takeovers.Look.Hand.LEFT
+import static dolphin.mission.flight.Takeovers.Look.Hand.PAUSED
+import static dolphin.mission.flight.Takeovers.Look.Hand.TAKEN_OVER
 
 /**
  * A pilot's pause against an abort, per family, on a clock that is a number: the takeover modes
@@ -50,11 +50,11 @@ class TakeoversSpec extends Specification {
         t.look(in(family, 'AUTO'), true, 2, 0)
 
         expect:
-        t.look(in(family, mode), false, 2, 10 * S).kind() == LEFT
-        t.look(in(family, mode), false, 2, 11 * S).kind() == LEFT
+        t.look(in(family, mode), false, 2, 10 * S).hand() == LEFT
+        t.look(in(family, mode), false, 2, 11 * S).hand() == LEFT
         t.look(in(family, mode), false, 2, 12 * S) == new Takeovers.Look(TAKEN_OVER, "vehicle 1 taken over: ${mode} during item 2 of 4 (NAV_WAYPOINT)")
         t.paused()
-        t.look(in(family, mode), false, 2, 20 * S).kind() == PAUSED
+        t.look(in(family, mode), false, 2, 20 * S).hand() == PAUSED
         t.look(in(family, 'AUTO'), true, 2, 25 * S) == new Takeovers.Look(HANDED_BACK, 'vehicle 1 back in AUTO after 15 s: item 2 of 4 (NAV_WAYPOINT)')
         !t.paused()
 
@@ -78,9 +78,9 @@ class TakeoversSpec extends Specification {
         t.look(in(family, 'AUTO'), true, 2, 0)
 
         expect:
-        t.look(in(family, mode), false, 2, 10 * S).kind() == LEFT
+        t.look(in(family, mode), false, 2, 10 * S).hand() == LEFT
         def failed = t.look(in(family, mode), false, 2, 12 * S)
-        failed.kind() == FAILED
+        failed.hand() == FAILED
         failed.text().startsWith("vehicle 1 left AUTO for ${mode} during item 2 of 4 (NAV_WAYPOINT), before the mission ended: armed, ${mode}")
 
         where:
@@ -101,7 +101,7 @@ class TakeoversSpec extends Specification {
         words.heard(MAV_SEVERITY.MAV_SEVERITY_WARNING, 'Failsafe: GCS', 10 * S)
 
         expect:
-        t.look(in(VehicleFamily.ROVER, 'HOLD'), false, 2, 10 * S).kind() == LEFT
+        t.look(in(VehicleFamily.ROVER, 'HOLD'), false, 2, 10 * S).hand() == LEFT
         t.look(in(VehicleFamily.ROVER, 'HOLD'), false, 2, 12 * S) == new Takeovers.Look(FAILED, "vehicle 1 left AUTO for HOLD during item 2"
                 + " of 4 (NAV_WAYPOINT), before the mission ended, saying 'Failsafe: GCS': armed, HOLD, landed state UNDEFINED, 30.0 m above home")
     }
@@ -130,11 +130,11 @@ class TakeoversSpec extends Specification {
         [last, mid].each { it.look(in(VehicleFamily.PLANE, 'AUTO'), true, 2, 0) }
 
         expect:
-        last.look(in(VehicleFamily.PLANE, 'RTL'), false, 4, 10 * S).kind() == LEFT
-        last.look(in(VehicleFamily.PLANE, 'RTL'), false, 4, 13 * S).kind() == LEFT
-        last.look(in(VehicleFamily.PLANE, 'RTL'), false, 4, 13 * S + 1).kind() == FAILED
-        mid.look(in(VehicleFamily.PLANE, 'RTL'), false, 2, 10 * S).kind() == LEFT
-        mid.look(in(VehicleFamily.PLANE, 'RTL'), false, 2, 12 * S).kind() == FAILED
+        last.look(in(VehicleFamily.PLANE, 'RTL'), false, 4, 10 * S).hand() == LEFT
+        last.look(in(VehicleFamily.PLANE, 'RTL'), false, 4, 13 * S).hand() == LEFT
+        last.look(in(VehicleFamily.PLANE, 'RTL'), false, 4, 13 * S + 1).hand() == FAILED
+        mid.look(in(VehicleFamily.PLANE, 'RTL'), false, 2, 10 * S).hand() == LEFT
+        mid.look(in(VehicleFamily.PLANE, 'RTL'), false, 2, 12 * S).hand() == FAILED
     }
 
     def "a pause moves between takeover modes freely; the timeout counts from the first change"() {
@@ -145,8 +145,8 @@ class TakeoversSpec extends Specification {
         t.look(in(VehicleFamily.COPTER, 'LOITER'), false, 2, 12 * S)
 
         expect:
-        t.look(in(VehicleFamily.COPTER, 'POSHOLD'), false, 2, 30 * S).kind() == PAUSED
-        t.look(in(VehicleFamily.COPTER, 'POSHOLD'), false, 2, 70 * S).kind() == PAUSED
+        t.look(in(VehicleFamily.COPTER, 'POSHOLD'), false, 2, 30 * S).hand() == PAUSED
+        t.look(in(VehicleFamily.COPTER, 'POSHOLD'), false, 2, 70 * S).hand() == PAUSED
         t.look(in(VehicleFamily.COPTER, 'POSHOLD'), false, 2, 71 * S).text().startsWith('vehicle 1 taken over: POSHOLD for 61 s during item 2 of 4')
     }
 
@@ -155,7 +155,7 @@ class TakeoversSpec extends Specification {
         def t = takeovers(VehicleFamily.COPTER)
 
         expect:
-        t.look(in(VehicleFamily.COPTER, 'GUIDED'), false, 1, 0).kind() == FLYING
-        t.look(in(VehicleFamily.COPTER, 'GUIDED'), false, 1, 60 * S).kind() == FLYING
+        t.look(in(VehicleFamily.COPTER, 'GUIDED'), false, 1, 0).hand() == FLYING
+        t.look(in(VehicleFamily.COPTER, 'GUIDED'), false, 1, 60 * S).hand() == FLYING
     }
 }
