@@ -12,9 +12,10 @@ import java.util.Objects;
  * @param text what happened as a person reads it, without the vehicle: "no contact for 3 s"
  * @param time when, in seconds of the run's {@link Clock}
  */
-public record VehicleEvent(String vehicle, Kind kind, String text, double time) {
+public record VehicleEvent(String vehicle, EventKind kind, String text, double time) {
 
-    public enum Kind {
+    /** What happened. Not named {@code Kind}: that simple name is {@link TaskEvent.Kind}'s (docs/architecture.md, "Layers"). */
+    public enum EventKind {
         /** Nothing heard from the vehicle for a few seconds (its connection timeout has not ended yet). */
         CONTACT_LOST,
         /** The vehicle is heard again after a {@link #CONTACT_LOST}. */

@@ -53,7 +53,7 @@ final class Contact {
             return Optional.empty();
         }
         silentFrom = NOT_SILENT;
-        return Optional.of(event(VehicleEvent.Kind.CONTACT_AGAIN, "contact again after " + wholeSeconds(now - from) + " s"));
+        return Optional.of(event(VehicleEvent.EventKind.CONTACT_AGAIN, "contact again after " + wholeSeconds(now - from) + " s"));
     }
 
     /** Called every tick: the start of a silence, once, when the vehicle has not been heard for {@link #SILENCE}. */
@@ -63,7 +63,7 @@ final class Contact {
             return Optional.empty();
         }
         silentFrom = heardNanos;
-        return Optional.of(event(VehicleEvent.Kind.CONTACT_LOST, "no contact for " + wholeSeconds(silence) + " s"));
+        return Optional.of(event(VehicleEvent.EventKind.CONTACT_LOST, "no contact for " + wholeSeconds(silence) + " s"));
     }
 
     /** How long the vehicle has been silent, since its last sign of life; empty while it is heard. */
@@ -72,7 +72,7 @@ final class Contact {
         return from == NOT_SILENT ? Optional.empty() : Optional.of(Duration.ofNanos(clock.nanoTime() - from));
     }
 
-    private VehicleEvent event(VehicleEvent.Kind kind, String text) {
+    private VehicleEvent event(VehicleEvent.EventKind kind, String text) {
         return new VehicleEvent(vehicle, kind, text, clock.seconds());
     }
 

@@ -344,8 +344,8 @@ class EngineSpec extends Specification {
         h.engine.addListener(new EngineListener() {
             void vehicleEvent(VehicleEvent e) { heard << [e.text(), Thread.currentThread().name] }
         })
-        def lost = new VehicleEvent('1', VehicleEvent.Kind.CONTACT_LOST, 'no contact for 3 s', 3)
-        def again = new VehicleEvent('1', VehicleEvent.Kind.CONTACT_AGAIN, 'contact again after 31 s', 34)
+        def lost = new VehicleEvent('1', VehicleEvent.EventKind.CONTACT_LOST, 'no contact for 3 s', 3)
+        def again = new VehicleEvent('1', VehicleEvent.EventKind.CONTACT_AGAIN, 'contact again after 31 s', 34)
 
         when: 'no script runs'
         Thread.start('MAVLink communications') { h.platform.vehicleEvent(lost) }.join()

@@ -187,7 +187,7 @@ class CommunicationsSpec extends Specification {
         double silentAt = h.clock.seconds()
 
         then:
-        h.eventually { assert events*.kind == [VehicleEvent.Kind.CONTACT_LOST] }
+        h.eventually { assert events*.kind == [VehicleEvent.EventKind.CONTACT_LOST] }
         events[0].text() == 'no contact for 3 s'
         events[0].time() - silentAt >= 2.5
         h.eventually { assert h.node('1').silence().get().toSeconds() >= 5 }
@@ -197,7 +197,7 @@ class CommunicationsSpec extends Specification {
         fleet.vehicle(1).silent = false
 
         then:
-        h.eventually { assert events*.kind == [VehicleEvent.Kind.CONTACT_LOST, VehicleEvent.Kind.CONTACT_AGAIN] }
+        h.eventually { assert events*.kind == [VehicleEvent.EventKind.CONTACT_LOST, VehicleEvent.EventKind.CONTACT_AGAIN] }
         (events[1].text() =~ /contact again after (\d+) s/)[0][1] as int >= 5
         !h.node('1').silence().present
     }

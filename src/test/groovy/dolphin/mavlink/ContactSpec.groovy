@@ -9,8 +9,8 @@ import dolphin.core.VehicleEvent
 import java.time.Duration
 import spock.lang.Specification
 
-import static dolphin.core.VehicleEvent.Kind.CONTACT_AGAIN
-import static dolphin.core.VehicleEvent.Kind.CONTACT_LOST
+import static dolphin.core.VehicleEvent.EventKind.CONTACT_AGAIN
+import static dolphin.core.VehicleEvent.EventKind.CONTACT_LOST
 
 /**
  * When a vehicle is silent and when it is heard again (docs/decisions.md, "Contact"), on a manual
