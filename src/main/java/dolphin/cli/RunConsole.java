@@ -13,8 +13,9 @@ import java.util.function.Supplier;
 
 /**
  * What `dolphin run` prints: the script's messages, its platform tasks' events, the vehicles' events
- * and the vehicles' status, on a {@link Screen}. A display thread refreshes the status every {@link #PERIOD} of the
- * display clock (real time: it paces what a person reads, whatever the speed-up of the run).
+ * and the vehicles' status, on a {@link Screen}. A display thread refreshes the status every
+ * {@link #PERIOD} of the display clock (real time: it paces what a person reads, whatever the
+ * speed-up of the run).
  */
 final class RunConsole implements EngineListener, AutoCloseable {
 

@@ -54,8 +54,8 @@ record VehicleStatus(String id, boolean connected, int silence, String mode, boo
     /** One line of prose, for logs. */
     String sentence() {
         return String.format(Locale.ROOT, "vehicle %s: %s%s, %s, battery %s, altitude %.1f m%s%s", id,
-                connected && !silent() ? "" : modeText() + ", last seen ", mode, armed ? "armed" : "disarmed", batteryText(), altitude,
-                item > 0 && total > 0 ? ", item " + item + " of " + total : "", task.isEmpty() ? "" : ", task " + task)
+                connected && !silent() ? "" : modeText() + ", last seen ", mode, armed ? "armed" : "disarmed", batteryText(),
+                altitude, item > 0 && total > 0 ? ", item " + item + " of " + total : "", task.isEmpty() ? "" : ", task " + task)
                 + (transfer.isEmpty() ? "" : ", " + transfer);
     }
 

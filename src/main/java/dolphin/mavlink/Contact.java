@@ -15,8 +15,8 @@ import java.util.Optional;
  */
 final class Contact {
 
-    /** Three 1 Hz heartbeats and a dozen 4 Hz stream messages missed: no ordinary loss, yet long before a timeout. */
-    static final Duration SILENCE = Duration.ofSeconds(3);
+    /** Three heartbeats and some fifty stream messages missed: no ordinary loss, yet long before a timeout. */
+    private static final Duration SILENCE = Duration.ofSeconds(3);
     private static final long NOT_SILENT = Long.MIN_VALUE;
 
     private final String vehicle;

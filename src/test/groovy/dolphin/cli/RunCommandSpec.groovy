@@ -5,6 +5,7 @@ import dolphin.mavlink.LinkTimeouts
 import dolphin.mission.transfer.MissionTransferConfig
 import dolphin.mission.transfer.TransferPath
 import dolphin.core.Position
+import dolphin.platform.DiveSilenceSpec
 import dolphin.sim.FaultModel
 import dolphin.sim.SimFleet
 import dolphin.sim.VehicleKind
@@ -200,20 +201,9 @@ release v
     }
 
     def "a sub out of contact while it dives: a line when contact is lost, its status line, and a line when contact is back"() {
-        given: 'a dive of more than a minute under 1 m of water, where the simulated sub sends and hears nothing'
+        given: 'the dive of more than a minute under 1 m of water, where the simulated sub sends and hears nothing'
         def script = File.createTempFile('dive', '.dolphin')
-        script.text = '''sub = pick { type 'UUV'; timeout 60 }
-setConnectionTimeout 10.minutes
-deep = mission {
-    name 'deep'
-    maxDepth 10
-    goPos 38.43462, -8.86118, 0
-    dive 5
-    move 60, 0
-    surface()
-}
-execute sub: deep
-'''
+        script.text = DiveSilenceSpec.script('10.minutes')
 
         when:
         def r = dolphin('run', script.path, '--sim', '1', '--sim-type', 'sub', '--sim-home', '38.43462,-8.86118',
@@ -229,6 +219,7 @@ execute sub: deep
         (lines[again] =~ /after (\d+) s/)[0][1] as int >= 60
         lines.count { it.contains('vehicle 1: no contact for') } == 1
         r.out.contains('task deep completed on vehicle 1: DONE')
+        r.out.contains('back at 0 m')
 
         cleanup:
         script?.delete()
