@@ -58,7 +58,7 @@ final class LiveScreen implements Screen {
         statuses.stream().limit(maxRows).map(VehicleStatus::row).forEach(rows::add);
         if (statuses.size() > maxRows) {
             Map<String, Long> modes = statuses.stream().skip(maxRows)
-                    .collect(Collectors.groupingBy(s -> s.connected() ? s.mode() : "LOST", TreeMap::new, Collectors.counting()));
+                    .collect(Collectors.groupingBy(VehicleStatus::modeGroup, TreeMap::new, Collectors.counting()));
             rows.add("... and " + (statuses.size() - maxRows) + " more: " + modes.entrySet().stream()
                     .map(e -> e.getValue() + " " + e.getKey()).collect(Collectors.joining(", ")));
         }

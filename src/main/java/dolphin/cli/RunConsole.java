@@ -2,6 +2,7 @@ package dolphin.cli;
 
 import dolphin.core.Clock;
 import dolphin.core.TaskEvent;
+import dolphin.core.VehicleEvent;
 import dolphin.dsl.EngineListener;
 import dolphin.dsl.ScriptResult;
 import dolphin.mavlink.MAVLinkNode;
@@ -11,9 +12,10 @@ import java.util.Locale;
 import java.util.function.Supplier;
 
 /**
- * What `dolphin run` prints: the script's messages, its platform tasks' events and the vehicles'
- * status, on a {@link Screen}. A display thread refreshes the status every {@link #PERIOD} of the
- * display clock (real time: it paces what a person reads, whatever the speed-up of the run).
+ * What `dolphin run` prints: the script's messages, its platform tasks' events, the vehicles' events
+ * and the vehicles' status, on a {@link Screen}. A display thread refreshes the status every
+ * {@link #PERIOD} of the display clock (real time: it paces what a person reads, whatever the
+ * speed-up of the run).
  */
 final class RunConsole implements EngineListener, AutoCloseable {
 
@@ -25,7 +27,7 @@ final class RunConsole implements EngineListener, AutoCloseable {
     private final Clock displayClock;
     private final Thread display;
     private volatile boolean running = true;
-    /** Keeps a task's line and its vehicles' status together, without a display refresh between them. */
+    /** Keeps a task's line and its vehicles' status together, without a refresh or a vehicle event's line between them. */
     private final Object showing = new Object();
 
     RunConsole(Screen screen, Supplier<List<MAVLinkNode>> nodes, Clock displayClock) {
@@ -81,6 +83,14 @@ final class RunConsole implements EngineListener, AutoCloseable {
                     + (event.kind() == TaskEvent.Kind.COMPLETED ? ": " + event.state() : ""));
             List<MAVLinkNode> onIt = nodes.get().stream().filter(n -> event.vehicles().contains(n.getId())).toList();
             screen.taskChanged(board.statuses(onIt));
+        }
+    }
+
+    /** On the thread that raised it (the communications thread for contact): the screens are synchronized. */
+    @Override
+    public void vehicleEvent(VehicleEvent event) {
+        synchronized (showing) {
+            screen.line(event.line());
         }
     }
 

@@ -29,6 +29,7 @@ public final class Environment {
         this.listener = listener;
         this.wakeup = clock.newWakeup();
         platform.setTelemetryListener(this::wake);
+        platform.setVehicleEventListener(listener::vehicleEvent);
     }
 
     public Platform getPlatform() {

@@ -5,6 +5,7 @@ import java.io.IOException;
 import java.io.InputStreamReader;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
+import java.util.function.Consumer;
 
 /**
  * What a vehicle platform (MAVLink, a test platform, ...) gives the runtime. Platforms that extend
@@ -28,6 +29,14 @@ public interface Platform {
      * arrives, so the task tree is stepped at once instead of at the next tick.
      */
     default void setTelemetryListener(Runnable onTelemetry) {
+    }
+
+    /**
+     * Called by the environment with where the platform's {@link VehicleEvent}s go, replacing the one
+     * given before. The platform calls it on whichever thread notices the event, with or without a
+     * script running; a platform without such events ignores it.
+     */
+    default void setVehicleEventListener(Consumer<VehicleEvent> listener) {
     }
 
     /** Reads one line for {@code ask}; by default from standard input, which stays open for later asks. */

@@ -7,6 +7,7 @@ import dolphin.core.RuntimeListener;
 import dolphin.core.SystemClock;
 import dolphin.core.TaskEvent;
 import dolphin.core.TaskTree;
+import dolphin.core.VehicleEvent;
 import dolphin.dsl.vocabulary.Vocabulary;
 import groovy.lang.Binding;
 import groovy.lang.Closure;
@@ -299,6 +300,11 @@ public final class Engine implements AutoCloseable {
         @Override
         public void executeStarted(TaskTree tree) {
             each(l -> l.executeStarted(tree));
+        }
+
+        @Override
+        public void vehicleEvent(VehicleEvent event) {
+            each(l -> l.vehicleEvent(event));
         }
 
         void scriptStarted(String name) {

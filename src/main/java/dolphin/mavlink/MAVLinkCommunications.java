@@ -19,6 +19,7 @@ import com.MAVLink.minimal.msg_heartbeat;
 import com.MAVLink.standard.msg_global_position_int;
 import dolphin.core.Clock;
 import dolphin.core.Position;
+import dolphin.core.VehicleEvent;
 import dolphin.mavlink.codec.DropCounters;
 import dolphin.mavlink.codec.Frame;
 import dolphin.mavlink.codec.FrameReader;
@@ -39,6 +40,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
 import java.util.function.Function;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -47,7 +49,8 @@ import org.slf4j.LoggerFactory;
  * The ground station's one MAVLink thread. Link reader threads hand it bytes;
  * it decodes frames, discovers vehicles, routes messages through the {@link MessageHandler} to
  * their {@link MAVLinkNode}, sends everything that goes out, and runs the timers: the 1 Hz GCS
- * heartbeat, command retries and telemetry re-requests. Other threads talk to it through a queue.
+ * heartbeat, command retries, telemetry re-requests and each vehicle's {@link Contact}, whose changes
+ * it publishes as {@link VehicleEvent}s. Other threads talk to it through a queue.
  */
 public final class MAVLinkCommunications implements AutoCloseable {
 
@@ -85,6 +88,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
     private final TelemetryRequests telemetry;
     private final List<FrameObserver> observers = new CopyOnWriteArrayList<>();
     private final List<ComponentListener> componentListeners = new CopyOnWriteArrayList<>();
+    private final List<Consumer<VehicleEvent>> vehicleEventListeners = new CopyOnWriteArrayList<>();
     private final AtomicLong framesIn = new AtomicLong();
     private final AtomicLong framesOut = new AtomicLong();
     private final AtomicLong filtered = new AtomicLong();
@@ -204,6 +208,30 @@ public final class MAVLinkCommunications implements AutoCloseable {
 
     public void addComponentListener(ComponentListener listener) {
         componentListeners.add(listener);
+    }
+
+    /**
+     * Adds a receiver of every {@link VehicleEvent} these communications raise (contact lost and
+     * regained, on the communications thread) or that a layer above publishes (on its own thread):
+     * it must be thread-safe and quick, as it holds up the thread that raised the event.
+     */
+    public void addVehicleEventListener(Consumer<VehicleEvent> listener) {
+        vehicleEventListeners.add(listener);
+    }
+
+    /**
+     * Hands an event to every vehicle-event listener, on this thread, from any thread: how the link
+     * layer and the layers above (missions) tell of what happens to a vehicle. A listener that throws
+     * is logged and the others still hear of the event, so none can stop the communications thread.
+     */
+    public void publish(VehicleEvent event) {
+        for (Consumer<VehicleEvent> l : vehicleEventListeners) {
+            try {
+                l.accept(event);
+            } catch (RuntimeException e) {
+                LOG.warn("a vehicle event listener failed on '{}'", event.line(), e);
+            }
+        }
     }
 
     /** Sends a message to a vehicle, from any thread. */
@@ -332,6 +360,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
                 LOG.info("vehicle {} {}", n.getId(), n.wasConnected ? "is back" : "lost: no heartbeat within " + n.getConnectionTimeout() + " s");
                 telemetryListener.run();
             }
+            n.contact().check().ifPresent(this::publish);
         });
         timers.at(now + SECOND / 4, this::supervise);
     }
@@ -370,6 +399,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
             return;
         }
         node.heardAt(peer);
+        node.contact().heard(frame.msgid()).ifPresent(this::publish);
         telemetry.seen(node, frame.msgid(), clock.nanoTime());
         handler.dispatch(node, message);
     }

@@ -9,6 +9,7 @@ import dolphin.core.Position;
 import dolphin.mavlink.link.Link;
 import java.net.SocketAddress;
 import java.time.Duration;
+import java.util.Optional;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
 import java.util.function.Predicate;
@@ -33,6 +34,7 @@ public final class MAVLinkNode extends AbstractNode {
     private final Clock clock;
     private final AtomicReference<VehicleState> state;
     private final RoundTrip roundTrip = new RoundTrip();
+    private final Contact contact;
     /** AUTOPILOT_VERSION.capabilities (MAV_PROTOCOL_CAPABILITY bits), -1 until the vehicle sent it. */
     private volatile long capabilities = -1;
     private volatile SocketAddress address;
@@ -52,6 +54,7 @@ public final class MAVLinkNode extends AbstractNode {
         this.autopilotCompid = autopilotCompid;
         this.clock = clock;
         this.state = new AtomicReference<>(VehicleState.initial(family));
+        this.contact = new Contact(id, clock);
     }
 
     /** The MAVLink system id (getMavLinkId in the original). */
@@ -147,6 +150,20 @@ public final class MAVLinkNode extends AbstractNode {
 
     public Position getHome() {
         return state.get().home();
+    }
+
+    /** Whether the vehicle is heard, for the communications thread. */
+    Contact contact() {
+        return contact;
+    }
+
+    /**
+     * How long the vehicle has been silent, while it is: nothing from its autopilot for 3 s or more
+     * (docs/decisions.md, "Contact"). Empty while it is heard. A silent vehicle is still connected
+     * until its connection timeout.
+     */
+    public Optional<Duration> silence() {
+        return contact.silence();
     }
 
     /** Heard within the connection timeout (docs/decisions.md, "The link"). */

@@ -4,11 +4,13 @@ import dolphin.mavlink.MAVLinkCommunications;
 import dolphin.core.Node;
 import dolphin.core.NodeSet;
 import dolphin.core.Platform;
+import dolphin.core.VehicleEvent;
 import dolphin.dsl.DslExtension;
 import dolphin.dsl.ScriptContext;
 import dolphin.dsl.check.CallCheck;
 import dolphin.sensor.SensorService;
 import java.util.List;
+import java.util.function.Consumer;
 import org.codehaus.groovy.control.customizers.ImportCustomizer;
 
 /** MAVLink vehicles for Dolphin scripts: the connected vehicles for pick, and the {@link MAVLinkLanguage}. */
@@ -16,11 +18,16 @@ public final class MAVLinkPlatform implements Platform, DslExtension {
 
     private final MAVLinkCommunications comms;
     private final MAVLinkLanguage language;
+    private volatile Consumer<VehicleEvent> vehicleEvents = e -> { };
 
-    /** Attaches the sensor layer at once, so readings and payloads are known before a script asks. */
+    /**
+     * Attaches the sensor layer at once, so readings and payloads are known before a script asks, and
+     * listens to the vehicle events from the start, so they reach the engine between scripts too.
+     */
     public MAVLinkPlatform(MAVLinkCommunications comms) {
         this.comms = comms;
         this.language = new MAVLinkLanguage(SensorService.of(comms));
+        comms.addVehicleEventListener(e -> vehicleEvents.accept(e));
     }
 
     public MAVLinkCommunications communications() {
@@ -41,6 +48,12 @@ public final class MAVLinkPlatform implements Platform, DslExtension {
     @Override
     public void setTelemetryListener(Runnable onTelemetry) {
         comms.setTelemetryListener(onTelemetry);
+    }
+
+    /** The communications' vehicle events, and those the mission layer publishes on them, on the thread that raised each. */
+    @Override
+    public void setVehicleEventListener(Consumer<VehicleEvent> listener) {
+        vehicleEvents = listener == null ? e -> { } : listener;
     }
 
     @Override

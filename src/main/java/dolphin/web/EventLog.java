@@ -5,9 +5,10 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * The web view's event log: the script's messages, task events, the vehicles' STATUSTEXT and errors,
- * numbered from 1, the last {@code capacity} kept. Written by the script and communications threads,
- * read by the viewers' threads; a viewer asks for what came after the last number it has.
+ * The web view's event log: the script's messages, task events, the vehicles' STATUSTEXT and their
+ * events (contact lost and regained), errors, numbered from 1, the last {@code capacity} kept.
+ * Written by the script and communications threads, read by the viewers' threads; a viewer asks for
+ * what came after the last number it has.
  */
 final class EventLog {
 

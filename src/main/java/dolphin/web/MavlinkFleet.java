@@ -39,7 +39,8 @@ final class MavlinkFleet implements Supplier<List<VehicleSample>> {
         Map<String, String> tasks = board.vehicleTasks();
         List<VehicleSample> samples = new ArrayList<>();
         for (MAVLinkNode n : nodes.get()) {
-            VehicleView view = VehicleView.of(n.getId(), n.getType(), n.isConnected(), bound.contains(n.getId()), n.state(),
+            int silence = n.silence().map(d -> (int) d.toSeconds()).orElse(-1);
+            VehicleView view = VehicleView.of(n.getId(), n.getType(), n.isConnected(), silence, bound.contains(n.getId()), n.state(),
                     tasks.getOrDefault(n.getId(), ""), n.getPayload().names(), readings(n),
                     MissionService.of(n.communications()).transferOn(n).orElse(null));
             MissionExecutor executor = MissionService.of(n.communications()).executorOn(n);

@@ -12,8 +12,10 @@ import groovy.json.JsonOutput;
  * where it points, its Dolphin type, mode, arming, battery, home, the mission item it flies, whether
  * the script picked it, the last platform task on it, its payloads, its latest sensor readings and
  * where a mission transfer to or from it stands.
+ *
+ * @param silence whole seconds the vehicle has been silent, -1 while it is heard
  */
-record VehicleView(String id, String type, String family, boolean connected, boolean picked, Position position,
+record VehicleView(String id, String type, String family, boolean connected, int silence, boolean picked, Position position,
                    double relativeAlt, double heading, String mode, boolean armed, int battery, Position home,
                    int item, int total, boolean fenceBreached, String task, List<String> payloads, List<Shown> readings,
                    TransferStatus transfer) {
@@ -28,13 +30,13 @@ record VehicleView(String id, String type, String family, boolean connected, boo
     }
 
     static VehicleView of(String id, String type, boolean connected, boolean picked, VehicleState s, String task) {
-        return of(id, type, connected, picked, s, task, List.of(), List.of(), null);
+        return of(id, type, connected, -1, picked, s, task, List.of(), List.of(), null);
     }
 
     /** @param transfer where a mission transfer in progress stands, or null */
-    static VehicleView of(String id, String type, boolean connected, boolean picked, VehicleState s, String task,
+    static VehicleView of(String id, String type, boolean connected, int silence, boolean picked, VehicleState s, String task,
                           List<String> payloads, List<Shown> readings, TransferStatus transfer) {
-        return new VehicleView(id, type, s.family().label(), connected, picked, s.position(), s.relativeAlt(), s.heading(),
+        return new VehicleView(id, type, s.family().label(), connected, silence, picked, s.position(), s.relativeAlt(), s.heading(),
                 s.modeName(), s.armed(), s.batteryPercent(), s.home(), s.flyingMission() ? s.missionSeq() : -1, s.missionTotal(),
                 s.fenceBreached(), task, payloads, readings, transfer);
     }
@@ -49,6 +51,7 @@ record VehicleView(String id, String type, String family, boolean connected, boo
                 .append(",\"type\":").append(JsonOutput.toJson(type))
                 .append(",\"family\":").append(JsonOutput.toJson(family))
                 .append(",\"connected\":").append(connected)
+                .append(",\"silence\":").append(silence < 0 ? "null" : String.valueOf(silence))
                 .append(",\"picked\":").append(picked)
                 .append(",\"position\":");
         point(b, position);

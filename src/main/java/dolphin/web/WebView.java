@@ -6,6 +6,7 @@ import com.sun.net.httpserver.HttpServer;
 import dolphin.core.Clock;
 import dolphin.core.TaskEvent;
 import dolphin.core.TaskTree;
+import dolphin.core.VehicleEvent;
 import dolphin.dsl.Engine;
 import dolphin.dsl.EngineListener;
 import dolphin.dsl.ScriptResult;
@@ -189,6 +190,12 @@ public final class WebView implements EngineListener, AutoCloseable {
             log.add(event.time() - origin, event.state().isError() ? "error" : "task",
                     event.vehicles().isEmpty() ? null : String.join(",", event.vehicles()), "task " + event.task().getId() + " " + what);
         }
+    }
+
+    /** On the thread that raised it; the log is synchronized. Its kind in lower case is the entry's: contact_lost, ... */
+    @Override
+    public void vehicleEvent(VehicleEvent event) {
+        log.add(event.time() - origin, event.kind().name().toLowerCase(Locale.ROOT), event.vehicle(), event.text());
     }
 
     @Override

@@ -9,6 +9,7 @@ const TABLE_ROWS = 100;       // rows of the vehicle table; the rest are counted
 const LABELS_UP_TO = 50;      // vehicles with a permanent label on the map
 const LOG_LINES = 500;
 const SVG_UP_TO = 200;        // beyond, vehicles and tracks are drawn on one canvas: cheaper for a big fleet
+const SILENT_COLOR = '#e76f51'; // a vehicle not heard for 3 s, before its connection timeout makes it lost (app.css too)
 
 const map = L.map('map', { zoomControl: true, attributionControl: true }).setView([0, 0], 2);
 L.control.scale({ imperial: false }).addTo(map);
@@ -73,9 +74,11 @@ function updateVehicle(d) {
   const v = vehicleEntry(d.id);
   v.data = d;
   const lost = !d.connected;
+  const silent = !lost && d.silence != null;
   if (d.position) {
     const at = [d.position[0], d.position[1]];
-    const style = { radius: 7, color: lost ? '#777' : '#1d2731', weight: 1.5, fillColor: lost ? '#bbb' : v.color,
+    const style = { radius: 7, color: lost ? '#777' : silent ? SILENT_COLOR : '#1d2731', weight: silent ? 3 : 1.5,
+                    fillColor: lost ? '#bbb' : v.color,
                     fillOpacity: d.picked ? 0.95 : 0.35 };
     if (!v.marker) {
       v.marker = L.circleMarker(at, { ...style, className: 'dolphin-vehicle', renderer: renderer() }).addTo(map)
@@ -94,7 +97,7 @@ function updateVehicle(d) {
       v.marker.setStyle(style);
       v.style = styleKey;
     }
-    const label = d.id + (lost ? ' LOST' : '');
+    const label = d.id + (lost ? ' LOST' : silent ? ' no contact' : '');
     if (v.marker.getTooltip() && v.label !== label) {
       v.marker.setTooltipContent(label);
       v.label = label;
@@ -127,8 +130,14 @@ function drawArrow(v) {
     : [at, ahead(at[0], at[1], d.heading, ARROW_PIXELS * metresPerPixel(at[0]))]);
 }
 
+/** The mode as the table and popup show it: LOST after the connection timeout, before it how long the vehicle is silent. */
+function modeText(d) {
+  return !d.connected ? 'LOST' : d.silence != null ? `no contact ${d.silence} s` : d.mode;
+}
+
 function popupText(d) {
-  return `<b>vehicle ${d.id}</b> (${d.type}, ${d.family})<br>${d.connected ? d.mode : 'LOST, last seen ' + d.mode}, `
+  const heard = d.connected && d.silence == null;
+  return `<b>vehicle ${d.id}</b> (${d.type}, ${d.family})<br>${heard ? d.mode : modeText(d) + ', last seen ' + d.mode}, `
     + `${d.armed ? 'armed' : 'disarmed'}, battery ${d.battery == null ? '?' : d.battery + ' %'}<br>`
     + `${d.relativeAlt} m above home${d.item != null ? ', item ' + d.item + ' of ' + d.total : ''}<br>`
     + `${d.picked ? 'picked by the script' : 'free'}${d.task ? '<br>task ' + escapeHtml(d.task) : ''}`
@@ -241,9 +250,9 @@ function renderTable() {
     .sort((a, b) => (b.picked - a.picked) || naturalOrder(a.id, b.id));
   const rows = all.slice(0, TABLE_ROWS).map(d => {
     const pos = d.position || [null, null];
-    return `<tr data-vehicle="${escapeHtml(d.id)}" data-connected="${d.connected}" data-picked="${d.picked}" `
+    return `<tr data-vehicle="${escapeHtml(d.id)}" data-connected="${d.connected}" data-silent="${d.silence != null}" data-picked="${d.picked}" `
       + `data-lat="${pos[0]}" data-lon="${pos[1]}" data-mode="${escapeHtml(d.mode)}">`
-      + `<td>${escapeHtml(d.id)}</td><td>${escapeHtml(d.type)}</td><td>${d.connected ? escapeHtml(d.mode) : 'LOST'}${d.armed ? ' armed' : ''}</td>`
+      + `<td>${escapeHtml(d.id)}</td><td>${escapeHtml(d.type)}</td><td>${escapeHtml(modeText(d))}${d.armed ? ' armed' : ''}</td>`
       + `<td>${d.battery == null ? '?' : d.battery + ' %'}</td><td>${d.relativeAlt.toFixed(1)} m</td>`
       + `<td>${d.item != null ? d.item + '/' + d.total : '-'}</td>`
       + `<td>${d.readings && d.readings.length ? readingsText(d.readings) : ''}</td><td>${escapeHtml(d.task)}${d.transfer ? ' <span class="dolphin-transfer">' + escapeHtml(d.transfer.text) + '</span>' : ''}</td></tr>`;

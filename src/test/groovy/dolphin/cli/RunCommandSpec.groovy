@@ -5,6 +5,7 @@ import dolphin.mavlink.LinkTimeouts
 import dolphin.mission.transfer.MissionTransferConfig
 import dolphin.mission.transfer.TransferPath
 import dolphin.core.Position
+import dolphin.platform.DiveSilenceSpec
 import dolphin.sim.FaultModel
 import dolphin.sim.SimFleet
 import dolphin.sim.VehicleKind
@@ -210,6 +211,31 @@ release v
         lines[completed + 1] ==~ /\[ *[\d.]+ s\] vehicle 1: \w+, disarmed, .*task first flight done/
         completed > flying
         !r.out.contains('\033[')
+    }
+
+    def "a sub out of contact while it dives: a line when contact is lost, its status line, and a line when contact is back"() {
+        given: 'the dive of more than a minute under 1 m of water, where the simulated sub sends and hears nothing'
+        def script = File.createTempFile('dive', '.dolphin')
+        script.text = DiveSilenceSpec.script('10.minutes')
+
+        when:
+        def r = dolphin('run', script.path, '--sim', '1', '--sim-type', 'sub', '--sim-home', '38.43462,-8.86118',
+                '--sim-dive-silence', '1', '--speedup', '10', '--status', 'plain')
+
+        then:
+        r.code == 0
+        def lines = r.out.readLines()
+        int lost = lines.findIndexOf { it ==~ /\[ *[\d.]+ s\] vehicle 1: no contact for 3 s/ }
+        int silent = lines.findIndexOf { it ==~ /\[ *[\d.]+ s\] vehicle 1: no contact \d+ s, last seen AUTO, armed, .*task deep running/ }
+        int again = lines.findIndexOf { it ==~ /\[ *[\d.]+ s\] vehicle 1: contact again after \d+ s/ }
+        lost >= 0 && lost < silent && silent < again
+        (lines[again] =~ /after (\d+) s/)[0][1] as int >= 60
+        lines.count { it.contains('vehicle 1: no contact for') } == 1
+        r.out.contains('task deep completed on vehicle 1: DONE')
+        r.out.contains('back at 0 m')
+
+        cleanup:
+        script?.delete()
     }
 
     def "--status live: a table of the vehicles redrawn in place below the lines"() {

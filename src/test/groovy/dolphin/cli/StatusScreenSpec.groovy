@@ -6,8 +6,8 @@ import spock.lang.Specification
 class StatusScreenSpec extends Specification {
 
     static VehicleStatus status(Map m = [:]) {
-        new VehicleStatus(m.id ?: '1', m.containsKey('connected') ? m.connected : true, m.mode ?: 'GUIDED', m.armed ?: false, m.battery ?: 100,
-                m.alt ?: 0.0d, m.item ?: 0, m.total ?: 0, m.task ?: '', m.transfer ?: '')
+        new VehicleStatus(m.id ?: '1', m.containsKey('connected') ? m.connected : true, m.containsKey('silence') ? m.silence : -1,
+                m.mode ?: 'GUIDED', m.armed ?: false, m.battery ?: 100, m.alt ?: 0.0d, m.item ?: 0, m.total ?: 0, m.task ?: '', m.transfer ?: '')
     }
 
     def "a transfer in progress shows after the task, in the sentence and the table's row, and makes no log line of its own"() {
@@ -68,8 +68,8 @@ class StatusScreenSpec extends Specification {
 
         then:
         def table = [VehicleStatus.HEADER,
-                     '1        GUIDED     disarmed   100 %     0.0 m -         ',
-                     '2        AUTO       armed      100 %     0.0 m 1/4       hop running']
+                     '1        GUIDED           disarmed   100 %     0.0 m -         ',
+                     '2        AUTO             armed      100 %     0.0 m 1/4       hop running']
         out.toString() == (table + ["\033[3F\033[J[t] a message"] + table).join('\n') + '\n'
     }
 
@@ -86,6 +86,32 @@ class StatusScreenSpec extends Specification {
         rows[1].startsWith('1 ')
         rows[3].startsWith('3 ')
         rows[4] == '... and 7 more: 3 AUTO, 1 LOST, 3 RTL'
+    }
+
+    def "plain: a silence makes a line as it starts and as it ends, none as it lengthens; its sentence says how long"() {
+        given:
+        def out = new StringWriter()
+        def screen = new PlainScreen(new PrintWriter(out), { '[t] ' })
+
+        when:
+        [-1, 3, 4, 9, -1].each { screen.refresh([status(mode: 'AUTO', armed: true, silence: it)]) }
+
+        then:
+        out.toString().readLines() == [
+                '[t] vehicle 1: AUTO, armed, battery 100 %, altitude 0.0 m',
+                '[t] vehicle 1: no contact 3 s, last seen AUTO, armed, battery 100 %, altitude 0.0 m',
+                '[t] vehicle 1: AUTO, armed, battery 100 %, altitude 0.0 m']
+        status(connected: false, silence: 25).sentence().startsWith('vehicle 1: LOST, last seen GUIDED')
+    }
+
+    def "live: a large fleet counts its silent vehicles apart from their modes and from the lost ones"() {
+        given:
+        def screen = new LiveScreen(new PrintWriter(new StringWriter()), { '' }, 1)
+        def fleet = [status(id: '1'), status(id: '2', mode: 'AUTO', silence: 4), status(id: '3', mode: 'AUTO', silence: 12),
+                     status(id: '4', mode: 'AUTO'), status(id: '5', connected: false, silence: 30)]
+
+        expect:
+        screen.table(fleet).last() == '... and 4 more: 1 AUTO, 1 LOST, 2 no contact'
     }
 
     def "live: a log line with its own timestamp goes above the table, which is redrawn below it"() {

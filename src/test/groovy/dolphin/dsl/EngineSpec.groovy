@@ -3,6 +3,7 @@ package dolphin.dsl
 import dolphin.core.Position
 import dolphin.core.Task
 import dolphin.core.TaskEvent
+import dolphin.core.VehicleEvent
 import dolphin.testing.FlyTask
 import dolphin.testing.ScriptHarness
 import org.codehaus.groovy.control.customizers.ImportCustomizer
@@ -332,6 +333,34 @@ class EngineSpec extends Specification {
         then:
         r.outcome == COMPLETED
         heard == ['still here']
+    }
+
+    def "vehicle events reach every listener on the thread that raised them, with no script running and while one pauses; one that throws stops none"() {
+        given:
+        def heard = new java.util.concurrent.CopyOnWriteArrayList()
+        h.engine.addListener(new EngineListener() {
+            void vehicleEvent(VehicleEvent e) { throw new IllegalStateException('listener bug') }
+        })
+        h.engine.addListener(new EngineListener() {
+            void vehicleEvent(VehicleEvent e) { heard << [e.text(), Thread.currentThread().name] }
+        })
+        def lost = new VehicleEvent('1', VehicleEvent.EventKind.CONTACT_LOST, 'no contact for 3 s', 3)
+        def again = new VehicleEvent('1', VehicleEvent.EventKind.CONTACT_AGAIN, 'contact again after 31 s', 34)
+
+        when: 'no script runs'
+        Thread.start('MAVLink communications') { h.platform.vehicleEvent(lost) }.join()
+
+        then:
+        heard == [['no contact for 3 s', 'MAVLink communications']]
+
+        when: 'the script pauses; the event comes from the clock on the script thread'
+        h.at(5) { h.platform.vehicleEvent(again) }
+        def r = h.run('pause 10')
+
+        then:
+        r.outcome == COMPLETED
+        heard[1] == ['contact again after 31 s', 'dolphin-script']
+        heard.size() == 2
     }
 
     def "an extension adds words, imports and categories for scripts only"() {

@@ -9,6 +9,7 @@ import com.MAVLink.enums.MAV_SYS_STATUS_SENSOR
 import com.MAVLink.enums.MAV_TYPE
 import com.MAVLink.minimal.msg_heartbeat
 import dolphin.core.Position
+import dolphin.core.VehicleEvent
 import dolphin.mavlink.codec.DropCounters
 import dolphin.mavlink.codec.FrameWriter
 import dolphin.mavlink.codec.SigningKey
@@ -172,6 +173,33 @@ class CommunicationsSpec extends Specification {
 
         then:
         h.eventually { assert h.node('1').connected }
+    }
+
+    def "a vehicle that stops sending raises contact lost after 3 s and contact again when it sends, long before its timeout"() {
+        given:
+        def fleet = h.fleet(1)
+        h.eventually { assert h.node('1')?.state()?.position() != null }
+        List<VehicleEvent> events = new java.util.concurrent.CopyOnWriteArrayList<>()
+        h.comms.addVehicleEventListener { events << it }
+
+        when:
+        fleet.vehicle(1).silent = true
+        double silentAt = h.clock.seconds()
+
+        then:
+        h.eventually { assert events*.kind == [VehicleEvent.EventKind.CONTACT_LOST] }
+        events[0].text() == 'no contact for 3 s'
+        events[0].time() - silentAt >= 2.5
+        h.eventually { assert h.node('1').silence().get().toSeconds() >= 5 }
+        h.node('1').connected
+
+        when:
+        fleet.vehicle(1).silent = false
+
+        then:
+        h.eventually { assert events*.kind == [VehicleEvent.EventKind.CONTACT_LOST, VehicleEvent.EventKind.CONTACT_AGAIN] }
+        (events[1].text() =~ /contact again after (\d+) s/)[0][1] as int >= 5
+        !h.node('1').silence().present
     }
 
     def "arming is refused with the vehicle's PreArm text during its warm-up, then accepted; SYS_STATUS shows the pre-arm checks"() {

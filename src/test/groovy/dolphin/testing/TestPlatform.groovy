@@ -5,6 +5,7 @@ import dolphin.core.Payload
 import dolphin.core.Platform
 import dolphin.core.Position
 import dolphin.core.Task
+import dolphin.core.VehicleEvent
 import dolphin.dsl.DslExtension
 import dolphin.dsl.ScriptContext
 import groovy.transform.Immutable
@@ -31,6 +32,7 @@ class TestPlatform implements Platform, DslExtension {
     final Map<String, Task> namedTasks = [:]
     final List<String> answers = []
     private volatile Runnable onTelemetry = {}
+    private volatile java.util.function.Consumer<VehicleEvent> onVehicleEvent = {}
 
     TestNode addNode(String id, String type = 'UAV', Position position = Position.fromDegrees(41.185781, -8.70606486, 0),
                      List<String> payload = []) {
@@ -42,6 +44,9 @@ class TestPlatform implements Platform, DslExtension {
     TestNode node(String id) { nodes[id] }
 
     void telemetry() { onTelemetry.run() }
+
+    /** Raises a vehicle event on the calling thread, as a platform does on whichever thread notices it. */
+    void vehicleEvent(VehicleEvent event) { onVehicleEvent.accept(event) }
 
     void record(String kind, String task, String node, double time) {
         journal << new Entry(kind, task, node, time)
@@ -70,6 +75,9 @@ class TestPlatform implements Platform, DslExtension {
 
     @Override
     void setTelemetryListener(Runnable r) { onTelemetry = r }
+
+    @Override
+    void setVehicleEventListener(java.util.function.Consumer<VehicleEvent> listener) { onVehicleEvent = listener }
 
     @Override
     String askForInput(String prompt) {

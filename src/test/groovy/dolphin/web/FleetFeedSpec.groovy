@@ -58,7 +58,7 @@ class FleetFeedSpec extends Specification {
 
     def "a vehicle's payloads and latest readings, a stale one marked, a NaN one as text"() {
         given:
-        samples = [new VehicleSample(VehicleView.of('1', 'UAV', true, false, state(HOME), '', ['Camera', 'SMOKE'],
+        samples = [new VehicleSample(VehicleView.of('1', 'UAV', true, -1, false, state(HOME), '', ['Camera', 'SMOKE'],
                 [new VehicleView.Shown('SMOKE', 42.5d, '', 1, true), new VehicleView.Shown('TEMP', Double.NaN, 'degC', 191, false)],
                 null), null, { null })]
 
@@ -74,7 +74,7 @@ class FleetFeedSpec extends Specification {
     def "a transfer in progress is sent with its list, path, amount, resends and text; none is null"() {
         given:
         def status = new TransferStatus(MissionType.FENCE, true, TransferPath.FTP, 620, 1530, 2)
-        samples = [new VehicleSample(VehicleView.of('1', 'UAV', true, false, state(HOME), '', [], [], status), null, { null }),
+        samples = [new VehicleSample(VehicleView.of('1', 'UAV', true, -1, false, state(HOME), '', [], [], status), null, { null }),
                    sample('2', HOME)]
 
         when:
@@ -84,6 +84,27 @@ class FleetFeedSpec extends Specification {
         parse(frame.vehicles()['1'].json()).transfer == [upload: true, list: 'fence', path: 'ftp', done: 620, total: 1530,
                                                           unit: 'bytes', resends: 2, text: 'uploading the fence over FTP: 620 of 1,530 bytes, 2 resent']
         parse(frame.vehicles()['2'].json()).transfer == null
+    }
+
+    def "a silent vehicle is sent with the seconds of its silence, a heard one with null; each second more is a change"() {
+        given:
+        def silent = { int seconds -> new VehicleSample(VehicleView.of('1', 'UAV', true, seconds, false, state(HOME), '', [], [], null), null, { null }) }
+        samples = [silent(7), sample('2', HOME)]
+
+        when:
+        def frame = feed.sample(1.0)
+
+        then:
+        parse(frame.vehicles()['1'].json()).silence == 7
+        parse(frame.vehicles()['1'].json()).connected
+        parse(frame.vehicles()['2'].json()).silence == null
+
+        when:
+        samples = [silent(8), sample('2', HOME)]
+        def next = feed.sample(2.0)
+
+        then:
+        parse(FleetFeed.update(next, frame.number(), new EventLog(1).since(0), '')).vehicles*.silence == [8]
     }
 
     def "a viewer that has frame N is sent only the vehicles that changed after N, however many frames it missed"() {

@@ -128,6 +128,44 @@ class WebViewBrowserSpec extends Specification {
         run.await(Duration.ofSeconds(90)).outcome() == ScriptResult.Outcome.COMPLETED
     }
 
+    def "a vehicle that falls silent: its row and label say no contact, the log says when contact was lost and when it came back"() {
+        given: 'vehicle 2 given ten minutes before it is lost, so its silence shows as a silence'
+        browser.get(view.address())
+        waitUntil(10) { $('#connection[data-state="live"]') }
+        waitUntil(30) { positions().keySet() == ['1', '2'] as Set }
+        comms.node('2').connectionTimeout = 600
+
+        when:
+        fleet.vehicle(2).silent = true
+
+        then:
+        waitUntil(10) { $('#vehicles tr[data-vehicle="2"][data-silent="true"]') }
+        modeCell('2') ==~ /no contact \d+ s/
+        $('#vehicles tr[data-vehicle="1"][data-silent="false"]')
+        waitUntil(10) { labels().contains('2 no contact') }
+        !labels().contains('1 no contact')
+        waitUntil(10) { logText().contains('2 no contact for 3 s') }
+        screenshot('web-view-silent.png')
+
+        when:
+        fleet.vehicle(2).silent = false
+
+        then:
+        waitUntil(10) { $('#vehicles tr[data-vehicle="2"][data-silent="false"]') }
+        waitUntil(10) { logText() =~ /2 contact again after \d+ s/ }
+        labels().contains('2')
+    }
+
+    /** The mode column of a vehicle's row in the table. */
+    private String modeCell(String id) {
+        browser.executeScript('return document.querySelector(`#vehicles tr[data-vehicle="${arguments[0]}"] td:nth-child(3)`).innerText', id)
+    }
+
+    /** The vehicles' labels on the map. */
+    private List<String> labels() {
+        browser.executeScript('return [...document.querySelectorAll(".vehicle-label")].map(e => e.innerText)') as List<String>
+    }
+
     /** Saves what the browser shows in target/, for a person to look at. */
     private void screenshot(String name) {
         if (browser != null) {

@@ -147,6 +147,32 @@ class WebViewSpec extends Specification {
         next(events, 'end')
     }
 
+    def "a vehicle that falls silent, with no script running: its row counts the seconds, the log says contact lost, then contact again"() {
+        given:
+        start()
+        within.eventually { assert new JsonSlurper().parseText(get(uri('/state')).body()).vehicles[0]?.position != null }
+
+        when:
+        fleet.vehicle(1).silent = true
+
+        then:
+        within.eventually {
+            def state = new JsonSlurper().parseText(get(uri('/state')).body())
+            assert state.vehicles[0].silence >= 3 && state.vehicles[0].connected
+            assert state.log.find { it.kind == 'contact_lost' }?.subMap('vehicle', 'text') == [vehicle: '1', text: 'no contact for 3 s']
+        }
+
+        when:
+        fleet.vehicle(1).silent = false
+
+        then:
+        within.eventually {
+            def state = new JsonSlurper().parseText(get(uri('/state')).body())
+            assert state.vehicles[0].silence == null
+            assert state.log.find { it.kind == 'contact_again' }?.text ==~ /contact again after \d+ s/
+        }
+    }
+
     def "a viewer that goes away mid-stream ends its thread; the other viewer and the run go on"() {
         given:
         start()
