@@ -11,6 +11,7 @@ import dolphin.core.CompletionState;
 import dolphin.core.Node;
 import dolphin.core.PlatformTaskExecutor;
 import dolphin.core.Position;
+import dolphin.core.VehicleEvent.EventKind;
 import dolphin.mavlink.CommandResult;
 import dolphin.mavlink.VehicleState;
 import dolphin.mission.model.DroneCommand;
@@ -157,7 +158,6 @@ public final class MissionExecutor extends PlatformTaskExecutor {
 
     private void landed() {
         if (vehicle != null) {
-            vehicle.takeover(false);
             vehicle.landed(this);
         }
     }
@@ -639,15 +639,9 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 case FAILED -> {
                     return fail(look.text());
                 }
-                case TAKEN_OVER -> {
-                    vehicle.takeover(true);
-                    progress(look.text() + " (paused until AUTO is back, for " + config.takeoverTimeout().toSeconds()
-                            + " s at most)");
-                }
-                case HANDED_BACK -> {
-                    vehicle.takeover(false);
-                    progress(look.text());
-                }
+                case TAKEN_OVER -> report(EventKind.TAKEN_OVER, look.text() + ", mission " + mission.getId() + " paused until AUTO is"
+                        + " back, for " + config.takeoverTimeout().toSeconds() + " s at most");
+                case HANDED_BACK -> report(EventKind.HANDED_BACK, look.text() + ", mission " + mission.getId() + " goes on");
                 default -> { }
             }
             StallWatch.Stall stall = stalls.look(s, current, auto && !takeovers.paused(), now);
@@ -655,7 +649,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 return fail(stall.error());
             }
             if (stall.warning() != null) {
-                progress(stall.warning());
+                report(EventKind.STALLING, stall.warning());
             }
             return CompletionState.IN_PROGRESS;
         }
@@ -774,6 +768,12 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         failure = why;
         state = FlightState.ERROR;
         return CompletionState.error("mission " + mission.getId() + (vehicle != null ? " on vehicle " + vehicle.vehicleId() : "") + ": " + why);
+    }
+
+    /** Something a person watching the fleet should hear of at once: a vehicle event, and the mission's line. */
+    private void report(EventKind kind, String what) {
+        vehicle.event(kind, what);
+        progress(what);
     }
 
     private void progress(String what) {

@@ -1,5 +1,6 @@
 package dolphin.mission.flight;
 
+import dolphin.core.VehicleEvent.EventKind;
 import dolphin.mavlink.CommandResult;
 import dolphin.mavlink.VehicleState;
 import dolphin.mission.model.MissionItem;
@@ -43,6 +44,9 @@ public interface MissionVehicle extends VehicleChannel {
     /** The executor has ended; a newer one that took the vehicle stays. */
     void landed(MissionExecutor executor);
 
-    /** Someone else took the vehicle out of AUTO in a takeover mode ({@code true}), or handed it back, or the mission ended. */
-    void takeover(boolean held);
+    /**
+     * Something a person watching the fleet should hear of (a pilot took the vehicle or handed it back, it
+     * makes no progress), as a vehicle event; {@code text} does not name the vehicle.
+     */
+    void event(EventKind kind, String text);
 }

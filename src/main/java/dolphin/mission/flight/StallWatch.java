@@ -21,7 +21,7 @@ import java.util.Set;
  */
 final class StallWatch {
 
-    /** What one look found: a warning to report once, an error, or neither. */
+    /** What one look found: a warning to report once (a vehicle event, without the vehicle's name), an error, or neither. */
     record Stall(String warning, String error) {
         static final Stall NONE = new Stall(null, null);
     }
@@ -80,8 +80,8 @@ final class StallWatch {
         }
         if (still > warning.toNanos() && !warned) {
             warned = true;
-            return new Stall("vehicle " + vehicle + " makes no progress toward " + names.item(current) + ": " + where
-                    + " it, no closer for " + warning.toSeconds() + " s", null);
+            return new Stall("no progress toward " + names.item(current) + ": " + where + " it, no closer for "
+                    + warning.toSeconds() + " s", null);
         }
         return Stall.NONE;
     }

@@ -22,7 +22,10 @@ import java.util.List;
  */
 final class Takeovers {
 
-    /** What one look found: whose hand the vehicle is in; {@code text} says it for the pause's lines and the error. */
+    /**
+     * What one look found: whose hand the vehicle is in; {@code text} says it, for the error as the script
+     * reads it, for a takeover or a hand-back as a vehicle event (without the vehicle's name).
+     */
     record Look(Hand hand, String text) {
         enum Hand { FLYING, LEFT, TAKEN_OVER, PAUSED, HANDED_BACK, FAILED }
 
@@ -77,8 +80,8 @@ final class Takeovers {
             sawAuto = true;
             AutoPhase was = phase;
             phase = new InAuto();
-            return was instanceof Paused p ? new Look(Look.Hand.HANDED_BACK, "vehicle " + vehicle + " back in AUTO after "
-                    + seconds(now - p.since) + " s: " + names.item(current)) : Look.FLYING;
+            return was instanceof Paused p ? new Look(Look.Hand.HANDED_BACK, "back in AUTO after " + seconds(now - p.since)
+                    + " s: " + names.item(current)) : Look.FLYING;
         }
         if (!sawAuto) {
             return Look.FLYING;
@@ -136,7 +139,7 @@ final class Takeovers {
                     return Look.PAUSED;
                 }
                 phase = new Paused(since);
-                return new Look(Look.Hand.TAKEN_OVER, "vehicle " + vehicle + " taken over: " + mode + " during " + item);
+                return new Look(Look.Hand.TAKEN_OVER, "taken over: " + mode + " during " + item);
             }
             return new Look(Look.Hand.FAILED, "vehicle " + vehicle + " left AUTO for " + mode + " during " + item
                     + ", before the mission ended" + (said.isEmpty() ? ItemNames.where(s)

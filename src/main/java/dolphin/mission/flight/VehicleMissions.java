@@ -2,6 +2,8 @@ package dolphin.mission.flight;
 
 import com.MAVLink.Messages.MAVLinkMessage;
 import com.MAVLink.enums.MAV_PROTOCOL_CAPABILITY;
+import dolphin.core.VehicleEvent;
+import dolphin.core.VehicleEvent.EventKind;
 import dolphin.mavlink.CommandResult;
 import dolphin.mavlink.MAVLinkNode;
 import dolphin.mavlink.RoundTrip;
@@ -55,15 +57,22 @@ public final class VehicleMissions implements MissionVehicle {
 
     @Override
     public void landed(MissionExecutor e) {
-        executor.compareAndSet(e, null);
+        if (executor.compareAndSet(e, null)) {
+            takenOver = false;
+        }
     }
 
+    /** Publishes the event to the communications' listeners, and keeps count of takeovers for the script's words. */
     @Override
-    public void takeover(boolean held) {
-        if (held && !takenOver) {
+    public void event(EventKind kind, String text) {
+        if (kind == EventKind.TAKEN_OVER) {
             takeovers.incrementAndGet();
+            takenOver = true;
+        } else if (kind == EventKind.HANDED_BACK) {
+            takenOver = false;
         }
-        takenOver = held;
+        var comms = node.communications();
+        comms.publish(new VehicleEvent(node.getId(), kind, text, comms.clock().seconds()));
     }
 
     /** Whether a mission of ours on the vehicle is paused now by someone else's hand (docs/failures.md). */

@@ -17,6 +17,7 @@ import dolphin.core.AbstractNode
 import dolphin.core.ManualClock
 import dolphin.core.Payload
 import dolphin.core.Position
+import dolphin.core.VehicleEvent
 import dolphin.mavlink.CommandResult
 import dolphin.mavlink.VehicleFamily
 import dolphin.mavlink.VehicleState
@@ -224,16 +225,12 @@ class FakeFlightVehicle implements MissionVehicle {
     @Override
     void wake() { wakes++ }
 
-    /** Whether a takeover holds the vehicle now, and how many began, as the executor reported them. */
-    boolean takenOver
-    int takeovers
+    /** The vehicle events the executor raised, as "KIND text". */
+    List<String> events = []
 
     @Override
-    void takeover(boolean held) {
-        if (held && !takenOver) {
-            takeovers++
-        }
-        takenOver = held
+    void event(VehicleEvent.EventKind kind, String text) {
+        events << "${kind} ${text}".toString()
     }
 
     @Override

@@ -522,19 +522,18 @@ class MissionExecutorFaultsSpec extends MissionFlights {
         when: 'a safety pilot switches to LOITER at 5.1 s and back to AUTO at 20.1 s; the copter resumes item 2'
         vehicle.mode('LOITER')
         def paused = runTo(20)
-        boolean heldThen = vehicle.takenOver
         vehicle.mode('AUTO')
         runTo(21)
 
-        then: 'no error, the pause and the hand-back said, nothing sent to the vehicle'
+        then: 'no error, the pause and the hand-back said as lines and as vehicle events, nothing sent to the vehicle'
         paused == CompletionState.IN_PROGRESS
-        heldThen
-        !vehicle.takenOver
-        vehicle.takeovers == 1
         vehicle.commands.size() == sent
+        vehicle.events == [
+                'TAKEN_OVER taken over: LOITER during item 2 of 4 (NAV_WAYPOINT), mission hop paused until AUTO is back, for 120 s at most',
+                'HANDED_BACK back in AUTO after 15 s: item 2 of 4 (NAV_WAYPOINT), mission hop goes on']
         messages.containsAll(said([
-                'vehicle 1 taken over: LOITER during item 2 of 4 (NAV_WAYPOINT) (paused until AUTO is back, for 120 s at most)',
-                'vehicle 1 back in AUTO after 15 s: item 2 of 4 (NAV_WAYPOINT)']))
+                'taken over: LOITER during item 2 of 4 (NAV_WAYPOINT), mission hop paused until AUTO is back, for 120 s at most',
+                'back in AUTO after 15 s: item 2 of 4 (NAV_WAYPOINT), mission hop goes on']))
 
         when: 'the copter flies on and lands'
         vehicle.next(3)
@@ -637,7 +636,8 @@ class MissionExecutorFaultsSpec extends MissionFlights {
 
         then: 'warned after 15 s (a third of the limit), failed after 45 s, both saying how far it is'
         warned == CompletionState.IN_PROGRESS
-        messages.contains(said(['vehicle 1 makes no progress toward item 2 of 4 (NAV_WAYPOINT): 11 m from it, no closer for 15 s'])[0])
+        messages.contains(said(['no progress toward item 2 of 4 (NAV_WAYPOINT): 11 m from it, no closer for 15 s'])[0])
+        vehicle.events == ['STALLING no progress toward item 2 of 4 (NAV_WAYPOINT): 11 m from it, no closer for 15 s']
         cs.error
         failure() == 'mission hop on vehicle 1: vehicle 1 stalled: no progress toward item 2 of 4 (NAV_WAYPOINT) for 45 s,' +
                 ' 11 m from it (the stall limit): armed, AUTO, landed state IN_AIR, 20.0 m above home'

@@ -65,7 +65,7 @@ class StallWatchSpec extends Specification {
         expect:
         w.look(fresh(s, 0), 1, true, 0) == StallWatch.Stall.NONE
         w.look(fresh(s, 20), 1, true, 20 * S) == StallWatch.Stall.NONE
-        w.look(fresh(s, 21), 1, true, 21 * S).warning == 'vehicle 1 makes no progress toward item 1 of 1 (NAV_WAYPOINT): 200 m from it, no closer for 20 s'
+        w.look(fresh(s, 21), 1, true, 21 * S).warning == 'no progress toward item 1 of 1 (NAV_WAYPOINT): 200 m from it, no closer for 20 s'
         w.look(fresh(s, 22), 1, true, 22 * S) == StallWatch.Stall.NONE
         w.look(fresh(s, 60), 1, true, 60 * S) == StallWatch.Stall.NONE
         w.look(fresh(s, 61), 1, true, 61 * S).error == 'vehicle 1 stalled: no progress toward item 1 of 1 (NAV_WAYPOINT) for 60 s, 200 m from it' +

@@ -52,10 +52,10 @@ class TakeoversSpec extends Specification {
         expect:
         t.look(in(family, mode), false, 2, 10 * S).hand() == LEFT
         t.look(in(family, mode), false, 2, 11 * S).hand() == LEFT
-        t.look(in(family, mode), false, 2, 12 * S) == new Takeovers.Look(TAKEN_OVER, "vehicle 1 taken over: ${mode} during item 2 of 4 (NAV_WAYPOINT)")
+        t.look(in(family, mode), false, 2, 12 * S) == new Takeovers.Look(TAKEN_OVER, "taken over: ${mode} during item 2 of 4 (NAV_WAYPOINT)")
         t.paused()
         t.look(in(family, mode), false, 2, 20 * S).hand() == PAUSED
-        t.look(in(family, 'AUTO'), true, 2, 25 * S) == new Takeovers.Look(HANDED_BACK, 'vehicle 1 back in AUTO after 15 s: item 2 of 4 (NAV_WAYPOINT)')
+        t.look(in(family, 'AUTO'), true, 2, 25 * S) == new Takeovers.Look(HANDED_BACK, 'back in AUTO after 15 s: item 2 of 4 (NAV_WAYPOINT)')
         !t.paused()
 
         where:
