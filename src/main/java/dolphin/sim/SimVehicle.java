@@ -9,6 +9,7 @@ import com.MAVLink.common.msg_command_ack;
 import com.MAVLink.common.msg_command_long;
 import com.MAVLink.common.msg_extended_sys_state;
 import com.MAVLink.common.msg_file_transfer_protocol;
+import com.MAVLink.common.msg_gps_raw_int;
 import com.MAVLink.common.msg_home_position;
 import com.MAVLink.common.msg_mission_current;
 import com.MAVLink.common.msg_mission_set_current;
@@ -21,6 +22,7 @@ import com.MAVLink.enums.MAV_DATA_STREAM;
 import com.MAVLink.enums.MAV_MODE_FLAG;
 import com.MAVLink.enums.MAV_RESULT;
 import com.MAVLink.enums.MAV_SEVERITY;
+import com.MAVLink.enums.MAV_STATE;
 import com.MAVLink.enums.MAV_SYS_STATUS_SENSOR;
 import com.MAVLink.minimal.msg_heartbeat;
 import com.MAVLink.standard.msg_autopilot_version;
@@ -48,10 +50,9 @@ public final class SimVehicle {
     private static final Set<Integer> STREAMABLE = Set.of(msg_sys_status.MAVLINK_MSG_ID_SYS_STATUS,
             msg_global_position_int.MAVLINK_MSG_ID_GLOBAL_POSITION_INT, msg_mission_current.MAVLINK_MSG_ID_MISSION_CURRENT,
             msg_battery_status.MAVLINK_MSG_ID_BATTERY_STATUS, msg_home_position.MAVLINK_MSG_ID_HOME_POSITION,
-            msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE, msg_ekf_status_report.MAVLINK_MSG_ID_EKF_STATUS_REPORT);
+            msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE, msg_ekf_status_report.MAVLINK_MSG_ID_EKF_STATUS_REPORT,
+            msg_gps_raw_int.MAVLINK_MSG_ID_GPS_RAW_INT);
     private static final long SECOND = 1_000_000_000L;
-    private static final int EKF_BOOTING = 167;
-    private static final int EKF_LOCATED = 831;
     private static final int FORCE_DISARM = 21196;
 
     private final int sysid;
@@ -81,6 +82,7 @@ public final class SimVehicle {
     private final FenceGuard fenceGuard = new FenceGuard();
     private final MissionFlight flight;
     private final SimFtpServer ftp;
+    private final NavigationState navigation = new NavigationState();
 
     SimVehicle(int sysid, VehicleKind kind, Position home, SimOptions options, long now) {
         this(sysid, kind, home, options, now, SimEquipment.NONE);
@@ -518,7 +520,8 @@ public final class SimVehicle {
         Set<Integer> ids = switch (r.req_stream_id) {
             case MAV_DATA_STREAM.MAV_DATA_STREAM_ALL -> STREAMABLE;
             case MAV_DATA_STREAM.MAV_DATA_STREAM_EXTENDED_STATUS -> Set.of(msg_sys_status.MAVLINK_MSG_ID_SYS_STATUS,
-                    msg_mission_current.MAVLINK_MSG_ID_MISSION_CURRENT, msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE);
+                    msg_mission_current.MAVLINK_MSG_ID_MISSION_CURRENT, msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE,
+                    msg_gps_raw_int.MAVLINK_MSG_ID_GPS_RAW_INT);
             case MAV_DATA_STREAM.MAV_DATA_STREAM_POSITION -> Set.of(msg_global_position_int.MAVLINK_MSG_ID_GLOBAL_POSITION_INT);
             case MAV_DATA_STREAM.MAV_DATA_STREAM_EXTRA3 -> Set.of(msg_battery_status.MAVLINK_MSG_ID_BATTERY_STATUS,
                     msg_home_position.MAVLINK_MSG_ID_HOME_POSITION, msg_ekf_status_report.MAVLINK_MSG_ID_EKF_STATUS_REPORT);
@@ -654,7 +657,7 @@ public final class SimVehicle {
         hb.autopilot = MAV_AUTOPILOT.MAV_AUTOPILOT_ARDUPILOTMEGA;
         hb.base_mode = (short) (MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED | (armed ? MAV_MODE_FLAG.MAV_MODE_FLAG_SAFETY_ARMED : 0));
         hb.custom_mode = mode;
-        hb.system_status = (short) firmware.systemStatus(armed, craft.onGround());
+        hb.system_status = (short) (navigation.failsafe() ? MAV_STATE.MAV_STATE_CRITICAL : firmware.systemStatus(armed, craft.onGround()));
         hb.mavlink_version = 3;
         return hb;
     }
@@ -688,6 +691,7 @@ public final class SimVehicle {
                 } else {
                     p.hdg = 65535;
                 }
+                p.time_boot_ms = bootMillis(lastTick);
                 yield Optional.of(p);
             }
             case msg_home_position.MAVLINK_MSG_ID_HOME_POSITION -> {
@@ -702,11 +706,11 @@ public final class SimVehicle {
                 yield Optional.of(h);
             }
             case msg_ekf_status_report.MAVLINK_MSG_ID_EKF_STATUS_REPORT -> {
-                // SITL's flags: attitude, velocities and height from boot (167); the horizontal position too once located (831)
                 msg_ekf_status_report e = new msg_ekf_status_report();
-                e.flags = located ? EKF_LOCATED : EKF_BOOTING;
+                e.flags = navigation.ekfFlags(located);
                 yield Optional.of(e);
             }
+            case msg_gps_raw_int.MAVLINK_MSG_ID_GPS_RAW_INT -> Optional.of(navigation.gpsRaw(located, craft.position(), bootMillis(lastTick)));
             case msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE -> {
                 msg_extended_sys_state e = new msg_extended_sys_state();
                 e.landed_state = (short) firmware.landedState(craft.onGround(), flight.manoeuvreState());
