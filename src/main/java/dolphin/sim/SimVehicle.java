@@ -59,8 +59,8 @@ public final class SimVehicle {
     private final VehicleKind kind;
     private final Firmware firmware;
     private final SimOptions options;
-    private final PositionEstimate estimate;
-    private final long boot;
+    private PositionEstimate estimate;
+    private long boot;
     private final SimSensors sensors;
     private final boolean camera;
     private final Map<Integer, Long> intervals = new HashMap<>();
@@ -83,6 +83,12 @@ public final class SimVehicle {
     private final MissionFlight flight;
     private final SimFtpServer ftp;
     private final NavigationState navigation = new NavigationState();
+    private final FaultSchedule faults;
+    private final FaultHost faultHost = new Afflicted();
+    /** Clock time of its first arming, from which its faults' times count; negative before it. */
+    private long firstArmed = -1;
+    /** The link cut by an {@link Outage}. */
+    private boolean outage;
 
     SimVehicle(int sysid, VehicleKind kind, Position home, SimOptions options, long now) {
         this(sysid, kind, home, options, now, SimEquipment.NONE);
@@ -108,6 +114,12 @@ public final class SimVehicle {
         this.lists = new MissionLists(missionStore, options.missionCapacity(), host);
         this.ftp = new SimFtpServer(new MissionFiles(lists::store, new MissionFileLoader(lists::store, host)), this::send);
         this.flight = new MissionFlight(firmware, missionStore, new FlightBody());
+        this.faults = new FaultSchedule(options.faults(), sysid, kind);
+        defaultStreams(now);
+    }
+
+    /** The streams a firmware sends before anyone asks (a plane's and a sub's). */
+    private void defaultStreams(long now) {
         if (firmware.defaultStreamHz() > 0) {
             for (int id : STREAMABLE) {
                 stream(id, (long) (SECOND / firmware.defaultStreamHz()), now);
@@ -231,7 +243,9 @@ public final class SimVehicle {
         }
         lists.tick(now);
         ftp.tick(now);
-        flight.tick(dt);
+        // before the flight, so that a fault beginning now holds it from this tick on
+        faults.tick(now, firstArmed, dt, faultHost);
+        flight.tick(dt, faults.holdsFlight(faultHost));
         watchFence(now);
         if (firmware.needsPositionToArm()) {
             estimate.periodicReport(now, armed).ifPresent(s -> outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, s));
@@ -424,6 +438,9 @@ public final class SimVehicle {
             return MAV_RESULT.MAV_RESULT_FAILED;
         }
         armed = true;
+        if (firstArmed < 0) {
+            firstArmed = now;
+        }
         outbox.text(MAV_SEVERITY.MAV_SEVERITY_INFO, firmware.armedText());
         return MAV_RESULT.MAV_RESULT_ACCEPTED;
     }
@@ -569,7 +586,27 @@ public final class SimVehicle {
      * is under water.
      */
     private boolean cutOff() {
-        return silent || craft.depth() > options.diveSilenceMetres();
+        return silent || outage || craft.depth() > options.diveSilenceMetres();
+    }
+
+    /**
+     * Reboots at clock time {@code now}, as ArduPilot after MAV_CMD_PREFLIGHT_REBOOT_SHUTDOWN: time
+     * since boot from 0, its warm-up again, disarmed (motors stopped: a vehicle in the air comes
+     * down, see {@link Reboot}) and in its boot mode, its requested streams forgotten, its mission
+     * stopped with no current item, no failsafe on. What it stores (mission, fence, rally points),
+     * its home, its battery and its GPS receiver's state stay.
+     */
+    private void reboot(long now) {
+        boot = now;
+        estimate = new PositionEstimate(now, options.warmupSeconds());
+        armed = false;
+        mode = firmware.bootMode();
+        modeToAnnounce = false;
+        nextHeartbeat = now;
+        flight.rebooted();
+        navigation.failsafe(false);
+        resetStreams();
+        defaultStreams(now);
     }
 
     /** The mission transfer's view of this vehicle. */
@@ -648,6 +685,68 @@ public final class SimVehicle {
         @Override
         public void send(MAVLinkMessage m) {
             SimVehicle.this.send(m);
+        }
+    }
+
+    /** The faults' view of this vehicle. */
+    private final class Afflicted implements FaultHost {
+        @Override
+        public Firmware firmware() {
+            return firmware;
+        }
+
+        @Override
+        public Craft craft() {
+            return craft;
+        }
+
+        @Override
+        public boolean armed() {
+            return armed;
+        }
+
+        @Override
+        public int mode() {
+            return mode;
+        }
+
+        @Override
+        public boolean flightMoves() {
+            return flight.movesIn(mode);
+        }
+
+        @Override
+        public void text(int severity, String text) {
+            outbox.text(severity, text);
+        }
+
+        @Override
+        public void flush() {
+            outbox.flush();
+        }
+
+        @Override
+        public boolean setMode(int m) {
+            boolean set = setModeIfValid(m);
+            if (modeToAnnounce) {
+                announceMode();
+            }
+            return set;
+        }
+
+        @Override
+        public NavigationState navigation() {
+            return navigation;
+        }
+
+        @Override
+        public void cutOff(boolean cut) {
+            outage = cut;
+        }
+
+        @Override
+        public void reboot() {
+            SimVehicle.this.reboot(lastTick);
         }
     }
 
