@@ -6,32 +6,21 @@ package dolphin.sim;
  * ArduPlane no longer thinks it flies (EXTENDED_SYS_STATE ON_GROUND). ArduPlane says nothing of it;
  * it stays armed, in its mode, at its mission item.
  */
-final class EngineFailure implements Fault {
+final class EngineFailure extends PowerLoss {
 
     private double stopped;
 
     @Override
-    public void begin(FaultHost vehicle) {
-        // the engine stops; the glide follows tick by tick
+    void descend(Craft craft, double dt) {
+        craft.glide(craft.performance().sink(), dt);
     }
 
     @Override
-    public boolean step(FaultHost vehicle, double dt) {
-        Craft craft = vehicle.craft();
-        if (!craft.contact()) {
-            craft.glide(craft.performance().sink(), dt);
-        } else if (!craft.onGround()) {
-            stopped += dt;
-            if (stopped >= FaultTable.PLANE_LANDED_AFTER) {
-                craft.settle();
-            }
+    boolean grounded(FaultHost vehicle, double dt) {
+        stopped += dt;
+        if (stopped >= FaultTable.PLANE_LANDED_AFTER) {
+            vehicle.craft().settle();
         }
-        return true;
-    }
-
-    /** Without its engine it flies no more. */
-    @Override
-    public boolean holdsFlight(FaultHost vehicle) {
         return true;
     }
 }

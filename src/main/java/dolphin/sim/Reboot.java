@@ -2,9 +2,9 @@ package dolphin.sim;
 
 /**
  * The autopilot reboots ({@link FaultHost#reboot}): the vehicle starts again as it booted, disarmed;
- * one in the air comes down without thrust ({@link Fall}) and lies where it lands.
+ * its motors stopped, one in the air comes down ({@link Fall}) and lies where it lands.
  */
-final class Reboot implements Fault {
+final class Reboot extends PowerLoss {
 
     private final Fall fall = new Fall();
 
@@ -14,19 +14,14 @@ final class Reboot implements Fault {
     }
 
     @Override
-    public boolean step(FaultHost vehicle, double dt) {
-        Craft craft = vehicle.craft();
-        if (!craft.contact()) {
-            fall.step(craft, dt);
-            return true;
-        }
-        craft.settle();
-        return false;
+    void descend(Craft craft, double dt) {
+        fall.step(craft, dt);
     }
 
-    /** Until it is down: its motors stopped with the autopilot. */
+    /** Down: it is over. */
     @Override
-    public boolean holdsFlight(FaultHost vehicle) {
-        return true;
+    boolean grounded(FaultHost vehicle, double dt) {
+        vehicle.craft().settle();
+        return false;
     }
 }

@@ -635,7 +635,7 @@ public final class SimVehicle {
     }
 
     /** The mission flight's view of this vehicle. */
-    private final class FlightBody implements MissionFlight.Body {
+    private class FlightBody implements MissionFlight.Body {
         @Override
         public Craft craft() {
             return craft;
@@ -688,41 +688,16 @@ public final class SimVehicle {
         }
     }
 
-    /** The faults' view of this vehicle. */
-    private final class Afflicted implements FaultHost {
+    /** The faults' view of this vehicle: the flight's, and more. */
+    private final class Afflicted extends FlightBody implements FaultHost {
         @Override
         public Firmware firmware() {
             return firmware;
         }
 
         @Override
-        public Craft craft() {
-            return craft;
-        }
-
-        @Override
-        public boolean armed() {
-            return armed;
-        }
-
-        @Override
-        public int mode() {
-            return mode;
-        }
-
-        @Override
         public boolean flightMoves() {
             return flight.movesIn(mode);
-        }
-
-        @Override
-        public void text(int severity, String text) {
-            outbox.text(severity, text);
-        }
-
-        @Override
-        public void flush() {
-            outbox.flush();
         }
 
         @Override

@@ -11,7 +11,7 @@ import java.util.Locale;
  * then every {@link FaultTable#THRUST_LOSS_REPEAT} seconds, until it is disarmed. The motor never
  * comes back.
  */
-final class ThrustLoss implements Fault {
+final class ThrustLoss extends PowerLoss {
 
     private final int motor;
     private final Fall fall = new Fall();
@@ -23,19 +23,14 @@ final class ThrustLoss implements Fault {
     }
 
     @Override
-    public void begin(FaultHost vehicle) {
-        // the motor stops; what the copter does follows tick by tick
+    void descend(Craft craft, double dt) {
+        fall.step(craft, dt);
     }
 
+    /** Copter::thrust_loss_check looks only while armed and not landed (a copter that never took off is landed). */
     @Override
-    public boolean step(FaultHost vehicle, double dt) {
-        Craft craft = vehicle.craft();
-        if (!craft.contact()) {
-            fall.step(craft, dt);
-            return true;
-        }
-        // Copter::thrust_loss_check looks only while armed and not landed (a copter that never took off is landed)
-        if (!vehicle.armed() || craft.onGround()) {
+    boolean grounded(FaultHost vehicle, double dt) {
+        if (!vehicle.armed() || vehicle.craft().onGround()) {
             untilText = FaultTable.THRUST_LOSS_FIRST;
             return true;
         }
@@ -44,12 +39,6 @@ final class ThrustLoss implements Fault {
             vehicle.text(FaultTable.THRUST_LOSS_SEVERITY, String.format(Locale.ROOT, FaultTable.THRUST_LOSS, motor));
             untilText += FaultTable.THRUST_LOSS_REPEAT;
         }
-        return true;
-    }
-
-    /** Without the motor it flies no more. */
-    @Override
-    public boolean holdsFlight(FaultHost vehicle) {
         return true;
     }
 }

@@ -56,8 +56,11 @@ class SimFaultFlightSpec extends Specification {
         d
     }
 
-    /** A copter flying SURVEY, as the executor starts it: GUIDED, armed, AUTO, MISSION_START. */
-    SimDriver copterSurvey(List<String> faults) {
+    /**
+     * A copter flying SURVEY with {@code faults}, started as the executor starts it (GUIDED, armed,
+     * AUTO, MISSION_START), until {@code seconds} after the arming; the mark of what it sends next.
+     */
+    int copterSurvey(List<String> faults, double seconds = 0) {
         vehicle(VehicleKind.COPTER, faults)
         assert d.upload(SURVEY) == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
         d.setMode(COPTER_MODE.COPTER_MODE_GUIDED)
@@ -65,7 +68,8 @@ class SimFaultFlightSpec extends Specification {
         armedAt = d.now
         d.setMode(COPTER_MODE.COPTER_MODE_AUTO)
         assert d.command(MAV_CMD.MAV_CMD_MISSION_START).result == MAV_RESULT.MAV_RESULT_ACCEPTED
-        d
+        runToAfterArming(seconds)
+        d.mark()
     }
 
     /** Ticks until {@code seconds} of clock time after the arming. */
@@ -105,11 +109,9 @@ class SimFaultFlightSpec extends Specification {
 
     def "a copter that loses a motor mid-survey falls, hits the ground, and says Potential Thrust Loss every 2 s, armed in AUTO at its item"() {
         given:
-        copterSurvey(['motor=2@30'])
-        runToAfterArming(30)
+        int from = copterSurvey(['motor=2@30'], 30)
         int item = d.vehicle.missionCurrent()
         assert item == 2 && heightAboveHome() > 29
-        int from = d.mark()
 
         when: 'the motor stops, and 15 s go by'
         runToAfterArming(45)
@@ -149,9 +151,7 @@ class SimFaultFlightSpec extends Specification {
 
     def "a copter that loses its GPS mid-survey: NO_GPS after 4 s, the EKF's position gone after 7, then EKF variance, LAND and the failsafe's text; it lands and disarms"() {
         given:
-        copterSurvey(['gps@30'])
-        runToAfterArming(30)
-        int from = d.mark()
+        int from = copterSurvey(['gps@30'], 30)
 
         when:
         runToAfterArming(80)
@@ -197,8 +197,7 @@ class SimFaultFlightSpec extends Specification {
 
     def "in the LAND failsafe's pause the copter holds its height 4 s, then descends"() {
         given:
-        copterSurvey(['gps@30'])
-        runToAfterArming(38.1)
+        copterSurvey(['gps@30'], 38.1)
         assert d.vehicle.mode() == COPTER_MODE.COPTER_MODE_LAND
         double height = heightAboveHome()
 
@@ -239,10 +238,8 @@ class SimFaultFlightSpec extends Specification {
 
     def "a pilot takes a copter over mid-survey: LOITER, held there 15 s, then AUTO at the same item; the survey ends as it would have"() {
         given:
-        copterSurvey(['takeover=15@30'])
-        runToAfterArming(29.99)
+        int from = copterSurvey(['takeover=15@30'], 29.99)
         int item = d.vehicle.missionCurrent()
-        int from = d.mark()
         d.tick()
         def taken = d.vehicle.position()
 
@@ -273,8 +270,7 @@ class SimFaultFlightSpec extends Specification {
 
     def "a takeover hands back AUTO only if its mode is still on: a ground station's RTL meanwhile stands"() {
         given:
-        copterSurvey(['takeover=15@30'])
-        runToAfterArming(35)
+        copterSurvey(['takeover=15@30'], 35)
 
         when:
         d.setMode(COPTER_MODE.COPTER_MODE_RTL)
@@ -303,11 +299,9 @@ class SimFaultFlightSpec extends Specification {
 
     def "a stall keeps a copter in AUTO at its item without progress for its duration, then it goes on"() {
         given:
-        copterSurvey(['stall=20@30'])
-        runToAfterArming(30)
+        int from = copterSurvey(['stall=20@30'], 30)
         int item = d.vehicle.missionCurrent()
         def stalled = d.vehicle.position()
-        int from = d.mark()
 
         when:
         runToAfterArming(49.9)
@@ -328,10 +322,8 @@ class SimFaultFlightSpec extends Specification {
 
     def "a stall for ever: no progress in AUTO however long, but RTL from the ground station brings the copter home"() {
         given:
-        copterSurvey(['stall@30'])
-        runToAfterArming(30)
+        int from = copterSurvey(['stall@30'], 30)
         int item = d.vehicle.missionCurrent()
-        int from = d.mark()
 
         when:
         runToAfterArming(200)
@@ -351,10 +343,8 @@ class SimFaultFlightSpec extends Specification {
 
     def "a reboot mid-survey: time since boot from 0, disarmed in STABILIZE, its streams and its place in the mission forgotten, and the copter falls"() {
         given:
-        copterSurvey(['reboot@30'])
-        runToAfterArming(30)
+        int from = copterSurvey(['reboot@30'], 30)
         long bootMillisBefore = d.since(0, msg_global_position_int).last().time_boot_ms
-        int from = d.mark()
 
         when:
         d.run(10)
@@ -380,10 +370,8 @@ class SimFaultFlightSpec extends Specification {
 
     def "an outage: nothing from the vehicle and nothing heard by it for its duration, while it flies on; then heard again"() {
         given:
-        copterSurvey(['outage=10@30'])
-        runToAfterArming(30)
+        int from = copterSurvey(['outage=10@30'], 30)
         def before = d.vehicle.position()
-        int from = d.mark()
 
         when:
         runToAfterArming(39.9)
@@ -458,8 +446,7 @@ class SimFaultFlightSpec extends Specification {
 
     def "a fault for another system id leaves this vehicle alone"() {
         when:
-        copterSurvey(['motor@30:2', 'gps@30:2'])
-        runToAfterArming(60)
+        copterSurvey(['motor@30:2', 'gps@30:2'], 60)
 
         then:
         heightAboveHome() > 29
