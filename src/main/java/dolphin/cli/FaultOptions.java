@@ -22,9 +22,9 @@ final class FaultOptions {
     static final String HELP = "A fault injected into the simulated vehicles, SECONDS of clock time after a vehicle first "
             + "arms, into vehicle SYSID only if given: motor[=N] (motor N, default 1, stops: a copter falls, a plane glides "
             + "down), gps (the GPS receiver falls silent: the EKF failsafe acts), takeover=SECONDS[,MODE] (a pilot on another "
-            + "ground station holds it in MODE, by default LOITER, a rover's HOLD, for SECONDS, then sets AUTO), "
-            + "stall[=SECONDS] (it makes no progress in AUTO, for ever by default), reboot, outage=SECONDS (its link silent "
-            + "both ways). E.g. motor@60:1. Repeatable.";
+            + "ground station holds it in MODE, by default LOITER, a rover's or boat's HOLD, a sub's POSHOLD, for SECONDS, then "
+            + "sets AUTO), stall[=SECONDS] (it makes no progress in AUTO, for ever by default), reboot, outage=SECONDS (its "
+            + "link silent both ways). E.g. motor@60:1. Repeatable.";
 
     private FaultOptions() {
     }
