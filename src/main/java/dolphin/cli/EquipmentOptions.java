@@ -96,7 +96,7 @@ record EquipmentOptions(OptionNames names, List<String> sensors, String cameras,
     }
 
     /** A system id the fleet does not have is a mistake, not a sensor nobody carries. */
-    private static void inFleet(CommandLine cl, String where, SysidSet vehicles, int first, int last) {
+    static void inFleet(CommandLine cl, String where, SysidSet vehicles, int first, int last) {
         Set<Integer> outside = vehicles.outside(first, last);
         if (!outside.isEmpty()) {
             throw new ParameterException(cl, where + ": no vehicle with system id " + outside.iterator().next()

@@ -19,6 +19,7 @@ import dolphin.mission.transfer.TransferPath;
 import dolphin.sensor.FleetFile;
 import dolphin.sensor.SensorService;
 import dolphin.sim.FaultModel;
+import dolphin.sim.SimFault;
 import dolphin.sim.SimFleet;
 import dolphin.sim.SimOptions;
 import dolphin.sim.VehicleKind;
@@ -96,6 +97,10 @@ final class RunCommand implements Callable<Integer> {
 
     @Option(names = "--sim-config", paramLabel = "FILE", description = "With --sim: " + EquipmentOptions.CONFIG_HELP)
     private Path simConfig;
+
+    @Option(names = "--sim-fault", paramLabel = SimFault.FORM, converter = FaultOptions.Converter.class,
+            description = "With --sim: " + FaultOptions.HELP)
+    private List<SimFault> simFaults = new ArrayList<>();
 
     @Option(names = "--tlog", paramLabel = "FILE", description = "Write every MAVLink frame in and out to a .tlog file.")
     private Path tlog;
@@ -280,7 +285,7 @@ final class RunCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), "--speedup needs --sim: real vehicles run in real time");
         }
         needsSim(EquipmentOptions.OptionNames.RUN.all(), "only simulated vehicles carry simulated sensors and cameras");
-        needsSim(List.of("--sim-home", "--sim-dive-silence", "--sim-no-ftp"), "it sets up the simulated fleet");
+        needsSim(List.of("--sim-home", "--sim-dive-silence", "--sim-no-ftp", "--sim-fault"), "it sets up the simulated fleet");
         if (webTiles != null && web == null) {
             throw new ParameterException(spec.commandLine(), "--web-tiles needs --web");
         }
@@ -385,7 +390,8 @@ final class RunCommand implements Callable<Integer> {
         if (simHome != null) {
             config = config.withHome(simHome);
         }
-        return config.withEquipment(new EquipmentOptions(EquipmentOptions.OptionNames.RUN, simSensors, simCameras, simConfig)
+        config = config.withEquipment(new EquipmentOptions(EquipmentOptions.OptionNames.RUN, simSensors, simCameras, simConfig)
                 .equipment(spec.commandLine(), config.firstSysid(), config.highestSysid()));
+        return FaultOptions.inject(spec.commandLine(), "--sim-fault", simFaults, config);
     }
 }

@@ -6,6 +6,7 @@ import dolphin.mavlink.codec.SigningKey;
 import dolphin.mavlink.link.LinkUrl;
 import dolphin.sim.FaultModel;
 import dolphin.sim.SimEquipment;
+import dolphin.sim.SimFault;
 import dolphin.sim.SimFleet;
 import dolphin.sim.SimOptions;
 import dolphin.sim.VehicleKind;
@@ -16,6 +17,7 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
+import java.util.stream.Collectors;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -84,6 +86,9 @@ final class SimCommand implements Callable<Integer> {
     @Mixin
     LinkFaultOptions faults;
 
+    @Option(names = "--fault", paramLabel = SimFault.FORM, converter = FaultOptions.Converter.class, description = FaultOptions.HELP)
+    private List<SimFault> injected = new ArrayList<>();
+
     @Option(names = "--sensor", paramLabel = "SPEC", description = EquipmentOptions.SENSOR_HELP)
     private List<String> sensors = new ArrayList<>();
 
@@ -105,6 +110,10 @@ final class SimCommand implements Callable<Integer> {
             out.printf("simulating %d %s(s), system ids %d..%d%s, sending to %s%s%n", count, type.name().toLowerCase(java.util.Locale.ROOT),
                     firstSysid, config.highestSysid(),
                     gcs.size() > 1 ? " (" + config.perLink() + " per link)" : "", gcs, speedup != 1 ? " at " + speedup + "x" : "");
+            if (!config.options().faults().isEmpty()) {
+                out.printf("faults, at seconds after a vehicle first arms: %s%n", config.options().faults().stream()
+                        .map(SimFault::toString).collect(Collectors.joining(", ")));
+            }
             out.flush();
             Runtime.getRuntime().addShutdownHook(new Thread(fleet::close));
             if (duration == null) {
@@ -141,7 +150,8 @@ final class SimCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
-        return config.withEquipment(new EquipmentOptions(EquipmentOptions.OptionNames.SIM, sensors, cameras, equipmentFile)
+        config = config.withEquipment(new EquipmentOptions(EquipmentOptions.OptionNames.SIM, sensors, cameras, equipmentFile)
                 .equipment(spec.commandLine(), firstSysid, config.highestSysid()));
+        return FaultOptions.inject(spec.commandLine(), "--fault", injected, config);
     }
 }

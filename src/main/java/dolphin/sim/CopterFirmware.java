@@ -178,4 +178,9 @@ final class CopterFirmware implements Firmware {
     public int systemStatus(boolean armed, boolean onGround) {
         return onGround ? MAV_STATE.MAV_STATE_STANDBY : MAV_STATE.MAV_STATE_ACTIVE;
     }
+
+    @Override
+    public Failures failures() {
+        return FaultTable.COPTER;
+    }
 }

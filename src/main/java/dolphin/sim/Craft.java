@@ -173,9 +173,21 @@ final class Craft {
 
     /** Ahead along its heading at its speed, climbing towards {@code hae}: a plane's take-off run. */
     void climbAhead(double hae, double dt) {
+        ahead(-Math.min(performance.climb() * dt, hae - position.hae()), dt);
+    }
+
+    /** Ahead along its heading at its speed, sinking at {@code sink} m/s: a plane without its engine. */
+    void glide(double sink, double dt) {
+        ahead(sink * dt, dt);
+    }
+
+    /**
+     * One step of {@code dt} seconds along its heading at its speed, {@code down} metres lower: lower
+     * than its height, not along the local vertical, which over a long glide includes the Earth's curvature.
+     */
+    private void ahead(double down, double dt) {
         double d = speed * dt;
-        double up = Math.min(performance.climb() * dt, hae - position.hae());
-        moveTo(position.displace(d * Math.cos(heading), d * Math.sin(heading), -up), dt);
+        moveTo(position.displace(d * Math.cos(heading), d * Math.sin(heading), 0).atHeight(position.hae() - down), dt);
     }
 
     /** Straight down at {@code rate} m/s, to the ground at most, braking to a stop over the ground. */

@@ -9,9 +9,9 @@ import java.util.OptionalInt;
 /**
  * What the simulated ArduCopter, ArduPlane, ArduRover and ArduSub do differently: identity, modes and
  * default streams; speeds and radii; the arming and mode rules; which mission items it starts; how
- * each one takes off, reaches a point, holds, lands, returns home and ends a mission; and what it
- * reports of being on the ground. {@link SimVehicle} and {@link MissionFlight} ask their vehicle's
- * firmware and never test its kind.
+ * each one takes off, reaches a point, holds, lands, returns home and ends a mission; what it
+ * reports of being on the ground; and what its faults do ({@link Failures}). {@link SimVehicle} and
+ * {@link MissionFlight} ask their vehicle's firmware and never test its kind.
  */
 interface Firmware {
 
@@ -135,6 +135,9 @@ interface Firmware {
     /** EXTENDED_SYS_STATE's landed_state, given whether it is on the ground and its manoeuvre's state. */
     int landedState(boolean onGround, int manoeuvreState);
 
-    /** The heartbeat's system_status. */
+    /** The heartbeat's system_status, without a failsafe on (which makes it MAV_STATE_CRITICAL). */
     int systemStatus(boolean armed, boolean onGround);
+
+    /** What it does when things go wrong: its row of {@link FaultTable}. */
+    Failures failures();
 }

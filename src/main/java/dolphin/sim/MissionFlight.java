@@ -309,16 +309,13 @@ final class MissionFlight {
         }
     }
 
-    void tick(double dt) {
-        int mode = body.mode();
-        if (mode == firmware.autoMode()) {
-            auto(dt);
-        } else if (body.armed()) {
-            if (firmware.rtlMode().isPresent() && mode == firmware.rtlMode().getAsInt()) {
-                modeStep(dt, () -> firmware.returnHome(body.craft(), body.home(), false), this::disarmIfLanded);
-            } else if (firmware.landMode().isPresent() && mode == firmware.landMode().getAsInt()) {
-                modeStep(dt, () -> firmware.landing(body.craft(), null), () -> firmware.landModeDone(body));
-            }
+    /**
+     * One tick of {@code dt} seconds. While a fault {@code held} the vehicle (a motor lost, a stall),
+     * neither its mission nor RTL or LAND moves it or goes on; what it reports still goes out.
+     */
+    void tick(double dt, boolean held) {
+        if (!held) {
+            move(dt);
         }
         if (restartDue) {
             restartDue = false;
@@ -328,6 +325,47 @@ final class MissionFlight {
         body.flush();
         announceCurrent(currentDue);
         currentDue = false;
+    }
+
+    /** AUTO flies the mission, RTL and LAND their manoeuvres. */
+    private void move(double dt) {
+        int mode = body.mode();
+        if (mode == firmware.autoMode()) {
+            auto(dt);
+        } else if (body.armed()) {
+            if (isRtl(mode)) {
+                modeStep(dt, () -> firmware.returnHome(body.craft(), body.home(), false), this::disarmIfLanded);
+            } else if (isLand(mode)) {
+                modeStep(dt, () -> firmware.landing(body.craft(), null), () -> firmware.landModeDone(body));
+            }
+        }
+    }
+
+    /** Whether the flight moves the vehicle in {@code mode}: AUTO, RTL and LAND; in any other mode it stays. */
+    boolean movesIn(int mode) {
+        return mode == firmware.autoMode() || isRtl(mode) || isLand(mode);
+    }
+
+    private boolean isRtl(int mode) {
+        return firmware.rtlMode().isPresent() && mode == firmware.rtlMode().getAsInt();
+    }
+
+    private boolean isLand(int mode) {
+        return firmware.landMode().isPresent() && mode == firmware.landMode().getAsInt();
+    }
+
+    /**
+     * Rebooted: AP_Mission starts stopped with no current item (MISSION_CURRENT 0, NOT_STARTED), the
+     * stored mission kept; no manoeuvre under way, MISSION_START to be given again.
+     */
+    void rebooted() {
+        cursor.cleared();
+        dropActive();
+        modeManoeuvre = null;
+        conditionSeq = -1;
+        autoArmed = false;
+        restartDue = false;
+        groundSeconds = 0;
     }
 
     /**

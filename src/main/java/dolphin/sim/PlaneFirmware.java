@@ -162,4 +162,9 @@ final class PlaneFirmware implements Firmware {
     public int systemStatus(boolean armed, boolean onGround) {
         return onGround ? MAV_STATE.MAV_STATE_STANDBY : MAV_STATE.MAV_STATE_ACTIVE;
     }
+
+    @Override
+    public Failures failures() {
+        return FaultTable.PLANE;
+    }
 }

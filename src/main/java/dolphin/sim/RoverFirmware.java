@@ -174,4 +174,9 @@ final class RoverFirmware implements Firmware {
     public int systemStatus(boolean armed, boolean onGround) {
         return armed ? MAV_STATE.MAV_STATE_ACTIVE : MAV_STATE.MAV_STATE_STANDBY;
     }
+
+    @Override
+    public Failures failures() {
+        return FaultTable.ROVER;
+    }
 }

@@ -1,5 +1,8 @@
 package dolphin.sim;
 
+import java.util.ArrayList;
+import java.util.List;
+
 /**
  * Behaviour knobs of simulated vehicles.
  *
@@ -15,21 +18,25 @@ package dolphin.sim;
  * @param ftp true (the default): the vehicle serves MAVLink FTP (its @MISSION files) and says so in
  *        AUTOPILOT_VERSION; false: FILE_TRANSFER_PROTOCOL gets no answer and the capability bit is clear,
  *        as firmware built without FTP
+ * @param faults the faults injected into the vehicles, each at its time after a vehicle's first arming
+ *        (docs/mavlink.md, "Faults")
  */
 public record SimOptions(double warmupSeconds, double drainPercentPerMinute, boolean messageIntervalSupported,
-                         boolean refuseModeChanges, int missionCapacity, double diveSilenceMetres, boolean ftp) {
+                         boolean refuseModeChanges, int missionCapacity, double diveSilenceMetres, boolean ftp,
+                         List<SimFault> faults) {
 
     public static final int DEFAULT_MISSION_CAPACITY = 700;
     public static final SimOptions DEFAULT = new SimOptions(0, 14, true, false, DEFAULT_MISSION_CAPACITY,
-            Double.POSITIVE_INFINITY, true);
+            Double.POSITIVE_INFINITY, true, List.of());
 
     public SimOptions(double warmupSeconds, double drainPercentPerMinute, boolean messageIntervalSupported,
                       boolean refuseModeChanges) {
         this(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, DEFAULT_MISSION_CAPACITY,
-                Double.POSITIVE_INFINITY, true);
+                Double.POSITIVE_INFINITY, true, List.of());
     }
 
     public SimOptions {
+        faults = List.copyOf(faults);
         if (missionCapacity < 1) {
             throw new IllegalArgumentException("the mission capacity must hold at least home, got " + missionCapacity);
         }
@@ -40,32 +47,41 @@ public record SimOptions(double warmupSeconds, double drainPercentPerMinute, boo
 
     public SimOptions withWarmup(double seconds) {
         return new SimOptions(seconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity,
-                diveSilenceMetres, ftp);
+                diveSilenceMetres, ftp, faults);
     }
 
     public SimOptions withDrain(double percentPerMinute) {
         return new SimOptions(warmupSeconds, percentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity,
-                diveSilenceMetres, ftp);
+                diveSilenceMetres, ftp, faults);
     }
 
     public SimOptions withoutMessageInterval() {
-        return new SimOptions(warmupSeconds, drainPercentPerMinute, false, refuseModeChanges, missionCapacity, diveSilenceMetres, ftp);
+        return new SimOptions(warmupSeconds, drainPercentPerMinute, false, refuseModeChanges, missionCapacity, diveSilenceMetres,
+                ftp, faults);
     }
 
     public SimOptions withMissionCapacity(int items) {
         return new SimOptions(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, items,
-                diveSilenceMetres, ftp);
+                diveSilenceMetres, ftp, faults);
     }
 
     /** Subs deeper than {@code metres} below the surface are cut off. */
     public SimOptions withDiveSilence(double metres) {
         return new SimOptions(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity,
-                metres, ftp);
+                metres, ftp, faults);
     }
 
     /** Vehicles without MAVLink FTP: FILE_TRANSFER_PROTOCOL unanswered, no FTP bit in AUTOPILOT_VERSION. */
     public SimOptions withoutFtp() {
         return new SimOptions(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity,
-                diveSilenceMetres, false);
+                diveSilenceMetres, false, faults);
+    }
+
+    /** With {@code fault} injected too. */
+    public SimOptions withFault(SimFault fault) {
+        List<SimFault> more = new ArrayList<>(faults);
+        more.add(fault);
+        return new SimOptions(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity,
+                diveSilenceMetres, ftp, more);
     }
 }

@@ -9,6 +9,7 @@ import com.MAVLink.common.msg_command_ack;
 import com.MAVLink.common.msg_command_long;
 import com.MAVLink.common.msg_extended_sys_state;
 import com.MAVLink.common.msg_file_transfer_protocol;
+import com.MAVLink.common.msg_gps_raw_int;
 import com.MAVLink.common.msg_home_position;
 import com.MAVLink.common.msg_mission_current;
 import com.MAVLink.common.msg_mission_set_current;
@@ -21,6 +22,7 @@ import com.MAVLink.enums.MAV_DATA_STREAM;
 import com.MAVLink.enums.MAV_MODE_FLAG;
 import com.MAVLink.enums.MAV_RESULT;
 import com.MAVLink.enums.MAV_SEVERITY;
+import com.MAVLink.enums.MAV_STATE;
 import com.MAVLink.enums.MAV_SYS_STATUS_SENSOR;
 import com.MAVLink.minimal.msg_heartbeat;
 import com.MAVLink.standard.msg_autopilot_version;
@@ -48,18 +50,17 @@ public final class SimVehicle {
     private static final Set<Integer> STREAMABLE = Set.of(msg_sys_status.MAVLINK_MSG_ID_SYS_STATUS,
             msg_global_position_int.MAVLINK_MSG_ID_GLOBAL_POSITION_INT, msg_mission_current.MAVLINK_MSG_ID_MISSION_CURRENT,
             msg_battery_status.MAVLINK_MSG_ID_BATTERY_STATUS, msg_home_position.MAVLINK_MSG_ID_HOME_POSITION,
-            msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE, msg_ekf_status_report.MAVLINK_MSG_ID_EKF_STATUS_REPORT);
+            msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE, msg_ekf_status_report.MAVLINK_MSG_ID_EKF_STATUS_REPORT,
+            msg_gps_raw_int.MAVLINK_MSG_ID_GPS_RAW_INT);
     private static final long SECOND = 1_000_000_000L;
-    private static final int EKF_BOOTING = 167;
-    private static final int EKF_LOCATED = 831;
     private static final int FORCE_DISARM = 21196;
 
     private final int sysid;
     private final VehicleKind kind;
     private final Firmware firmware;
     private final SimOptions options;
-    private final PositionEstimate estimate;
-    private final long boot;
+    private PositionEstimate estimate;
+    private long boot;
     private final SimSensors sensors;
     private final boolean camera;
     private final Map<Integer, Long> intervals = new HashMap<>();
@@ -81,6 +82,13 @@ public final class SimVehicle {
     private final FenceGuard fenceGuard = new FenceGuard();
     private final MissionFlight flight;
     private final SimFtpServer ftp;
+    private final NavigationState navigation = new NavigationState();
+    private final FaultSchedule faults;
+    private final FaultHost faultHost = new Afflicted();
+    /** Clock time of its first arming, from which its faults' times count; negative before it. */
+    private long firstArmed = -1;
+    /** The link cut by an {@link Outage}. */
+    private boolean outage;
 
     SimVehicle(int sysid, VehicleKind kind, Position home, SimOptions options, long now) {
         this(sysid, kind, home, options, now, SimEquipment.NONE);
@@ -106,6 +114,12 @@ public final class SimVehicle {
         this.lists = new MissionLists(missionStore, options.missionCapacity(), host);
         this.ftp = new SimFtpServer(new MissionFiles(lists::store, new MissionFileLoader(lists::store, host)), this::send);
         this.flight = new MissionFlight(firmware, missionStore, new FlightBody());
+        this.faults = new FaultSchedule(options.faults(), sysid, kind);
+        defaultStreams(now);
+    }
+
+    /** The streams a firmware sends before anyone asks (a plane's and a sub's). */
+    private void defaultStreams(long now) {
         if (firmware.defaultStreamHz() > 0) {
             for (int id : STREAMABLE) {
                 stream(id, (long) (SECOND / firmware.defaultStreamHz()), now);
@@ -229,7 +243,9 @@ public final class SimVehicle {
         }
         lists.tick(now);
         ftp.tick(now);
-        flight.tick(dt);
+        // before the flight, so that a fault beginning now holds it from this tick on
+        faults.tick(now, firstArmed, dt, faultHost);
+        flight.tick(dt, faults.holdsFlight(faultHost));
         watchFence(now);
         if (firmware.needsPositionToArm()) {
             estimate.periodicReport(now, armed).ifPresent(s -> outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, s));
@@ -422,6 +438,9 @@ public final class SimVehicle {
             return MAV_RESULT.MAV_RESULT_FAILED;
         }
         armed = true;
+        if (firstArmed < 0) {
+            firstArmed = now;
+        }
         outbox.text(MAV_SEVERITY.MAV_SEVERITY_INFO, firmware.armedText());
         return MAV_RESULT.MAV_RESULT_ACCEPTED;
     }
@@ -518,7 +537,8 @@ public final class SimVehicle {
         Set<Integer> ids = switch (r.req_stream_id) {
             case MAV_DATA_STREAM.MAV_DATA_STREAM_ALL -> STREAMABLE;
             case MAV_DATA_STREAM.MAV_DATA_STREAM_EXTENDED_STATUS -> Set.of(msg_sys_status.MAVLINK_MSG_ID_SYS_STATUS,
-                    msg_mission_current.MAVLINK_MSG_ID_MISSION_CURRENT, msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE);
+                    msg_mission_current.MAVLINK_MSG_ID_MISSION_CURRENT, msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE,
+                    msg_gps_raw_int.MAVLINK_MSG_ID_GPS_RAW_INT);
             case MAV_DATA_STREAM.MAV_DATA_STREAM_POSITION -> Set.of(msg_global_position_int.MAVLINK_MSG_ID_GLOBAL_POSITION_INT);
             case MAV_DATA_STREAM.MAV_DATA_STREAM_EXTRA3 -> Set.of(msg_battery_status.MAVLINK_MSG_ID_BATTERY_STATUS,
                     msg_home_position.MAVLINK_MSG_ID_HOME_POSITION, msg_ekf_status_report.MAVLINK_MSG_ID_EKF_STATUS_REPORT);
@@ -566,7 +586,27 @@ public final class SimVehicle {
      * is under water.
      */
     private boolean cutOff() {
-        return silent || craft.depth() > options.diveSilenceMetres();
+        return silent || outage || craft.depth() > options.diveSilenceMetres();
+    }
+
+    /**
+     * Reboots at clock time {@code now}, as ArduPilot after MAV_CMD_PREFLIGHT_REBOOT_SHUTDOWN: time
+     * since boot from 0, its warm-up again, disarmed (motors stopped: a vehicle in the air comes
+     * down, see {@link Reboot}) and in its boot mode, its requested streams forgotten, its mission
+     * stopped with no current item, no failsafe on. What it stores (mission, fence, rally points),
+     * its home, its battery and its GPS receiver's state stay.
+     */
+    private void reboot(long now) {
+        boot = now;
+        estimate = new PositionEstimate(now, options.warmupSeconds());
+        armed = false;
+        mode = firmware.bootMode();
+        modeToAnnounce = false;
+        nextHeartbeat = now;
+        flight.rebooted();
+        navigation.failsafe(false);
+        resetStreams();
+        defaultStreams(now);
     }
 
     /** The mission transfer's view of this vehicle. */
@@ -595,7 +635,7 @@ public final class SimVehicle {
     }
 
     /** The mission flight's view of this vehicle. */
-    private final class FlightBody implements MissionFlight.Body {
+    private class FlightBody implements MissionFlight.Body {
         @Override
         public Craft craft() {
             return craft;
@@ -648,13 +688,50 @@ public final class SimVehicle {
         }
     }
 
+    /** The faults' view of this vehicle: the flight's, and more. */
+    private final class Afflicted extends FlightBody implements FaultHost {
+        @Override
+        public Firmware firmware() {
+            return firmware;
+        }
+
+        @Override
+        public boolean flightMoves() {
+            return flight.movesIn(mode);
+        }
+
+        @Override
+        public boolean setMode(int m) {
+            boolean set = setModeIfValid(m);
+            if (modeToAnnounce) {
+                announceMode();
+            }
+            return set;
+        }
+
+        @Override
+        public NavigationState navigation() {
+            return navigation;
+        }
+
+        @Override
+        public void cutOff(boolean cut) {
+            outage = cut;
+        }
+
+        @Override
+        public void reboot() {
+            SimVehicle.this.reboot(lastTick);
+        }
+    }
+
     private msg_heartbeat heartbeat() {
         msg_heartbeat hb = new msg_heartbeat();
         hb.type = (short) firmware.mavType();
         hb.autopilot = MAV_AUTOPILOT.MAV_AUTOPILOT_ARDUPILOTMEGA;
         hb.base_mode = (short) (MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED | (armed ? MAV_MODE_FLAG.MAV_MODE_FLAG_SAFETY_ARMED : 0));
         hb.custom_mode = mode;
-        hb.system_status = (short) firmware.systemStatus(armed, craft.onGround());
+        hb.system_status = (short) (navigation.failsafe() ? MAV_STATE.MAV_STATE_CRITICAL : firmware.systemStatus(armed, craft.onGround()));
         hb.mavlink_version = 3;
         return hb;
     }
@@ -688,6 +765,7 @@ public final class SimVehicle {
                 } else {
                     p.hdg = 65535;
                 }
+                p.time_boot_ms = bootMillis(lastTick);
                 yield Optional.of(p);
             }
             case msg_home_position.MAVLINK_MSG_ID_HOME_POSITION -> {
@@ -702,11 +780,11 @@ public final class SimVehicle {
                 yield Optional.of(h);
             }
             case msg_ekf_status_report.MAVLINK_MSG_ID_EKF_STATUS_REPORT -> {
-                // SITL's flags: attitude, velocities and height from boot (167); the horizontal position too once located (831)
                 msg_ekf_status_report e = new msg_ekf_status_report();
-                e.flags = located ? EKF_LOCATED : EKF_BOOTING;
+                e.flags = navigation.ekfFlags(located);
                 yield Optional.of(e);
             }
+            case msg_gps_raw_int.MAVLINK_MSG_ID_GPS_RAW_INT -> Optional.of(navigation.gpsRaw(located, craft.position(), bootMillis(lastTick)));
             case msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE -> {
                 msg_extended_sys_state e = new msg_extended_sys_state();
                 e.landed_state = (short) firmware.landedState(craft.onGround(), flight.manoeuvreState());
