@@ -11,12 +11,18 @@ import java.util.Optional;
  * reports an emergency (a STATUSTEXT at EMERGENCY, ALERT or CRITICAL: ArduPilot's thrust loss,
  * crash, EKF and failsafe messages), is disarmed, is on the ground with items left, or rebooted.
  * Each but the reboot is judged {@link VehicleWords#WAIT_NANOS} after its first sign, so that the
- * error quotes what the vehicle said around it. Fed one snapshot at a time with the clock's time.
+ * error quotes what the vehicle said around it; a disarm also waits for the next position, up to 4 s,
+ * which may show a reboot. Fed one snapshot at a time with the clock's time.
  */
 final class FlightAlarms {
 
     /** Higher than this above home, a flying vehicle has been airborne: a later landed state ON_GROUND is news. */
     private static final double AIRBORNE_METRES = 5;
+    /**
+     * How long a disarm may wait for the vehicle's next position, whose time since boot tells a reboot: a
+     * rebooted ArduPilot streams nothing until the ground station asks again, 3 s into the silence.
+     */
+    private static final long DISARM_WAIT_NANOS = 4_000_000_000L;
     /** For vehicles that send no landed state: this close to home's height, a flying vehicle is down. */
     private static final double DOWN_METRES = 0.5;
 
@@ -63,7 +69,8 @@ final class FlightAlarms {
         }
         sawArmed |= s.armed();
         disarmedAt = sawArmed && !s.armed() ? first(disarmedAt, now) : -1;
-        if (disarmedAt >= 0 && now >= disarmedAt + VehicleWords.WAIT_NANOS) {
+        if (disarmedAt >= 0 && now >= disarmedAt + VehicleWords.WAIT_NANOS
+                && (s.positionNanos() > disarmedAt || now >= disarmedAt + DISARM_WAIT_NANOS)) {
             return Optional.of("vehicle " + vehicle + " disarmed during " + item + saying(disarmedAt, now, s));
         }
         airborne |= rules.flies() && (s.landedState() == MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR

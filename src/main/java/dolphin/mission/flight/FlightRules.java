@@ -90,6 +90,11 @@ public interface FlightRules {
         return waypointRadius();
     }
 
+    /** Whether the vehicle holds at this waypoint once there: its param1 is a hold time, in seconds. */
+    default boolean holdsAt(MissionItem waypoint) {
+        return waypoint.command() == MAV_CMD.MAV_CMD_NAV_WAYPOINT && waypoint.param1() > 0;
+    }
+
     /** The radius the vehicle circles a loiter item at when the item names none (ArduPilot's default). */
     double loiterRadius();
 
@@ -179,6 +184,12 @@ public interface FlightRules {
         @Override
         public double arrivalRadius(MissionItem waypoint) {
             return Math.max(waypoint.param2(), waypointRadius());
+        }
+
+        /** AP_Mission keeps ArduPlane's waypoint param1 as pass-by distances, never a hold (docs/decisions.md). */
+        @Override
+        public boolean holdsAt(MissionItem waypoint) {
+            return false;
         }
 
         /** WP_LOITER_RAD 60 m. */

@@ -15,7 +15,7 @@ import java.util.Set;
  * for the warning time (one line), then for the limit (the error). The distance is three-dimensional,
  * so a climb, a sub's slow dive or a descent is progress. Items that make the vehicle wait are never a
  * stall: a vehicle at its waypoint (within the item's acceptance radius or the family's) holding for
- * the item's time, one circling a loiter item, a NAV_DELAY, any item without a place, and a vehicle
+ * the item's hold time, one circling a loiter item, a NAV_DELAY, any item without a place, and a vehicle
  * whose position has not been heard for 5 s (a sub silent at depth: the link's rules judge it). Fed one
  * snapshot at a time with the clock's time.
  */
@@ -99,7 +99,7 @@ final class StallWatch {
         }
         double vertical = height(s, i);
         double horizontal = placed ? p.horizontalDistanceTo(i.position()) : 0;
-        if (placed && horizontal <= thereRadius(i) && (Double.isNaN(vertical) || Math.abs(vertical) <= THERE_HEIGHT_METRES)) {
+        if (placed && waits(i) && horizontal <= thereRadius(i) && (Double.isNaN(vertical) || Math.abs(vertical) <= THERE_HEIGHT_METRES)) {
             return Double.NaN;
         }
         return Math.hypot(horizontal, Double.isNaN(vertical) ? 0 : vertical);
@@ -112,6 +112,14 @@ final class StallWatch {
             case MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT -> i.z() - s.relativeAlt();
             default -> Double.NaN;
         };
+    }
+
+    /**
+     * Whether the vehicle waits once there: a loiter, or a waypoint with a hold time. At a waypoint
+     * without one ArduPilot goes on at once, so a vehicle that hangs near it is stalled too.
+     */
+    private boolean waits(MissionItem i) {
+        return LOITERS.contains(i.command()) || rules.holdsAt(i);
     }
 
     /** Within this of the item's place, the vehicle is there: at its waypoint, or circling its loiter. */

@@ -106,17 +106,38 @@ class FlightAlarmsSpec extends Specification {
         (1..60).every { t -> a.judge(state(VehicleFamily.COPTER, true, ON_GROUND, 0), 2, true, t * S).empty }
     }
 
-    def "a disarm waits 2 s for the vehicle's words"() {
+    def "a disarm waits 2 s for the vehicle's words, and for its next position, up to 4 s"() {
         given:
         def a = alarms(VehicleFamily.COPTER)
         a.judge(state(VehicleFamily.COPTER, true, IN_AIR, 20), 2, false, 0)
         def down = state(VehicleFamily.COPTER, false, ON_GROUND, 0)
+        def heard = down.withPosition(down.position(), 0, Double.NaN, 11 * S)
 
-        expect:
+        expect: 'no position since the disarm at 10 s: waited for to 14 s'
         a.judge(down, 3, false, 10 * S).empty
         words.heard(MAV_SEVERITY.MAV_SEVERITY_WARNING, 'Disarming motors', 10 * S + 500_000_000)
-        a.judge(down, 3, false, 12 * S).get() == "vehicle 1 disarmed during item 3 of 4 (NAV_WAYPOINT), saying 'Disarming motors': disarmed, AUTO," +
+        a.judge(down, 3, false, 12 * S).empty
+        a.judge(down, 3, false, 14 * S).present
+
+        and: 'with a position heard after the disarm, the error comes 2 s after it'
+        def b = alarms(VehicleFamily.COPTER)
+        b.judge(state(VehicleFamily.COPTER, true, IN_AIR, 20), 2, false, 0).empty
+        b.judge(heard, 3, false, 10 * S).empty
+        b.judge(heard, 3, false, 12 * S).get() == "vehicle 1 disarmed during item 3 of 4 (NAV_WAYPOINT), saying 'Disarming motors': disarmed, AUTO," +
                 ' landed state ON_GROUND, 0.0 m above home'
+    }
+
+    def "a reboot seen as a disarm, then the time since boot going back when the streams are asked for again, is a reboot"() {
+        given:
+        def a = alarms(VehicleFamily.COPTER)
+        def flying = state(VehicleFamily.COPTER, true, IN_AIR, 30).withBootTime(300_000)
+        a.judge(flying, 2, false, 0)
+        def rebooted = state(VehicleFamily.COPTER, false, IN_AIR, 30).withBootTime(300_000)
+
+        expect:
+        a.judge(rebooted, 2, false, 10 * S).empty
+        a.judge(rebooted, 2, false, 13 * S).empty
+        a.judge(rebooted.withBootTime(3_400), 2, false, 13500 * 1_000_000L).get().startsWith('vehicle 1 rebooted during item 2 of 4')
     }
 
     def "a reboot: time since boot going back by more than 5 s; frames reordered on the link are not one"() {

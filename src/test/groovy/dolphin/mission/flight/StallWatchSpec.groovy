@@ -72,6 +72,21 @@ class StallWatchSpec extends Specification {
                 ' (the stall limit): armed, AUTO, landed state UNDEFINED, 30.0 m above home'
     }
 
+    @Unroll
+    def "hanging near a waypoint it should pass is a stall: #what"() {
+        given:
+        def w = watch(family, item)
+
+        expect:
+        (0..20).every { t -> w.look(at(family, north, up, t), 1, true, t * S) == StallWatch.Stall.NONE }
+        w.look(at(family, north, up, 21), 1, true, 21 * S).warning.startsWith('no progress toward item 1 of 1 (NAV_WAYPOINT)')
+
+        where:
+        what                                         | family               | item                   | north | up
+        'a copter 4 m short, no hold time'           | VehicleFamily.COPTER | waypoint(100, 30)      | 96    | 30
+        'a plane inside its WP_RADIUS (p1 no hold)'  | VehicleFamily.PLANE  | waypoint(1000, 100, 60) | 920  | 100
+    }
+
     def "a long leg is no stall: progress of a metre or more restarts the clock, a hover's wander does not"() {
         given:
         def w = watch(VehicleFamily.COPTER, waypoint(5000, 30))
@@ -98,11 +113,10 @@ class StallWatchSpec extends Specification {
         'a copter holding 5 minutes at its waypoint'              | VehicleFamily.COPTER | waypoint(100, 30, 300)                                                                                  | 101   | 30
         'a copter circling a loiter item of 30 m radius'          | VehicleFamily.COPTER | MissionItem.at(1, MAV_CMD.MAV_CMD_NAV_LOITER_TURNS, HOME.displace(100, 0, -30), 3, 0, 30, 0)            | 130   | 30
         'a plane circling its loiter at WP_LOITER_RAD'            | VehicleFamily.PLANE  | MissionItem.at(1, MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM, HOME.displace(1000, 0, -100), 0, 0, 0, 0)           | 1060  | 100
-        'a plane within its 90 m WP_RADIUS'                       | VehicleFamily.PLANE  | waypoint(1000, 100)                                                                                     | 920   | 100
         'a rover waiting at a NAV_DELAY'                          | VehicleFamily.ROVER  | MissionItem.command(1, MAV_CMD.MAV_CMD_NAV_DELAY, 120, -1, -1, -1)                                      | 50    | 0
         'a rover holding at its waypoint'                         | VehicleFamily.ROVER  | waypoint(50, 0, 60)                                                                                     | 49    | 0
         'a copter hovering at a loiter-time item'                 | VehicleFamily.COPTER | MissionItem.at(1, MAV_CMD.MAV_CMD_NAV_LOITER_TIME, HOME.displace(100, 0, -30), 600, 0, 0, 0)            | 100   | 30
-        'a sub at its depth'                                      | VehicleFamily.SUB    | waypoint(40, -10)                                                                                       | 40    | -10
+        'a sub holding a minute at its depth'                     | VehicleFamily.SUB    | waypoint(40, -10, 60)                                                                                   | 40    | -10
         'an item at no place (a waypoint at 0, 0: where it is)'  | VehicleFamily.COPTER | new MissionItem(1, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT, 0, 0, 0, 0, 0, 0, 30, true) | 0 | 30
     }
 
