@@ -75,6 +75,7 @@ class Injector:
         self.target_bearing = None
         self.disarmed_at = None
         self.resume_at = None         # pause: when to send AUTO again
+        self.outage_end = None        # outage: when the relay lets datagrams through again
         self.stop = False
         self.rc = None                # the vehicle's RC_CHANNELS 1..8 as last seen
         self.rc_sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
@@ -141,6 +142,7 @@ class Injector:
             with open(a.relay_control, "w") as fifo:
                 fifo.write("outage %g\n" % a.outage)
             self.write("inject relay outage %g s (both ways)" % a.outage)
+            self.outage_end = time.time() + a.outage
 
     def handle(self, m):
         t = m.get_type()
@@ -199,6 +201,9 @@ class Injector:
                 self.set_mode(AUTO[a.vehicle])
                 if a.vehicle == "copter":
                     self.send_rc(self.rc_throttle)
+            if self.outage_end and time.time() >= self.outage_end:
+                self.outage_end = None
+                self.write("relay outage over: the relay passes datagrams again")
             if self.disarmed_at and time.time() > self.disarmed_at + 20:
                 self.write("disarmed 20 s ago: done")
                 return

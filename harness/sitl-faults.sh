@@ -2,7 +2,9 @@
 # Flies a watched survey on real ArduPilot SITL while harness/fault_injector.py injects one fault
 # mid-survey, and keeps what happened in src/test/resources/sitl-recordings: NAME.tlog (dolphin's
 # --tlog), NAME.out (dolphin's output, each line prefixed with the wall clock it was read at) and
-# NAME.faults.log (the injector's log: what it did, and what the vehicle said and did, on the same clock).
+# NAME.faults.txt (the injector's log: what it did, and what the vehicle said and did, on the same clock),
+# NAME.sitl.txt (the first 100 lines of SITL's console, less its start-up lines) and, for an outage,
+# NAME.relay.txt (the relay's marks and the transfer messages it passed).
 # Like harness/record-sitl.sh, everything runs in a network namespace that has only loopback (unshare -n,
 # as root): SITL listens on every interface.
 #
@@ -29,9 +31,9 @@ case $vehicle in
   copter) binary=$ap/build/sitl/bin/arducopter model=+ defaults=$ap/Tools/autotest/default_params/copter.parm
           script=$repo/src/test/resources/sitl/faults-survey.dolphin after=${AFTER_SEQ:-4} ;;
   plane)  binary=$ap/build/sitl/bin/arduplane model=plane defaults=$ap/Tools/autotest/models/plane.parm
-          script=$repo/src/test/resources/sitl/plane-faults-survey.dolphin after=${AFTER_SEQ:-3} ;;
+          script=$repo/src/test/resources/sitl/plane-faults-survey.dolphin after=${AFTER_SEQ:-4} ;;
   rover)  binary=$ap/build/sitl/bin/ardurover model=rover defaults=$ap/Tools/autotest/default_params/rover.parm
-          script=$repo/src/test/resources/sitl/rover-faults-survey.dolphin after=${AFTER_SEQ:-3} ;;
+          script=$repo/src/test/resources/sitl/rover-faults-survey.dolphin after=${AFTER_SEQ:-4} ;;
   *) echo "unknown vehicle $vehicle" >&2; exit 2 ;;
 esac
 extra=()
@@ -50,7 +52,7 @@ shift 10   # the rest: dolphin run's extra options
 ip link set lo up
 gcs_port=14570 sitl_port=14570 injector_port=14590
 cd "$work"
-rm -f "$target.tlog" "$target.out" "$target.faults.log"
+rm -f "$target.tlog" "$target.out" "$target.faults.txt" "$target.sitl.txt" "$target.relay.txt"
 if [ "$scenario" = outage ]; then
   # SITL -> relay (14571) -> dolphin (14570); the injector tells the relay when, through a FIFO that the
   # shell also holds open, so the relay never sees its end
@@ -67,7 +69,7 @@ fi
 sitl=$!
 "$repo/.venv/bin/python" "$repo/harness/fault_injector.py" --link "udpin:127.0.0.1:$injector_port" \
     --fault "$scenario" --vehicle "$vehicle" --after-seq "$after" --hold "${HOLD:-15}" --wind-speed "${WIND:-30}" \
-    --outage "${OUTAGE:-30}" --relay-control "$work/relay.ctl" --timeout 460 --log "$target.faults.log" &
+    --outage "${OUTAGE:-30}" --relay-control "$work/relay.ctl" --timeout 460 --log "$target.faults.txt" &
 injector=$!
 sleep 15
 cd "$repo"
@@ -78,12 +80,15 @@ echo "dolphin exit ${PIPESTATUS[0]}" >> "$target.out"
 sleep 5   # the vehicle's last words after dolphin ended, for the injector's log
 kill "$injector" 2>/dev/null; wait "$injector" 2>/dev/null
 kill "$sitl" 2>/dev/null; wait "$sitl" 2>/dev/null
+# SITL's console, where ArduPilot prints what an INTERNAL_ERROR was (e.g. "SCurve::calculate_track ...")
+grep -v '^Waiting for\|^bind port\|^Serial port\|^Home: \|^Starting\|^Smoothing\|^Loaded' "$work/sitl.log" |
+  head -100 > "$target.sitl.txt"
 if [ "$scenario" = outage ]; then
-  kill "$relay" 2>/dev/null; wait "$relay" 2>/dev/null
-  grep -v '^[0-9.]* drop' "$work/relay.log" > "$target.relay.log" || true   # the marks, not each drop
-  echo "relay: $(grep -c ' drop ' "$work/relay.log") datagrams dropped" >> "$target.relay.log"
+  echo quit >&3; wait "$relay" 2>/dev/null   # quit, not kill: the relay then writes out its log
+  grep -v '^[0-9.]* drop' "$work/relay.log" > "$target.relay.txt" || true   # the marks, not each drop
+  echo "relay: $(grep -c ' drop ' "$work/relay.log") datagrams dropped" >> "$target.relay.txt"
 fi
 exit 0
 NS
-echo "recorded $out/$name.tlog ($(stat -c %s "$out/$name.tlog") bytes), $name.out, $name.faults.log"
+echo "recorded $out/$name.tlog ($(stat -c %s "$out/$name.tlog") bytes), $name.out, $name.faults.txt, $name.sitl.txt"
 tail -3 "$out/$name.out"
