@@ -23,7 +23,8 @@ from pymavlink import mavutil  # noqa: E402
 
 SEVERITY = ["EMERGENCY", "ALERT", "CRITICAL", "ERROR", "WARNING", "NOTICE", "INFO", "DEBUG"]
 LANDED = ["UNDEFINED", "ON_GROUND", "IN_AIR", "TAKEOFF", "LANDING"]
-REPORTS = re.compile(r"onError|taken over|back in AUTO|no progress|stalled|contact|lost|silent|fault survey:")
+REPORTS = re.compile(r"onError|taken over|back in AUTO|no progress|stalled|no contact|contact again|lost|is back|fault survey:")
+STATUS = re.compile(r"\] vehicle \d+: ([A-Z_]+|unknown), (armed|disarmed)|\] vehicle \d+: LOST, ")   # status lines
 VEHICLE_TEXT = re.compile(r"\[(INFO|WARN|WARNING|ERROR)\] vehicle \d+: ")   # the vehicle's own words, relayed
 
 
@@ -126,7 +127,7 @@ def main(name, target=None):
         text = parts[1]
         key = REPORTS.search(text)
         if (w < injected or not key or key.group(0) in seen or "task fault survey" in text
-                or VEHICLE_TEXT.search(text) or text.lstrip().startswith("[") and "] vehicle 1: " in text):
+                or VEHICLE_TEXT.search(text) or STATUS.search(text)):
             continue
         seen.add(key.group(0))
         ref = first if first else (injected, inj_boot, "injection")
