@@ -33,6 +33,8 @@ With --control the relay reads commands on stdin, one a line, and answers each o
   gcs PORT                send the vehicle's datagrams to 127.0.0.1:PORT from now on
   mark TEXT               write "mark TEXT" in the log
   inject HEX              send these bytes (a MAVLink frame) to the vehicle, never dropped
+  outage S                drop every datagram both ways for S seconds from now (a link lost mid-flight),
+                          then the loss probabilities again; logged as "mark outage ..." lines
   stats                   datagrams and drops per direction since the last stats
   quit                    stop
 """
@@ -140,6 +142,7 @@ class Relay:
         self.log = log
         self.start = time.monotonic()
         self.stats = {"up": [0, 0], "down": [0, 0], "ignored": 0}
+        self.outage_until = None   # time.monotonic() until which everything is dropped
 
     def reseed(self, seed):
         self.rng = {"up": random.Random(2 * seed), "down": random.Random(2 * seed + 1)}
@@ -152,6 +155,12 @@ class Relay:
         count = self.stats[direction]
         count[0] += 1
         dropped = self.loss[direction] > 0 and self.rng[direction].random() < self.loss[direction]
+        if self.outage_until is not None:
+            if time.monotonic() < self.outage_until:
+                dropped = True
+            else:
+                self.write("mark outage over")
+                self.outage_until = None
         msgs = [(m, p) for m, p in frames(data)]
         if dropped:
             count[1] += 1
@@ -195,6 +204,10 @@ class Relay:
             self.write("inject up %s" % " | ".join(describe(m, p) for m, p in frames(data)))
             self.vehicle_sock.sendto(data, self.vehicle_addr)
             return "ok inject"
+        if cmd == "outage" and len(args) == 1:
+            self.outage_until = time.monotonic() + float(args[0])
+            self.write("mark outage %g s" % float(args[0]))
+            return "ok outage %g" % float(args[0])
         if cmd == "stats":
             s = self.stats
             answer = "ok up %d %d down %d %d ignored %d" % (s["up"][0], s["up"][1], s["down"][0], s["down"][1], s["ignored"])
