@@ -23,7 +23,7 @@ final class FlightAlarms {
      * rebooted ArduPilot streams nothing until the ground station asks again, 3 s into the silence.
      */
     private static final long DISARM_WAIT_NANOS = 4_000_000_000L;
-    /** For vehicles that send no landed state: this close to home's height, a flying vehicle is down. */
+    /** This close to home's height, a flying vehicle is down, whatever its landed state says. */
     private static final double DOWN_METRES = 0.5;
 
     private final FlightRules rules;
@@ -83,11 +83,12 @@ final class FlightAlarms {
         return Optional.empty();
     }
 
-    /** On the ground by its landed state, or, for a vehicle that sends none, by its height. */
+    /**
+     * On the ground by its landed state, or by its height: a copter with a dead motor lies on the ground
+     * reporting IN_AIR (SITL, copter-fault-motor), and no item but a landing is lower than home plus 2 m.
+     */
     private static boolean down(VehicleState s) {
-        int landed = s.landedState();
-        return landed == MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND
-                || landed == MAV_LANDED_STATE.MAV_LANDED_STATE_UNDEFINED && s.position() != null && s.relativeAlt() < DOWN_METRES;
+        return s.landedState() == MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND || s.position() != null && s.relativeAlt() < DOWN_METRES;
     }
 
     /** Items that start or end on the ground. */
