@@ -15,8 +15,8 @@
 # VEHICLE   copter (default), plane or rover: binary, --model, parameters and script below
 # NAME      recording name (default VEHICLE-fault-SCENARIO)
 #
-# ARDUPILOT (default /work/ardupilot) is an ArduPilot checkout built with ./waf configure --board sitl;
-# this repository builds none. SITL runs at --speedup 5, home 40.444233,-7.375234,820; dolphin starts
+# ARDUPILOT (required) is an ArduPilot checkout built with ./waf configure --board sitl; this
+# repository builds none. SITL runs at --speedup 5, home 40.444233,-7.375234,820; dolphin starts
 # 15 s after SITL and is stopped after 420 s at most; the injector after 460 s at most.
 # Environment: AFTER_SEQ (inject once MISSION_CURRENT seq >= N), HOLD (pause, s), WIND (stall, m/s),
 # OUTAGE (s), STALL_LIMIT (dolphin run --stall-limit for the stall scenario, default 30).
@@ -24,7 +24,7 @@ set -euo pipefail
 [ $# -ge 1 ] || { sed -n '2,22p' "$0"; exit 2; }
 scenario=$1 vehicle=${2:-copter}
 name=${3:-$vehicle-fault-$scenario}
-ap=${ARDUPILOT:-/work/ardupilot}
+ap=${ARDUPILOT:?set ARDUPILOT to an ArduPilot checkout built for SITL}
 repo=$(cd "$(dirname "$0")/.." && pwd)
 out="$repo/src/test/resources/sitl-recordings"
 case $vehicle in

@@ -54,9 +54,11 @@ final class FlightAlarms {
      * One look at the vehicle: the error, or empty while none is due.
      *
      * @param current the item under way
-     * @param paused whether someone else holds the vehicle (a pilot may land it)
+     * @param mayBeDown whether the vehicle may be on the ground: someone else holds it (a pilot may land
+     *        it), or the mission's last landing has begun (ArduCopter restarts its mission on the ground
+     *        before it disarms)
      */
-    Optional<String> judge(VehicleState s, int current, boolean paused, long now) {
+    Optional<String> judge(VehicleState s, int current, boolean mayBeDown, long now) {
         String item = names.item(current);
         if (s.reboots() > rebootsBefore) {
             return Optional.of(String.format(Locale.ROOT, "vehicle %s rebooted during %s: its time since boot went back to"
@@ -75,7 +77,7 @@ final class FlightAlarms {
         }
         airborne |= rules.flies() && (s.landedState() == MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR
                 || s.position() != null && s.relativeAlt() > AIRBORNE_METRES);
-        groundedAt = !paused && airborne && s.armed() && down(s) && !landingOrTakeoff(current) ? first(groundedAt, now) : -1;
+        groundedAt = !mayBeDown && airborne && s.armed() && down(s) && !landingOrTakeoff(current) ? first(groundedAt, now) : -1;
         if (groundedAt >= 0 && now >= groundedAt + VehicleWords.WAIT_NANOS) {
             return Optional.of("vehicle " + vehicle + " is on the ground during " + item + " with items left"
                     + saying(groundedAt, now, s));

@@ -119,6 +119,11 @@ final class MissionEnd {
         return Verdict.RUNNING;
     }
 
+    /** Whether the landing that ends the mission has begun: its item has been current. */
+    boolean landing() {
+        return landingSeen;
+    }
+
     /** The item under way: the vehicle's current item while it reports one, else the one after the last reached. */
     int current(VehicleState s, int reached) {
         int seq = s.missionSeq() > 0 ? s.missionSeq() : reached + 1;

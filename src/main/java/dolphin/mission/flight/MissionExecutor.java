@@ -631,7 +631,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         /** Someone else's hand, the faults, and a stall: an error, or a line for a takeover, a hand-back or a stall's warning. */
         private CompletionState watch(VehicleState s, int current, boolean auto, long now) {
             Takeovers.Look look = takeovers.look(s, auto, current, now);
-            var alarm = alarms.judge(s, current, takeovers.paused(), now);
+            var alarm = alarms.judge(s, current, takeovers.paused() || plan.end().landing(), now);
             if (alarm.isPresent()) {
                 return fail(alarm.get());
             }

@@ -146,12 +146,14 @@ class RefusedItemSpec extends MissionFlights {
         launch(hop())
         stepUntil(FlightState.RUNNING)
         vehicle.landedState(com.MAVLink.enums.MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR)
+        vehicle.at(0, 20)
         vehicle.next(2)
         runTo(10)
         vehicle.next(3)
+        vehicle.at(0, 0)
         runTo(20)
 
-        when: 'MISSION_CURRENT back on the take-off before the disarmed HEARTBEAT, as SITL sends them'
+        when: 'MISSION_CURRENT back on the take-off, on the ground but still armed, before the disarmed HEARTBEAT, as SITL sends them'
         vehicle.missionCurrent(1)
         runTo(21)
         vehicle.landAndDisarm()
