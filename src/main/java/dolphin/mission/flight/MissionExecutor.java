@@ -644,7 +644,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 case HANDED_BACK -> report(EventKind.HANDED_BACK, look.text() + ", mission " + mission.getId() + " goes on");
                 default -> { }
             }
-            StallWatch.Stall stall = stalls.look(s, current, auto && !takeovers.paused(), now);
+            StallWatch.Notice stall = stalls.look(s, current, auto && !takeovers.paused(), now);
             if (stall.error() != null) {
                 return fail(stall.error());
             }

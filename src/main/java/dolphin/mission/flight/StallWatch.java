@@ -22,8 +22,8 @@ import java.util.Set;
 final class StallWatch {
 
     /** What one look found: a warning to report once (a vehicle event, without the vehicle's name), an error, or neither. */
-    record Stall(String warning, String error) {
-        static final Stall NONE = new Stall(null, null);
+    record Notice(String warning, String error) {
+        static final Notice NONE = new Notice(null, null);
     }
 
     /** How much closer the vehicle must get for it to count as progress: more than a hover's wander. */
@@ -63,27 +63,27 @@ final class StallWatch {
      * @param current the item under way
      * @param watching whether the vehicle flies its mission itself (in AUTO, not paused): the clock runs only then
      */
-    Stall look(VehicleState s, int current, boolean watching, long now) {
+    Notice look(VehicleState s, int current, boolean watching, long now) {
         double away = watching && now - s.positionNanos() <= FRESH_NANOS ? distance(s, names.get(current)) : Double.NaN;
         if (current != item || Double.isNaN(away) || away < best - PROGRESS_METRES) {
             item = current;
             best = Double.isNaN(away) ? Double.MAX_VALUE : away;
             since = now;
             warned = false;
-            return Stall.NONE;
+            return Notice.NONE;
         }
         long still = now - since;
         String where = String.format(Locale.ROOT, "%.0f m from", away);
         if (still > limit.toNanos()) {
-            return new Stall(null, "vehicle " + vehicle + " stalled: no progress toward " + names.item(current) + " for "
+            return new Notice(null, "vehicle " + vehicle + " stalled: no progress toward " + names.item(current) + " for "
                     + limit.toSeconds() + " s, " + where + " it (the stall limit)" + ItemNames.where(s));
         }
         if (still > warning.toNanos() && !warned) {
             warned = true;
-            return new Stall("no progress toward " + names.item(current) + ": " + where + " it, no closer for "
+            return new Notice("no progress toward " + names.item(current) + ": " + where + " it, no closer for "
                     + warning.toSeconds() + " s", null);
         }
-        return Stall.NONE;
+        return Notice.NONE;
     }
 
     /**

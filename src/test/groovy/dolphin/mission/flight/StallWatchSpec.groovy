@@ -52,8 +52,8 @@ class StallWatchSpec extends Specification {
         def silent = at(VehicleFamily.SUB, 300, -5, 0)
 
         expect:
-        (0..120).every { t -> w.look(silent, 1, true, t * S) == StallWatch.Stall.NONE }
-        (121..140).every { t -> w.look(fresh(silent, t), 1, true, t * S) == StallWatch.Stall.NONE }
+        (0..120).every { t -> w.look(silent, 1, true, t * S) == StallWatch.Notice.NONE }
+        (121..140).every { t -> w.look(fresh(silent, t), 1, true, t * S) == StallWatch.Notice.NONE }
         w.look(fresh(silent, 142), 1, true, 142 * S).warning != null
     }
 
@@ -63,11 +63,11 @@ class StallWatchSpec extends Specification {
         def s = at(VehicleFamily.COPTER, 300, 30)
 
         expect:
-        w.look(fresh(s, 0), 1, true, 0) == StallWatch.Stall.NONE
-        w.look(fresh(s, 20), 1, true, 20 * S) == StallWatch.Stall.NONE
+        w.look(fresh(s, 0), 1, true, 0) == StallWatch.Notice.NONE
+        w.look(fresh(s, 20), 1, true, 20 * S) == StallWatch.Notice.NONE
         w.look(fresh(s, 21), 1, true, 21 * S).warning == 'no progress toward item 1 of 1 (NAV_WAYPOINT): 200 m from it, no closer for 20 s'
-        w.look(fresh(s, 22), 1, true, 22 * S) == StallWatch.Stall.NONE
-        w.look(fresh(s, 60), 1, true, 60 * S) == StallWatch.Stall.NONE
+        w.look(fresh(s, 22), 1, true, 22 * S) == StallWatch.Notice.NONE
+        w.look(fresh(s, 60), 1, true, 60 * S) == StallWatch.Notice.NONE
         w.look(fresh(s, 61), 1, true, 61 * S).error == 'vehicle 1 stalled: no progress toward item 1 of 1 (NAV_WAYPOINT) for 60 s, 200 m from it' +
                 ' (the stall limit): armed, AUTO, landed state UNDEFINED, 30.0 m above home'
     }
@@ -78,7 +78,7 @@ class StallWatchSpec extends Specification {
         def w = watch(family, item)
 
         expect:
-        (0..20).every { t -> w.look(at(family, north, up, t), 1, true, t * S) == StallWatch.Stall.NONE }
+        (0..20).every { t -> w.look(at(family, north, up, t), 1, true, t * S) == StallWatch.Notice.NONE }
         w.look(at(family, north, up, 21), 1, true, 21 * S).warning.startsWith('no progress toward item 1 of 1 (NAV_WAYPOINT)')
 
         where:
@@ -92,7 +92,7 @@ class StallWatchSpec extends Specification {
         def w = watch(VehicleFamily.COPTER, waypoint(5000, 30))
 
         expect: '5 km at 5 m/s: 1000 s without a warning'
-        (0..1000).every { t -> w.look(at(VehicleFamily.COPTER, t * 5, 30, t), 1, true, t * S) == StallWatch.Stall.NONE }
+        (0..1000).every { t -> w.look(at(VehicleFamily.COPTER, t * 5, 30, t), 1, true, t * S) == StallWatch.Notice.NONE }
 
         and: 'wandering half a metre back and forth is no progress'
         def stuck = watch(VehicleFamily.COPTER, waypoint(500, 30))
@@ -106,7 +106,7 @@ class StallWatchSpec extends Specification {
         def w = watch(family, item)
 
         expect: 'ten minutes at the same place'
-        (0..600).every { t -> w.look(at(family, north, up, t), 1, true, t * S) == StallWatch.Stall.NONE }
+        (0..600).every { t -> w.look(at(family, north, up, t), 1, true, t * S) == StallWatch.Notice.NONE }
 
         where:
         what                                                      | family               | item                                                                                                    | north | up
@@ -125,7 +125,7 @@ class StallWatchSpec extends Specification {
         def w = watch(VehicleFamily.PLANE, MissionItem.at(1, MAV_CMD.MAV_CMD_NAV_LOITER_TO_ALT, HOME.displace(1000, 0, -400), 0, 0, 0, 0))
 
         expect:
-        (0..150).every { t -> w.look(at(VehicleFamily.PLANE, 1060, 100 + 2 * t, t), 1, true, t * S) == StallWatch.Stall.NONE }
+        (0..150).every { t -> w.look(at(VehicleFamily.PLANE, 1060, 100 + 2 * t, t), 1, true, t * S) == StallWatch.Notice.NONE }
     }
 
     def "a sub's slow dive is progress: 0.1 m/s toward a depth of 30 m"() {
@@ -134,7 +134,7 @@ class StallWatchSpec extends Specification {
                 0, 0, 0, 0, MissionItem.degE7(HOME.latitudeDegrees()), MissionItem.degE7(HOME.longitudeDegrees()), -30, true))
 
         expect:
-        (0..290).every { t -> w.look(at(VehicleFamily.SUB, 0, -0.1 * t, t), 1, true, t * S) == StallWatch.Stall.NONE }
+        (0..290).every { t -> w.look(at(VehicleFamily.SUB, 0, -0.1 * t, t), 1, true, t * S) == StallWatch.Notice.NONE }
     }
 
     def "a copter's take-off is judged by its height: climbing is progress, stuck on the ground is a stall"() {
@@ -144,8 +144,8 @@ class StallWatchSpec extends Specification {
         def stuck = watch(VehicleFamily.COPTER, takeoff)
 
         expect:
-        (0..25).every { t -> climbing.look(at(VehicleFamily.COPTER, 0, t, t), 1, true, t * S) == StallWatch.Stall.NONE }
-        (0..20).every { t -> stuck.look(at(VehicleFamily.COPTER, 0, 0, t), 1, true, t * S) == StallWatch.Stall.NONE }
+        (0..25).every { t -> climbing.look(at(VehicleFamily.COPTER, 0, t, t), 1, true, t * S) == StallWatch.Notice.NONE }
+        (0..20).every { t -> stuck.look(at(VehicleFamily.COPTER, 0, 0, t), 1, true, t * S) == StallWatch.Notice.NONE }
         stuck.look(at(VehicleFamily.COPTER, 0, 0, 21), 1, true, 21 * S).warning.contains('30 m from it')
     }
 
@@ -155,8 +155,8 @@ class StallWatchSpec extends Specification {
         def s = at(VehicleFamily.COPTER, 300, 30)
 
         expect:
-        (0..100).every { t -> w.look(fresh(s, t), 1, false, t * S) == StallWatch.Stall.NONE }
-        (101..120).every { t -> w.look(fresh(s, t), 1, true, t * S) == StallWatch.Stall.NONE }
+        (0..100).every { t -> w.look(fresh(s, t), 1, false, t * S) == StallWatch.Notice.NONE }
+        (101..120).every { t -> w.look(fresh(s, t), 1, true, t * S) == StallWatch.Notice.NONE }
         w.look(fresh(s, 122), 1, true, 122 * S).warning != null
     }
 
@@ -166,9 +166,9 @@ class StallWatchSpec extends Specification {
         def s = at(VehicleFamily.COPTER, 300, 30)
 
         expect:
-        (0..19).every { t -> w.look(fresh(s, t), 1, true, t * S) == StallWatch.Stall.NONE }
-        w.look(fresh(s, 20), 0, true, 20 * S) == StallWatch.Stall.NONE
-        w.look(VehicleState.initial(VehicleFamily.COPTER), 1, true, 30 * S) == StallWatch.Stall.NONE
-        (31..50).every { t -> w.look(fresh(s, t), 1, true, t * S) == StallWatch.Stall.NONE }
+        (0..19).every { t -> w.look(fresh(s, t), 1, true, t * S) == StallWatch.Notice.NONE }
+        w.look(fresh(s, 20), 0, true, 20 * S) == StallWatch.Notice.NONE
+        w.look(VehicleState.initial(VehicleFamily.COPTER), 1, true, 30 * S) == StallWatch.Notice.NONE
+        (31..50).every { t -> w.look(fresh(s, t), 1, true, t * S) == StallWatch.Notice.NONE }
     }
 }
