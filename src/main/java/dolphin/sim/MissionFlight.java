@@ -89,6 +89,9 @@ final class MissionFlight {
     private double exitSpeed;
     // RTL and LAND modes
     private Manoeuvre modeManoeuvre;
+    // a pause before the mode's manoeuvre moves (ArduCopter's land_with_pause), holding where it began
+    private double modePause;
+    private Manoeuvre pauseHold;
     // a CONDITION_DELAY running beside the nav item
     private int conditionSeq = -1;
     private double conditionLeft;
@@ -162,6 +165,7 @@ final class MissionFlight {
             return;
         }
         modeManoeuvre = null;
+        modePause = 0;
         dropActive();
         groundSeconds = 0;
         if (from == firmware.autoMode()) {
@@ -362,6 +366,7 @@ final class MissionFlight {
         cursor.cleared();
         dropActive();
         modeManoeuvre = null;
+        modePause = 0;
         conditionSeq = -1;
         autoArmed = false;
         restartDue = false;
@@ -394,12 +399,24 @@ final class MissionFlight {
         }
     }
 
-    /** RTL or LAND mode: a manoeuvre, and what the vehicle does once it is over. */
+    /**
+     * The mode just set holds where the vehicle is for {@code seconds} before its manoeuvre moves it
+     * (ArduCopter's set_mode_land_with_pause); meanwhile its landed state is the manoeuvre's (LANDING).
+     */
+    void pauseMode(double seconds) {
+        modePause = seconds;
+        pauseHold = firmware.holdAt(body.craft(), body.craft().position());
+    }
+
+    /** RTL or LAND mode: a manoeuvre, after the mode's pause if it has one, and what the vehicle does once it is over. */
     private void modeStep(double dt, Supplier<Manoeuvre> make, Runnable done) {
         if (modeManoeuvre == null) {
             modeManoeuvre = make.get();
         }
-        if (modeManoeuvre.step(dt)) {
+        if (modePause > 0) {
+            modePause -= dt;
+            pauseHold.step(dt);
+        } else if (modeManoeuvre.step(dt)) {
             done.run();
         }
     }

@@ -34,6 +34,7 @@ import dolphin.mission.model.MissionType;
 import dolphin.mission.model.RallyPoints;
 import java.util.HashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
@@ -458,6 +459,11 @@ public final class SimVehicle {
         if (armed) {
             outbox.text(MAV_SEVERITY.MAV_SEVERITY_INFO, firmware.disarmedText());
         }
+        // disarmed, EKF3 takes lane 0 again, and AP_AHRS says so (copter-fault-gps: after "Disarming motors")
+        if (navigation.primaryLane() != 0) {
+            navigation.primaryLane(0);
+            outbox.text(FaultTable.PRIMARY_CHANGED_SEVERITY, String.format(Locale.ROOT, FaultTable.PRIMARY_CHANGED, 0));
+        }
         armed = false;
         craft.settle();
         flight.disarmed();
@@ -593,8 +599,8 @@ public final class SimVehicle {
      * Reboots at clock time {@code now}, as ArduPilot after MAV_CMD_PREFLIGHT_REBOOT_SHUTDOWN: time
      * since boot from 0, its warm-up again, disarmed (motors stopped: a vehicle in the air comes
      * down, see {@link Reboot}) and in its boot mode, its requested streams forgotten, its mission
-     * stopped with no current item, no failsafe on. What it stores (mission, fence, rally points),
-     * its home, its battery and its GPS receiver's state stay.
+     * stopped with no current item, no failsafe on, EKF3 on lane 0. What it stores
+     * (mission, fence, rally points), its home, its battery and its GPS receiver's state stay.
      */
     private void reboot(long now) {
         boot = now;
@@ -605,6 +611,7 @@ public final class SimVehicle {
         nextHeartbeat = now;
         flight.rebooted();
         navigation.failsafe(false);
+        navigation.primaryLane(0);
         resetStreams();
         defaultStreams(now);
     }
@@ -707,6 +714,11 @@ public final class SimVehicle {
                 announceMode();
             }
             return set;
+        }
+
+        @Override
+        public void pauseFlight(double seconds) {
+            flight.pauseMode(seconds);
         }
 
         @Override
