@@ -151,16 +151,27 @@ final class FaultTable {
     static final EkfFailsafe ROVER_EKF = new EkfFailsafe("EKF variance", false, m -> !ROVER_POSITIONLESS_MODES.contains(m),
             ROVER_MODE.ROVER_MODE_HOLD, "EKF failsafe", Optional.empty(), 0, false, AIDING_TIMEOUT + SMART_RTL_TIMEOUT);
 
-    // ---- Each family's row: its motors and what losing one does, its EKF failsafe, a pilot's takeover mode
+    // ---- ArduRover's internal error as its mission starts
+
+    /**
+     * ArduRover SITL flags AP_InternalError invalid_arg_or_result ("SCurve::calculate_track created zero
+     * length path" on its console) when its mission starts a nav item armed, and says so once (CRITICAL):
+     * recorded in rover-square, boat-square and both rover-fault recordings. From then on its heartbeat
+     * says MAV_STATE_CRITICAL. Not a fault of the vehicle's: it drives on (docs/failures.md).
+     */
+    static final String ROVER_INTERNAL_ERROR = "Internal Errors 0x20000000";
+
+    // ---- Each family's row: its motors and what losing one does, its EKF failsafe, a pilot's takeover mode, its internal error
 
     static final Failures COPTER = new Failures(COPTER_MOTORS, Optional.of(ThrustLoss::new), Optional.of(COPTER_EKF),
-            COPTER_MODE.COPTER_MODE_LOITER);
+            COPTER_MODE.COPTER_MODE_LOITER, Optional.empty());
     /** One engine; ArduPlane's EKF failsafe acts only in a quadplane's VTOL modes (ArduPlane/ekf_check.cpp): not simulated. */
     static final Failures PLANE = new Failures(1, Optional.of(motor -> new EngineFailure()), Optional.empty(),
-            PLANE_MODE.PLANE_MODE_LOITER);
+            PLANE_MODE.PLANE_MODE_LOITER, Optional.empty());
     /** A rover's motors are not simulated apart: a stall stands for a rover that cannot go on. */
-    static final Failures ROVER = new Failures(0, Optional.empty(), Optional.of(ROVER_EKF), ROVER_MODE.ROVER_MODE_HOLD);
-    static final Failures SUB = new Failures(0, Optional.empty(), Optional.empty(), SUB_MODE.SUB_MODE_POSHOLD);
+    static final Failures ROVER = new Failures(0, Optional.empty(), Optional.of(ROVER_EKF), ROVER_MODE.ROVER_MODE_HOLD,
+            Optional.of(ROVER_INTERNAL_ERROR));
+    static final Failures SUB = new Failures(0, Optional.empty(), Optional.empty(), SUB_MODE.SUB_MODE_POSHOLD, Optional.empty());
 
     /** The EKF3 cores' "stopped aiding" texts, the primary lane's first. */
     static List<String> stoppedAiding(int primary) {

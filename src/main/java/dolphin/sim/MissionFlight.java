@@ -69,6 +69,9 @@ final class MissionFlight {
         void flush();
 
         void send(MAVLinkMessage m);
+
+        /** An internal error of the firmware's, reported once a boot (AP_InternalError). */
+        void internalError(String text);
     }
 
     private enum Phase { APPROACH, HOLD }
@@ -609,8 +612,12 @@ final class MissionFlight {
         }
     }
 
+    /** "Mission: 3 WP"; a nav item started armed may make the firmware report its internal error (ArduRover's). */
     private void announceStart(MissionItem item) {
         body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Mission: " + item.seq() + " " + CommandNames.of(item.command()));
+        if (body.armed() && nav(item.command())) {
+            firmware.failures().internalError().ifPresent(body::internalError);
+        }
     }
 
     /**

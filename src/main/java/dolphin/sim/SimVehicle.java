@@ -90,6 +90,8 @@ public final class SimVehicle {
     private long firstArmed = -1;
     /** The link cut by an {@link Outage}. */
     private boolean outage;
+    /** An internal error reported since boot: ArduPilot's heartbeat then says MAV_STATE_CRITICAL. */
+    private boolean internalErrors;
 
     SimVehicle(int sysid, VehicleKind kind, Position home, SimOptions options, long now) {
         this(sysid, kind, home, options, now, SimEquipment.NONE);
@@ -599,7 +601,7 @@ public final class SimVehicle {
      * Reboots at clock time {@code now}, as ArduPilot after MAV_CMD_PREFLIGHT_REBOOT_SHUTDOWN: time
      * since boot from 0, its warm-up again, disarmed (motors stopped: a vehicle in the air comes
      * down, see {@link Reboot}) and in its boot mode, its requested streams forgotten, its mission
-     * stopped with no current item, no failsafe on, EKF3 on lane 0. What it stores
+     * stopped with no current item, no failsafe or internal error on, EKF3 on lane 0. What it stores
      * (mission, fence, rally points), its home, its battery and its GPS receiver's state stay.
      */
     private void reboot(long now) {
@@ -612,6 +614,7 @@ public final class SimVehicle {
         flight.rebooted();
         navigation.failsafe(false);
         navigation.primaryLane(0);
+        internalErrors = false;
         resetStreams();
         defaultStreams(now);
     }
@@ -693,6 +696,14 @@ public final class SimVehicle {
         public void send(MAVLinkMessage m) {
             SimVehicle.this.send(m);
         }
+
+        @Override
+        public void internalError(String text) {
+            if (!internalErrors) {
+                internalErrors = true;
+                outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, text);
+            }
+        }
     }
 
     /** The faults' view of this vehicle: the flight's, and more. */
@@ -743,7 +754,8 @@ public final class SimVehicle {
         hb.autopilot = MAV_AUTOPILOT.MAV_AUTOPILOT_ARDUPILOTMEGA;
         hb.base_mode = (short) (MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED | (armed ? MAV_MODE_FLAG.MAV_MODE_FLAG_SAFETY_ARMED : 0));
         hb.custom_mode = mode;
-        hb.system_status = (short) (navigation.failsafe() ? MAV_STATE.MAV_STATE_CRITICAL : firmware.systemStatus(armed, craft.onGround()));
+        hb.system_status = (short) (navigation.failsafe() || internalErrors ? MAV_STATE.MAV_STATE_CRITICAL
+                : firmware.systemStatus(armed, craft.onGround()));
         hb.mavlink_version = 3;
         return hb;
     }

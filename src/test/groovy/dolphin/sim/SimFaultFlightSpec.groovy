@@ -251,12 +251,52 @@ class SimFaultFlightSpec extends Specification {
         Math.abs(sinceArming(variance) - 18) <= 0.1
 
         and: 'EKF3 stops aiding 15 s on, lane 0 first; SmartRTL gives up 15 s after that'
-        texts(from)*.getAt(2) == ['Mission: 1 WP', 'EKF variance', 'EKF failsafe', 'EKF3 IMU0 stopped aiding', 'EKF3 IMU1 stopped aiding',
+        texts(from)*.getAt(2) == ['Mission: 1 WP', 'Internal Errors 0x20000000', 'EKF variance', 'EKF failsafe', 'EKF3 IMU0 stopped aiding', 'EKF3 IMU1 stopped aiding',
                                   'SmartRTL deactivated: bad position']
         Math.abs(sinceArming(first(from, text('SmartRTL deactivated: bad position'))) - 40) <= 0.1
         d.vehicle.armed()
         horizontal(d.vehicle.position(), at) < 0.01
         d.since(from, msg_heartbeat).last().system_status == MAV_STATE.MAV_STATE_CRITICAL
+    }
+
+    def "a #kind reports ArduRover's internal error (CRITICAL) once as its mission first starts armed, and its heartbeat is CRITICAL from then on; a copter does not"() {
+        given:
+        vehicle(kind, [])
+        assert d.upload([HOME_ITEM, rel(1, MAV_CMD.MAV_CMD_NAV_TAKEOFF, 0, 0, 30), rel(2, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 100, 0, 30)]) ==
+                MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
+
+        when: 'disarmed, the mission started from its first item as dolphin starts it (DO_SET_MISSION_CURRENT, reset)'
+        d.command(MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT, [1, 1])
+        d.run(2)
+
+        then:
+        !texts(0).any { it[2].startsWith('Internal Errors') }
+        d.since(0, msg_heartbeat).every { it.system_status != MAV_STATE.MAV_STATE_CRITICAL }
+
+        when: 'armed, started again, in AUTO, then HOLD and AUTO again'
+        int from = d.mark()
+        d.setMode(guided)
+        assert d.arm().result == MAV_RESULT.MAV_RESULT_ACCEPTED
+        d.command(MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT, [1, 1])
+        d.setMode(auto)
+        d.command(MAV_CMD.MAV_CMD_MISSION_START)
+        d.run(5)
+        d.setMode(hold)
+        d.setMode(auto)
+        d.run(5)
+        def said = texts(from)*.getAt(2)
+
+        then: 'the text right after the start of the first item, once'
+        said.findAll { it.startsWith('Internal Errors') } == errors
+        !errors || said[said.indexOf('Internal Errors 0x20000000') - 1] == 'Mission: 1 Takeoff'
+        texts(from).findAll { it[2].startsWith('Internal Errors') }.every { it[1] == MAV_SEVERITY.MAV_SEVERITY_CRITICAL }
+        (d.since(from, msg_heartbeat).last().system_status == MAV_STATE.MAV_STATE_CRITICAL) == !errors.empty
+
+        where:
+        kind               | guided                           | auto                         | hold                           || errors
+        VehicleKind.ROVER  | ROVER_MODE.ROVER_MODE_MANUAL     | ROVER_MODE.ROVER_MODE_AUTO   | ROVER_MODE.ROVER_MODE_HOLD     || ['Internal Errors 0x20000000']
+        VehicleKind.BOAT   | ROVER_MODE.ROVER_MODE_MANUAL     | ROVER_MODE.ROVER_MODE_AUTO   | ROVER_MODE.ROVER_MODE_HOLD     || ['Internal Errors 0x20000000']
+        VehicleKind.COPTER | COPTER_MODE.COPTER_MODE_GUIDED   | COPTER_MODE.COPTER_MODE_AUTO | COPTER_MODE.COPTER_MODE_LOITER || []
     }
 
     def "a pilot takes a copter over mid-survey: LOITER, held there 15 s, then AUTO at the same item; the survey ends as it would have"() {
