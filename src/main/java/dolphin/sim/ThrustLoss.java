@@ -17,8 +17,9 @@ final class ThrustLoss extends PowerLoss {
     private final int named;
     private final Fall fall = new Fall();
     private double untilText = FaultTable.THRUST_LOSS_FIRST;
-    /** Seconds since the first hit; negative before it. */
+    /** Seconds since the first hit after a fall; negative before it (a motor stopped on the ground makes no hit). */
     private double sinceHit = -1;
+    private boolean fell;
 
     /** Motor {@code motor} (from 1) stops. */
     ThrustLoss(int motor) {
@@ -27,6 +28,7 @@ final class ThrustLoss extends PowerLoss {
 
     @Override
     void descend(Craft craft, double dt) {
+        fell = true;
         fall.step(craft, dt);
     }
 
@@ -48,6 +50,9 @@ final class ThrustLoss extends PowerLoss {
 
     /** EKF3's lane switches after the hit: to lane 1 at once, back to lane 0 a moment later; armed only, as its core selection. */
     private void shaken(FaultHost vehicle, double dt) {
+        if (!fell) {
+            return;
+        }
         boolean first = sinceHit < 0;
         double before = sinceHit;
         sinceHit = first ? 0 : sinceHit + dt;

@@ -156,6 +156,19 @@ class SimFaultFlightSpec extends Specification {
         d.vehicle.landedState() == MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND
     }
 
+    def "a copter whose motor stops before it lifts off stays on the ground: no impact, so no lane switch, and landed, so no thrust loss"() {
+        given:
+        int from = copterSurvey(['motor@0'], 0)
+
+        when:
+        runToAfterArming(30)
+
+        then:
+        heightAboveHome() == 0
+        d.vehicle.armed()
+        texts(from).empty
+    }
+
     def "a copter that loses its GPS mid-survey: NO_GPS after 4 s, the EKF's position gone after 7, then a lane switch, LAND, EKF variance and the failsafe's text; it lands and disarms"() {
         given:
         int from = copterSurvey(['gps@30'], 30)
