@@ -12,11 +12,13 @@ import java.util.function.IntPredicate;
  * @param checksDisarmed whether the check runs while disarmed too (it acts only armed)
  * @param needsPosition the modes it acts in: those whose requires_position() is true
  * @param mode the mode it switches to
- * @param actionText said after the switch; {@code %s} is the name of the mode it is in then
+ * @param actionText said after the switch
  * @param noActionText said, armed, in a mode it does not act in; empty: nothing
  * @param pauseSeconds how long it holds where it is before it moves in {@code mode} (ArduCopter's
  *        set_mode_land_with_pause: LAND_WITH_DELAY_MS)
+ * @param laneSwitch whether EKF3 switches to its second lane just before, armed (as the copter's did)
+ * @param smartRtlOff when, after the GPS fell silent, AP_SmartRTL gives up for want of a position, armed
  */
 record EkfFailsafe(String varianceText, boolean checksDisarmed, IntPredicate needsPosition, int mode, String actionText,
-                   Optional<String> noActionText, double pauseSeconds) {
+                   Optional<String> noActionText, double pauseSeconds, boolean laneSwitch, double smartRtlOff) {
 }

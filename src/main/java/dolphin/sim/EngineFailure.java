@@ -1,10 +1,11 @@
 package dolphin.sim;
 
 /**
- * A plane's engine stops: it glides on along its heading at its speed, sinking at its sink rate, in
- * whatever mode it is, until it hits the ground; {@link FaultTable#PLANE_LANDED_AFTER} seconds later
- * ArduPlane no longer thinks it flies (EXTENDED_SYS_STATE ON_GROUND). ArduPlane says nothing of it;
- * it stays armed, in its mode, at its mission item.
+ * A plane's engine stops: it glides on along its heading at its speed, sinking at
+ * {@link FaultTable#PLANE_GLIDE_SINK}, in whatever mode it is, until it hits the ground;
+ * {@link FaultTable#PLANE_LANDED_AFTER} seconds later ArduPlane no longer thinks it flies
+ * (EXTENDED_SYS_STATE ON_GROUND). ArduPlane says nothing of it; it stays armed, in its mode, at its
+ * mission item.
  */
 final class EngineFailure extends PowerLoss {
 
@@ -12,7 +13,7 @@ final class EngineFailure extends PowerLoss {
 
     @Override
     void descend(Craft craft, double dt) {
-        craft.glide(craft.performance().sink(), dt);
+        craft.glide(FaultTable.PLANE_GLIDE_SINK, dt);
     }
 
     @Override

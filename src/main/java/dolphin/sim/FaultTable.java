@@ -7,51 +7,85 @@ import com.MAVLink.enums.PLANE_MODE;
 import com.MAVLink.enums.ROVER_MODE;
 import com.MAVLink.enums.SUB_MODE;
 import java.util.List;
+import java.util.Locale;
+import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import java.util.stream.IntStream;
 
 /**
  * Every text, severity and time of the simulated faults, and each family's row, in one place, with
  * the ArduPilot source each follows (V4.8.0-dev, git 64a9c787, the version of the SITL recordings).
- * When recordings of the faults on SITL say otherwise, this is what to change (docs/mavlink.md,
- * "Faults"). Times are seconds of clock time from the moment the fault is injected, unless said.
+ * Where the recordings of the faults injected into SITL (src/test/resources/sitl-recordings, the
+ * *-fault-* ones, checked by FaultRecordingConformanceSpec) say otherwise than the source or than an
+ * earlier guess, the recordings win; each such value says so. Times are seconds of clock time from the
+ * moment the fault is injected, unless said; the recordings' are the vehicle's own (time_boot_ms).
  */
 final class FaultTable {
 
     private FaultTable() {
     }
 
+    // ---- EKF3's lanes (libraries/AP_NavEKF3/AP_NavEKF3.cpp, AP_AHRS): SITL runs two cores, EK3_IMU_MASK 3
+
+    /** NavEKF3::UpdateFilter's core selection, armed only: MAV_SEVERITY_CRITICAL. */
+    static final String LANE_SWITCH = "EKF3 lane switch %d";
+    static final int LANE_SWITCH_SEVERITY = MAV_SEVERITY.MAV_SEVERITY_CRITICAL;
+    /** AP_AHRS on each change of the EKF's primary lane, the switches' and the disarm's (EKF3 forces lane 0 disarmed). */
+    static final String PRIMARY_CHANGED = "EKF primary changed:%d";
+    static final int PRIMARY_CHANGED_SEVERITY = MAV_SEVERITY.MAV_SEVERITY_WARNING;
+    static final int EKF_CORES = 2;
+
     // ---- A copter's lost motor: ArduCopter/crash_check.cpp (Copter::thrust_loss_check), SITL's physics
 
-    /** MAV_SEVERITY_EMERGENCY, with the lost motor's number (AP_MotorsMatrix's lost motor index + 1). */
+    /** MAV_SEVERITY_EMERGENCY, with the motor ArduCopter takes for lost (AP_MotorsMatrix's lost motor index + 1). */
     static final String THRUST_LOSS = "Potential Thrust Loss (%d)";
     static final int THRUST_LOSS_SEVERITY = MAV_SEVERITY.MAV_SEVERITY_EMERGENCY;
     /**
-     * The first one, after the fall: the check needs THRUST_LOSS_CHECK_TRIGGER_SEC of descent at full
-     * throttle with level attitude, which the tumbling fall never has but the copter standing level on
-     * the ground (SITL's ground contact levels it) does, armed, not landed, still trying to climb.
+     * The motor the text names when motor N of SITL's + quad stops. Recorded: motor 1 failed, "(2)" (in
+     * each run that the README quotes): ArduCopter took the opposite motor for the lost one
+     * (AP_MotorsMatrix's + frame: 1 right, 2 left, 3 front, 4 back); the other motors by the same rule,
+     * not recorded.
      */
-    static final double THRUST_LOSS_FIRST = 1;
+    static final Map<Integer, Integer> THRUST_LOSS_NAMED = Map.of(1, 2, 2, 1, 3, 4, 4, 3);
     /**
-     * Then again each time the motors library ends the thrust boost the text turned on and the check
-     * has run its second again: every 2 s in SITL, as long as it stays armed and not landed.
+     * The first one, after the fall: the check needs THRUST_LOSS_CHECK_TRIGGER_SEC of descent at full
+     * throttle with level attitude, which the copter hopping on the ground at full throttle has, armed,
+     * never landed. Recorded: 4 s after the hit in the kept run, 2.5 and 12.75 s in two others.
      */
-    static final double THRUST_LOSS_REPEAT = 2;
+    static final double THRUST_LOSS_FIRST = 4;
+    /** Then again, as long as it stays armed and not landed: recorded every 7 to 16 s, 11 on average. */
+    static final double THRUST_LOSS_REPEAT = 11;
     /** SITL's copter frame (+) has 4 motors. */
     static final int COPTER_MOTORS = 4;
-    /** It falls at up to g (a quad without one motor cannot hold its attitude, so it tumbles)... */
-    static final double FALL_ACCEL = 9.81;
-    /** ...to the speed SITL's copter hit the ground at mid-survey, "SIM Hit ground at 13.8 m/s". */
-    static final double FALL_SPEED = 13.8;
+    /**
+     * It falls (a quad without one motor cannot hold its attitude, so it tumbles) to the speed SITL's
+     * copter hit the ground at from 30 m, "SIM Hit ground at 14.59516 m/s", 3.0 s after the motor
+     * stopped: less than g's 2.5 s for SITL's drag, so an acceleration that makes those 3.0 s.
+     */
+    static final double FALL_ACCEL = 7.7;
+    static final double FALL_SPEED = 14.6;
+    /**
+     * The hit makes EKF3 switch to lane 1 (CRITICAL, and "EKF primary changed:1") and, this much later,
+     * back to lane 0. Recorded in two of three runs, 3.0 and 3.25 s after the injection; the third said
+     * neither (its thrust loss came first, 15.75 s after the injection).
+     */
+    static final double LANE_SWITCH_BACK = 0.25;
 
-    // ---- A plane's engine failure: ArduPlane/is_flying.cpp
+    // ---- A plane's engine failure: ArduPlane/is_flying.cpp, SITL's physics
 
     /**
-     * It glides down at its sink rate and, on the ground, counts as not flying (ON_GROUND, STANDBY)
-     * once is_flying's probability has fallen below 0.1: 15 of its 5 Hz updates at 0.85 each. No text:
-     * CRASH_DETECT is 0 by default, so crash_detection_update says nothing.
+     * It glides down in its mode, TECS trading height for airspeed: recorded, from 60 m to the ground
+     * in 30.1 s ("SIM Hit ground at 1.672376 m/s"), so 2 m/s, less than the 3 m/s it sinks at flying.
      */
-    static final double PLANE_LANDED_AFTER = 3;
+    static final double PLANE_GLIDE_SINK = 2;
+    /**
+     * On the ground it counts as not flying (EXTENDED_SYS_STATE ON_GROUND) once is_flying's probability
+     * has fallen below 0.1: recorded 9.5 s after the hit (it slides on, which keeps the probability up;
+     * the 15 updates at 5 Hz that a stopped plane needs would be 3 s). No text: CRASH_DETECT is 0 by
+     * default, so crash_detection_update says nothing.
+     */
+    static final double PLANE_LANDED_AFTER = 9.5;
 
     // ---- A GPS loss (SIM_GPS1_ENABLE 0): libraries/AP_GPS, libraries/AP_NavEKF3, the vehicle's ekf_check.cpp
 
@@ -67,14 +101,23 @@ final class FaultTable {
     /** ekf_check runs at 10 Hz and fails after EKF_CHECK_ITERATIONS_MAX (10) checks without a position. */
     static final double EKF_CHECK = 1;
     /**
-     * EKF3's tiltDriftTimeMax_ms: nothing has aided it, so it stops aiding ("EKF3 IMU%u stopped
-     * aiding", WARNING, one per core: SITL runs two, EK3_IMU_MASK 3) and, reset, reports the flags of
-     * its constant position mode, those it had at boot.
+     * EKF3's tiltDriftTimeMax_ms: nothing has aided it, so it stops aiding, one text per core (WARNING),
+     * and, reset, reports the flags of its constant position mode, those it had at boot. Recorded: the
+     * copter, whose primary lane was 1 by then, said IMU1 first; the rover, on lane 0, IMU0 first: the
+     * primary core first, then the others.
      */
     static final double AIDING_TIMEOUT = 15;
-    static final List<String> STOPPED_AIDING = List.of("EKF3 IMU0 stopped aiding", "EKF3 IMU1 stopped aiding");
+    static final String STOPPED_AIDING = "EKF3 IMU%d stopped aiding";
     static final int STOPPED_AIDING_SEVERITY = MAV_SEVERITY.MAV_SEVERITY_WARNING;
     static final int EKF_NOT_AIDING = NavigationState.EKF_BOOTING;
+    /**
+     * AP_SmartRTL deactivates itself after SMARTRTL_TIMEOUT (15 s) without a good position, armed
+     * (WARNING). Recorded 22.2 s after the GPS fell silent on the copter (its position bad from EKF3's
+     * timeout, 7 s) and 30.1 s on the rover (whose position counts as good until EKF3 stops aiding, 15 s).
+     */
+    static final String SMART_RTL_OFF = "SmartRTL deactivated: bad position";
+    static final int SMART_RTL_OFF_SEVERITY = MAV_SEVERITY.MAV_SEVERITY_WARNING;
+    static final double SMART_RTL_TIMEOUT = 15;
 
     /** ArduCopter's modes whose requires_position() is true (ArduCopter/mode.h; AUTO's unless in its no-GPS submodes). */
     private static final Set<Integer> COPTER_POSITION_MODES = Set.of(COPTER_MODE.COPTER_MODE_AUTO, COPTER_MODE.COPTER_MODE_GUIDED,
@@ -91,27 +134,48 @@ final class FaultTable {
      * ArduCopter/ekf_check.cpp: "EKF variance: %s" with "position lost" (the variances are not over
      * FS_EKF_THRESH: without GPS there is nothing to innovate), checked disarmed too; then, armed in a
      * mode that needs a position, failsafe_ekf_event: set_mode_land_with_pause (FS_EKF_ACTION 1, LAND,
-     * and a 4 s pause before the descent) and "EKF Failsafe: changed to %s Mode" with the mode's
-     * name() ("LAND"); in another mode (LAND itself included), "EKF Failsafe".
+     * and a 4 s pause before the descent, LAND's LANDING state from the start) and "EKF Failsafe:
+     * changed to Land Mode" (recorded so: the mode's name in the text is "Land", not LAND); in another
+     * mode (LAND itself included), "EKF Failsafe". Recorded: EKF3 switched to lane 1 just before, and
+     * LAND's heartbeat came before both texts. Its SmartRTL gives up once the EKF's position timed out.
      */
     static final EkfFailsafe COPTER_EKF = new EkfFailsafe("EKF variance: position lost", true, COPTER_POSITION_MODES::contains,
-            COPTER_MODE.COPTER_MODE_LAND, "EKF Failsafe: changed to %s Mode", Optional.of("EKF Failsafe"), 4);
+            COPTER_MODE.COPTER_MODE_LAND, "EKF Failsafe: changed to Land Mode", Optional.of("EKF Failsafe"), 4, true,
+            POSITION_TIMEOUT + SMART_RTL_TIMEOUT);
 
     /**
      * Rover/ekf_check.cpp: checked only armed; "EKF variance", then failsafe_ekf_event: HOLD (FS_EKF_ACTION
-     * 1) in a mode that needs a position, and "EKF failsafe"; in another mode nothing more.
+     * 1) in a mode that needs a position, and "EKF failsafe"; in another mode nothing more. Recorded:
+     * HOLD's heartbeat before both texts, no lane switch; its SmartRTL gives up once EKF3 stopped aiding.
      */
     static final EkfFailsafe ROVER_EKF = new EkfFailsafe("EKF variance", false, m -> !ROVER_POSITIONLESS_MODES.contains(m),
-            ROVER_MODE.ROVER_MODE_HOLD, "EKF failsafe", Optional.empty(), 0);
+            ROVER_MODE.ROVER_MODE_HOLD, "EKF failsafe", Optional.empty(), 0, false, AIDING_TIMEOUT + SMART_RTL_TIMEOUT);
 
-    // ---- Each family's row: its motors and what losing one does, its EKF failsafe, a pilot's takeover mode
+    // ---- ArduRover's internal error as its mission starts
+
+    /**
+     * ArduRover SITL flags AP_InternalError invalid_arg_or_result ("SCurve::calculate_track created zero
+     * length path" on its console) when its mission starts a nav item armed, and says so once (CRITICAL):
+     * recorded in rover-square, boat-square and both rover-fault recordings. From then on its heartbeat
+     * says MAV_STATE_CRITICAL. Not a fault of the vehicle's: it drives on (docs/failures.md).
+     */
+    static final String ROVER_INTERNAL_ERROR = "Internal Errors 0x20000000";
+
+    // ---- Each family's row: its motors and what losing one does, its EKF failsafe, a pilot's takeover mode, its internal error
 
     static final Failures COPTER = new Failures(COPTER_MOTORS, Optional.of(ThrustLoss::new), Optional.of(COPTER_EKF),
-            COPTER_MODE.COPTER_MODE_LOITER);
+            COPTER_MODE.COPTER_MODE_LOITER, Optional.empty());
     /** One engine; ArduPlane's EKF failsafe acts only in a quadplane's VTOL modes (ArduPlane/ekf_check.cpp): not simulated. */
     static final Failures PLANE = new Failures(1, Optional.of(motor -> new EngineFailure()), Optional.empty(),
-            PLANE_MODE.PLANE_MODE_LOITER);
+            PLANE_MODE.PLANE_MODE_LOITER, Optional.empty());
     /** A rover's motors are not simulated apart: a stall stands for a rover that cannot go on. */
-    static final Failures ROVER = new Failures(0, Optional.empty(), Optional.of(ROVER_EKF), ROVER_MODE.ROVER_MODE_HOLD);
-    static final Failures SUB = new Failures(0, Optional.empty(), Optional.empty(), SUB_MODE.SUB_MODE_POSHOLD);
+    static final Failures ROVER = new Failures(0, Optional.empty(), Optional.of(ROVER_EKF), ROVER_MODE.ROVER_MODE_HOLD,
+            Optional.of(ROVER_INTERNAL_ERROR));
+    static final Failures SUB = new Failures(0, Optional.empty(), Optional.empty(), SUB_MODE.SUB_MODE_POSHOLD, Optional.empty());
+
+    /** The EKF3 cores' "stopped aiding" texts, the primary lane's first. */
+    static List<String> stoppedAiding(int primary) {
+        return IntStream.range(0, EKF_CORES).map(i -> (primary + i) % EKF_CORES)
+                .mapToObj(core -> String.format(Locale.ROOT, STOPPED_AIDING, core)).toList();
+    }
 }

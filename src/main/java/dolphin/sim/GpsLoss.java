@@ -1,20 +1,20 @@
 package dolphin.sim;
 
 import com.MAVLink.enums.MAV_SEVERITY;
+import java.util.Optional;
 
 /**
  * The GPS receiver falls silent (SITL: SIM_GPS1_ENABLE 0) and what follows, on {@link FaultTable}'s
  * times: AP_GPS gives the receiver up (GPS_RAW_INT NO_GPS), EKF3's horizontal position times out
  * (EKF_STATUS_REPORT loses the position bits), the vehicle's ekf_check fails a second later and its
- * {@link EkfFailsafe} acts (ArduCopter: LAND after a pause, landing and disarming as LAND does), and
- * EKF3 stops aiding. The GPS never comes back; the failsafe stays on (the heartbeat says CRITICAL).
+ * {@link EkfFailsafe} acts (ArduCopter: EKF3's lane switch, then LAND after a pause, landing and
+ * disarming as LAND does), EKF3 stops aiding, and SmartRTL gives up. The GPS never comes back; the
+ * failsafe stays on (the heartbeat says CRITICAL).
  */
 final class GpsLoss implements Fault {
 
     private final EkfFailsafe failsafe;
     private double elapsed;
-    private double pause;
-    private Manoeuvre hold;
 
     GpsLoss(EkfFailsafe failsafe) {
         this.failsafe = failsafe;
@@ -39,20 +39,14 @@ final class GpsLoss implements Fault {
             check(vehicle);
         }
         if (reached(before, FaultTable.AIDING_TIMEOUT)) {
-            FaultTable.STOPPED_AIDING.forEach(t -> vehicle.text(FaultTable.STOPPED_AIDING_SEVERITY, t));
+            FaultTable.stoppedAiding(vehicle.navigation().primaryLane())
+                    .forEach(t -> vehicle.text(FaultTable.STOPPED_AIDING_SEVERITY, t));
             vehicle.navigation().ekfFlags(FaultTable.EKF_NOT_AIDING);
         }
-        if (holdsFlight(vehicle)) {
-            pause -= dt;
-            hold.step(dt);
+        if (reached(before, failsafe.smartRtlOff()) && vehicle.armed()) {
+            vehicle.text(FaultTable.SMART_RTL_OFF_SEVERITY, FaultTable.SMART_RTL_OFF);
         }
         return true;
-    }
-
-    /** The failsafe's pause: it holds where it was, in the failsafe's mode, before it moves. */
-    @Override
-    public boolean holdsFlight(FaultHost vehicle) {
-        return pause > 0 && vehicle.mode() == failsafe.mode();
     }
 
     private boolean reached(double before, double at) {
@@ -64,22 +58,24 @@ final class GpsLoss implements Fault {
         if (!vehicle.armed() && !failsafe.checksDisarmed()) {
             return;
         }
-        vehicle.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, failsafe.varianceText());
         vehicle.navigation().failsafe(true);
         if (!vehicle.armed()) {
+            vehicle.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, failsafe.varianceText());
             return;
         }
-        if (!failsafe.needsPosition().test(vehicle.mode())) {
-            failsafe.noActionText().ifPresent(t -> vehicle.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, t));
-            return;
+        if (failsafe.laneSwitch()) {
+            vehicle.laneSwitch(1);
         }
-        // ekf_check's text, then the mode change with its heartbeat, then the failsafe's text, as SITL sent them
-        vehicle.flush();
-        if (vehicle.setMode(failsafe.mode())) {
-            pause = failsafe.pauseSeconds();
-            hold = vehicle.firmware().holdAt(vehicle.craft(), vehicle.craft().position());
+        boolean acts = failsafe.needsPosition().test(vehicle.mode());
+        if (acts) {
+            // the lane switch's texts, then the new mode's heartbeat, then ekf_check's texts, as SITL sent them
+            vehicle.flush();
+            if (vehicle.setMode(failsafe.mode())) {
+                vehicle.pauseFlight(failsafe.pauseSeconds());
+            }
         }
-        vehicle.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL,
-                String.format(failsafe.actionText(), vehicle.firmware().family().modeName(vehicle.mode())));
+        vehicle.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, failsafe.varianceText());
+        Optional<String> then = acts ? Optional.of(failsafe.actionText()) : failsafe.noActionText();
+        then.ifPresent(t -> vehicle.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, t));
     }
 }

@@ -69,6 +69,9 @@ final class MissionFlight {
         void flush();
 
         void send(MAVLinkMessage m);
+
+        /** An internal error of the firmware's, reported once a boot (AP_InternalError). */
+        void internalError(String text);
     }
 
     private enum Phase { APPROACH, HOLD }
@@ -89,6 +92,9 @@ final class MissionFlight {
     private double exitSpeed;
     // RTL and LAND modes
     private Manoeuvre modeManoeuvre;
+    // a pause before the mode's manoeuvre moves (ArduCopter's land_with_pause), holding where it began
+    private double modePause;
+    private Manoeuvre pauseHold;
     // a CONDITION_DELAY running beside the nav item
     private int conditionSeq = -1;
     private double conditionLeft;
@@ -162,6 +168,7 @@ final class MissionFlight {
             return;
         }
         modeManoeuvre = null;
+        modePause = 0;
         dropActive();
         groundSeconds = 0;
         if (from == firmware.autoMode()) {
@@ -362,6 +369,7 @@ final class MissionFlight {
         cursor.cleared();
         dropActive();
         modeManoeuvre = null;
+        modePause = 0;
         conditionSeq = -1;
         autoArmed = false;
         restartDue = false;
@@ -394,12 +402,24 @@ final class MissionFlight {
         }
     }
 
-    /** RTL or LAND mode: a manoeuvre, and what the vehicle does once it is over. */
+    /**
+     * The mode just set holds where the vehicle is for {@code seconds} before its manoeuvre moves it
+     * (ArduCopter's set_mode_land_with_pause); meanwhile its landed state is the manoeuvre's (LANDING).
+     */
+    void pauseMode(double seconds) {
+        modePause = seconds;
+        pauseHold = firmware.holdAt(body.craft(), body.craft().position());
+    }
+
+    /** RTL or LAND mode: a manoeuvre, after the mode's pause if it has one, and what the vehicle does once it is over. */
     private void modeStep(double dt, Supplier<Manoeuvre> make, Runnable done) {
         if (modeManoeuvre == null) {
             modeManoeuvre = make.get();
         }
-        if (modeManoeuvre.step(dt)) {
+        if (modePause > 0) {
+            modePause -= dt;
+            pauseHold.step(dt);
+        } else if (modeManoeuvre.step(dt)) {
             done.run();
         }
     }
@@ -592,8 +612,12 @@ final class MissionFlight {
         }
     }
 
+    /** "Mission: 3 WP"; a nav item started armed may make the firmware report its internal error (ArduRover's). */
     private void announceStart(MissionItem item) {
         body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Mission: " + item.seq() + " " + CommandNames.of(item.command()));
+        if (body.armed() && nav(item.command())) {
+            firmware.failures().internalError().ifPresent(body::internalError);
+        }
     }
 
     /**

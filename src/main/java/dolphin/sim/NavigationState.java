@@ -8,8 +8,8 @@ import dolphin.mission.model.MissionItem;
 /**
  * The vehicle's GPS receiver and EKF once its warm-up is over, as GPS_RAW_INT, EKF_STATUS_REPORT and
  * the heartbeat report them: a 3D fix and SITL's flags of an EKF using GPS, until a {@link GpsLoss}
- * takes them away; and whether a failsafe is on, which ArduPilot reports as MAV_STATE_CRITICAL
- * (GCS_MAVLINK_Copter::vehicle_system_status, GCS_MAVLINK_Rover's).
+ * takes them away; EKF3's primary lane; and whether a failsafe is on, which ArduPilot reports as
+ * MAV_STATE_CRITICAL (GCS_MAVLINK_Copter::vehicle_system_status, GCS_MAVLINK_Rover's).
  */
 final class NavigationState {
 
@@ -28,6 +28,7 @@ final class NavigationState {
     private boolean gpsLost;
     private int ekfFlags = EKF_LOCATED;
     private boolean failsafe;
+    private int primaryLane;
 
     /** The receiver is gone, as AP_GPS says once it has heard nothing for GPS_TIMEOUT_MS: its state cleared. */
     void gpsLost() {
@@ -41,6 +42,15 @@ final class NavigationState {
     /** EKF_STATUS_REPORT.flags, given whether the warm-up is over. */
     int ekfFlags(boolean located) {
         return located ? ekfFlags : EKF_BOOTING;
+    }
+
+    /** EKF3's primary lane (core): 0 until a lane switch. */
+    int primaryLane() {
+        return primaryLane;
+    }
+
+    void primaryLane(int lane) {
+        primaryLane = lane;
     }
 
     void failsafe(boolean on) {

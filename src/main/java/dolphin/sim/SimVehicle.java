@@ -34,6 +34,7 @@ import dolphin.mission.model.MissionType;
 import dolphin.mission.model.RallyPoints;
 import java.util.HashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
@@ -89,6 +90,8 @@ public final class SimVehicle {
     private long firstArmed = -1;
     /** The link cut by an {@link Outage}. */
     private boolean outage;
+    /** An internal error reported since boot: ArduPilot's heartbeat then says MAV_STATE_CRITICAL. */
+    private boolean internalErrors;
 
     SimVehicle(int sysid, VehicleKind kind, Position home, SimOptions options, long now) {
         this(sysid, kind, home, options, now, SimEquipment.NONE);
@@ -458,6 +461,11 @@ public final class SimVehicle {
         if (armed) {
             outbox.text(MAV_SEVERITY.MAV_SEVERITY_INFO, firmware.disarmedText());
         }
+        // disarmed, EKF3 takes lane 0 again, and AP_AHRS says so (copter-fault-gps: after "Disarming motors")
+        if (navigation.primaryLane() != 0) {
+            navigation.primaryLane(0);
+            outbox.text(FaultTable.PRIMARY_CHANGED_SEVERITY, String.format(Locale.ROOT, FaultTable.PRIMARY_CHANGED, 0));
+        }
         armed = false;
         craft.settle();
         flight.disarmed();
@@ -593,8 +601,8 @@ public final class SimVehicle {
      * Reboots at clock time {@code now}, as ArduPilot after MAV_CMD_PREFLIGHT_REBOOT_SHUTDOWN: time
      * since boot from 0, its warm-up again, disarmed (motors stopped: a vehicle in the air comes
      * down, see {@link Reboot}) and in its boot mode, its requested streams forgotten, its mission
-     * stopped with no current item, no failsafe on. What it stores (mission, fence, rally points),
-     * its home, its battery and its GPS receiver's state stay.
+     * stopped with no current item, no failsafe or internal error on, EKF3 on lane 0. What it stores
+     * (mission, fence, rally points), its home, its battery and its GPS receiver's state stay.
      */
     private void reboot(long now) {
         boot = now;
@@ -605,6 +613,8 @@ public final class SimVehicle {
         nextHeartbeat = now;
         flight.rebooted();
         navigation.failsafe(false);
+        navigation.primaryLane(0);
+        internalErrors = false;
         resetStreams();
         defaultStreams(now);
     }
@@ -686,6 +696,14 @@ public final class SimVehicle {
         public void send(MAVLinkMessage m) {
             SimVehicle.this.send(m);
         }
+
+        @Override
+        public void internalError(String text) {
+            if (!internalErrors) {
+                internalErrors = true;
+                outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, text);
+            }
+        }
     }
 
     /** The faults' view of this vehicle: the flight's, and more. */
@@ -710,6 +728,11 @@ public final class SimVehicle {
         }
 
         @Override
+        public void pauseFlight(double seconds) {
+            flight.pauseMode(seconds);
+        }
+
+        @Override
         public NavigationState navigation() {
             return navigation;
         }
@@ -731,7 +754,8 @@ public final class SimVehicle {
         hb.autopilot = MAV_AUTOPILOT.MAV_AUTOPILOT_ARDUPILOTMEGA;
         hb.base_mode = (short) (MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED | (armed ? MAV_MODE_FLAG.MAV_MODE_FLAG_SAFETY_ARMED : 0));
         hb.custom_mode = mode;
-        hb.system_status = (short) (navigation.failsafe() ? MAV_STATE.MAV_STATE_CRITICAL : firmware.systemStatus(armed, craft.onGround()));
+        hb.system_status = (short) (navigation.failsafe() || internalErrors ? MAV_STATE.MAV_STATE_CRITICAL
+                : firmware.systemStatus(armed, craft.onGround()));
         hb.mavlink_version = 3;
         return hb;
     }

@@ -26,7 +26,7 @@ import groovy.transform.EqualsAndHashCode
 class KeyFrames {
 
     static final List<String> TEXTS = ['SIM Hit ground', 'Disarming motors', 'Mission complete, changing mode to RTL',
-                                       'Mode change failed: Auto requires position', 'Bad alt frame']
+                                       'Mode change failed: Auto requires position', 'Bad alt frame', 'Internal Errors']
 
     /** MAV_FTP_OPCODE names, of the requests a reply answers and of the reply itself. */
     static final Map<Integer, String> FTP_OPCODES = [0: 'None', 1: 'TerminateSession', 2: 'ResetSessions', 3: 'ListDirectory',

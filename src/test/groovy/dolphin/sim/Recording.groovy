@@ -30,6 +30,8 @@ class Recording {
 
     /** What the vehicle sent, in order. */
     final List<MAVLinkMessage> vehicle = []
+    /** The same, each at the vehicle's boot time last seen at or before it (its own, if it carries one); 0 before the first. */
+    final List<Sent> vehicleTimed = []
     /** What the ground station sent, heartbeats left out, in order and on the vehicle's clock. */
     final List<Sent> groundStation = []
     /** The vehicle's boot time at its last frame. */
@@ -60,6 +62,7 @@ class Recording {
                     untimed.each { recording.groundStation << new Sent(t * 1_000_000L, it) }
                     untimed.clear()
                 }
+                recording.vehicleTimed << new Sent((boot ?: 0L) * 1_000_000L, m)
             } else if (!(m instanceof msg_heartbeat)) {
                 if (boot == null) {
                     untimed << m
@@ -86,12 +89,20 @@ class Recording {
      * vehicle's state only if SITL's did. Its home is SITL's {@code --home}: SimDriver.HOME, where the copter, plane and rover were recorded, unless given.
      */
     List<MAVLinkMessage> replay(VehicleKind kind, SimOptions options, Position home = SimDriver.HOME) {
+        replayed(kind, options, home).sent*.message
+    }
+
+    /**
+     * The driver of that replay, its clock at the recording's end: its clock is the recorded
+     * vehicle's time since boot, so what it sent is timed as {@link #vehicleTimed} is.
+     */
+    SimDriver replayed(VehicleKind kind, SimOptions options, Position home = SimDriver.HOME) {
         def driver = new SimDriver(kind, options, home, heartbeatPhaseNanos - 1_000_000_000L)
         groundStation.each { sent ->
             driver.runTo(sent.bootNanos)
             driver.handle(sent.message, sent.message.sysid, sent.message.compid)
         }
         driver.runTo(endNanos)
-        driver.sent*.message
+        driver
     }
 }

@@ -107,25 +107,32 @@ class SimFaultFlightSpec extends Specification {
         d.vehicle.position().hae() - HOME.hae()
     }
 
-    def "a copter that loses a motor mid-survey falls, hits the ground, and says Potential Thrust Loss every 2 s, armed in AUTO at its item"() {
+    def "a copter that loses a motor mid-survey falls, hits the ground, switches EKF lanes, and says Potential Thrust Loss every 11 s, armed in AUTO at its item"() {
         given:
         int from = copterSurvey(['motor=2@30'], 30)
         int item = d.vehicle.missionCurrent()
         assert item == 2 && heightAboveHome() > 29
 
-        when: 'the motor stops, and 15 s go by'
-        runToAfterArming(45)
+        when: 'the motor stops, and 45 s go by'
+        runToAfterArming(75)
         def said = texts(from)
 
-        then: 'down in 3 s at the 13.8 m/s of SITL, then the thrust-loss text 1 s after the hit and every 2 s, at EMERGENCY'
+        then: 'down in 3 s at the 14.6 m/s of SITL'
         said[0][1] == MAV_SEVERITY.MAV_SEVERITY_INFO
-        said[0][2] == 'SIM Hit ground at 13.800000 m/s'
+        said[0][2] == 'SIM Hit ground at 14.600000 m/s'
         double hit = said[0][0] as double
-        hit > 32 && hit < 33.5
-        said.drop(1)*.getAt(2).every { it == 'Potential Thrust Loss (2)' }
-        said.drop(1)*.getAt(1).every { it == MAV_SEVERITY.MAV_SEVERITY_EMERGENCY }
-        said.drop(1).collect { (it[0] as double) - hit }.withIndex().every { double t, int i -> Math.abs(t - (1 + 2 * i)) <= 0.1 }
-        said.size() == 1 + 6
+        Math.abs(hit - 33) <= 0.1
+
+        and: 'at the hit EKF3 switches to lane 1 (CRITICAL) and AP_AHRS says so (WARNING), and back a quarter of a second later'
+        said[1..4]*.drop(1) == [[MAV_SEVERITY.MAV_SEVERITY_CRITICAL, 'EKF3 lane switch 1'], [MAV_SEVERITY.MAV_SEVERITY_WARNING, 'EKF primary changed:1'],
+                                [MAV_SEVERITY.MAV_SEVERITY_CRITICAL, 'EKF3 lane switch 0'], [MAV_SEVERITY.MAV_SEVERITY_WARNING, 'EKF primary changed:0']]
+        [said[1..4]*.getAt(0), [0.05, 0.05, 0.3, 0.3]].transpose().every { t, after -> Math.abs((t as double) - hit - after) < 0.01 }
+
+        and: 'the thrust-loss text 4 s after the hit and every 11 s, at EMERGENCY, naming motor 1, the one opposite, as SITL named 2 for 1'
+        said.drop(5)*.getAt(2).every { it == 'Potential Thrust Loss (1)' }
+        said.drop(5)*.getAt(1).every { it == MAV_SEVERITY.MAV_SEVERITY_EMERGENCY }
+        said.drop(5).collect { (it[0] as double) - hit }.withIndex().every { double t, int i -> Math.abs(t - (4 + 11 * i)) <= 0.1 }
+        said.size() == 5 + 4
 
         and: 'on the ground, armed, in AUTO, its item unchanged, IN_AIR as ArduCopter without land_complete, ACTIVE'
         heightAboveHome() == 0
@@ -149,7 +156,20 @@ class SimFaultFlightSpec extends Specification {
         d.vehicle.landedState() == MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND
     }
 
-    def "a copter that loses its GPS mid-survey: NO_GPS after 4 s, the EKF's position gone after 7, then EKF variance, LAND and the failsafe's text; it lands and disarms"() {
+    def "a copter whose motor stops before it lifts off stays on the ground: no impact, so no lane switch, and landed, so no thrust loss"() {
+        given:
+        int from = copterSurvey(['motor@0'], 0)
+
+        when:
+        runToAfterArming(30)
+
+        then:
+        heightAboveHome() == 0
+        d.vehicle.armed()
+        texts(from).empty
+    }
+
+    def "a copter that loses its GPS mid-survey: NO_GPS after 4 s, the EKF's position gone after 7, then a lane switch, LAND, EKF variance and the failsafe's text; it lands and disarms"() {
         given:
         int from = copterSurvey(['gps@30'], 30)
 
@@ -168,27 +188,38 @@ class SimFaultFlightSpec extends Specification {
         Math.abs(sinceArming(lost) - 37) <= 0.3
         d.sent[lost].message.flags == 37
 
-        and: 'a second later, in this order: "EKF variance: position lost", the heartbeat in LAND, "EKF Failsafe: changed to LAND Mode", CRITICAL'
-        int variance = first(from, text('EKF variance: position lost'))
+        and: 'a second later, in this order, as SITL: "EKF3 lane switch 1", the heartbeat in LAND, "EKF variance: position lost", "EKF Failsafe: changed to Land Mode"'
+        int lane = first(from, text('EKF3 lane switch 1'))
         int land = first(from, inMode(COPTER_MODE.COPTER_MODE_LAND))
-        int failsafe = first(from, text('EKF Failsafe: changed to LAND Mode'))
-        variance < land && land < failsafe
-        Math.abs(sinceArming(variance) - 38) <= 0.1
-        sinceArming(failsafe) == sinceArming(variance)
-        [variance, failsafe].every { d.sent[it].message.severity == MAV_SEVERITY.MAV_SEVERITY_CRITICAL }
+        int variance = first(from, text('EKF variance: position lost'))
+        int failsafe = first(from, text('EKF Failsafe: changed to Land Mode'))
+        lane < land && land < variance && variance < failsafe
+        Math.abs(sinceArming(lane) - 38) <= 0.1
+        [land, variance, failsafe].every { sinceArming(it) == sinceArming(lane) }
+        [lane, variance, failsafe].every { d.sent[it].message.severity == MAV_SEVERITY.MAV_SEVERITY_CRITICAL }
         d.sent.drop(land)*.message.findAll { it instanceof msg_heartbeat }.every { it.system_status == MAV_STATE.MAV_STATE_CRITICAL }
         d.sent.take(land)*.message.findAll { it instanceof msg_heartbeat }.every { it.system_status != MAV_STATE.MAV_STATE_CRITICAL }
 
-        and: 'EKF3 stops aiding 15 s on, one text per core at WARNING, and reports its constant position mode (167)'
-        int aiding = first(from, text('EKF3 IMU0 stopped aiding'))
-        d.sent[aiding + 1].message.text == 'EKF3 IMU1 stopped aiding'
+        and: 'LAND reports LANDING from its start, its pause included'
+        Math.abs(sinceArming(first(land) { it instanceof msg_extended_sys_state }) - 38) <= 0.3
+        d.sent.drop(land)*.message.find { it instanceof msg_extended_sys_state }.landed_state == MAV_LANDED_STATE.MAV_LANDED_STATE_LANDING
+
+        and: 'EKF3 stops aiding 15 s on, one text per core at WARNING, lane 1 (the primary) first, and reports its constant position mode (167)'
+        int aiding = first(from, text('EKF3 IMU1 stopped aiding'))
+        d.sent[aiding + 1].message.text == 'EKF3 IMU0 stopped aiding'
         d.sent[aiding].message.severity == MAV_SEVERITY.MAV_SEVERITY_WARNING
         Math.abs(sinceArming(aiding) - 45) <= 0.1
         d.since(aiding, msg_ekf_status_report).every { it.flags == 167 }
 
-        and: 'it landed where it was, out on the survey, after the 4 s pause, and disarmed; the texts in all'
-        texts(from)*.getAt(2) == ['EKF variance: position lost', 'EKF Failsafe: changed to LAND Mode', 'EKF3 IMU0 stopped aiding',
-                                  'EKF3 IMU1 stopped aiding', 'SIM Hit ground at 0.500000 m/s', 'Disarming motors']
+        and: 'SmartRTL gives up 15 s after the position timed out (WARNING)'
+        int smartRtl = first(from, text('SmartRTL deactivated: bad position'))
+        Math.abs(sinceArming(smartRtl) - 52) <= 0.1
+        d.sent[smartRtl].message.severity == MAV_SEVERITY.MAV_SEVERITY_WARNING
+
+        and: 'it landed where it was, out on the survey, after the 4 s pause, and disarmed, EKF3 back on lane 0; the texts in all'
+        texts(from)*.getAt(2) == ['EKF3 lane switch 1', 'EKF primary changed:1', 'EKF variance: position lost', 'EKF Failsafe: changed to Land Mode',
+                                  'EKF3 IMU1 stopped aiding', 'EKF3 IMU0 stopped aiding', 'SmartRTL deactivated: bad position',
+                                  'SIM Hit ground at 0.500000 m/s', 'Disarming motors', 'EKF primary changed:0']
         !d.vehicle.armed()
         d.vehicle.mode() == COPTER_MODE.COPTER_MODE_LAND
         heightAboveHome() == 0
@@ -211,7 +242,7 @@ class SimFaultFlightSpec extends Specification {
         heightAboveHome() < height - 3
     }
 
-    def "a rover that loses its GPS in AUTO: EKF variance, HOLD, EKF failsafe, as ArduRover's ekf_check; it stands there, armed"() {
+    def "a rover that loses its GPS in AUTO: HOLD, EKF variance, EKF failsafe, as ArduRover's ekf_check; it stands there, armed"() {
         given:
         vehicle(VehicleKind.ROVER, ['gps@10'])
         assert d.upload([HOME_ITEM, rel(1, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 300, 0, 0)]) == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
@@ -221,19 +252,64 @@ class SimFaultFlightSpec extends Specification {
         int from = d.mark()
 
         when:
-        runToAfterArming(30)
+        runToAfterArming(45)
         def at = d.vehicle.position()
         d.run(10)
 
-        then:
-        int variance = first(from, text('EKF variance'))
+        then: 'the heartbeat in HOLD first, then the texts, as SITL sent them; no lane switch'
         int hold = first(from, inMode(ROVER_MODE.ROVER_MODE_HOLD))
+        int variance = first(from, text('EKF variance'))
         int failsafe = first(from, text('EKF failsafe'))
-        variance < hold && hold < failsafe
+        hold < variance && variance < failsafe
         Math.abs(sinceArming(variance) - 18) <= 0.1
+
+        and: 'EKF3 stops aiding 15 s on, lane 0 first; SmartRTL gives up 15 s after that'
+        texts(from)*.getAt(2) == ['Mission: 1 WP', 'Internal Errors 0x20000000', 'EKF variance', 'EKF failsafe', 'EKF3 IMU0 stopped aiding', 'EKF3 IMU1 stopped aiding',
+                                  'SmartRTL deactivated: bad position']
+        Math.abs(sinceArming(first(from, text('SmartRTL deactivated: bad position'))) - 40) <= 0.1
         d.vehicle.armed()
         horizontal(d.vehicle.position(), at) < 0.01
         d.since(from, msg_heartbeat).last().system_status == MAV_STATE.MAV_STATE_CRITICAL
+    }
+
+    def "a #kind reports ArduRover's internal error (CRITICAL) once as its mission first starts armed, and its heartbeat is CRITICAL from then on; a copter does not"() {
+        given:
+        vehicle(kind, [])
+        assert d.upload([HOME_ITEM, rel(1, MAV_CMD.MAV_CMD_NAV_TAKEOFF, 0, 0, 30), rel(2, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 100, 0, 30)]) ==
+                MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
+
+        when: 'disarmed, the mission started from its first item as dolphin starts it (DO_SET_MISSION_CURRENT, reset)'
+        d.command(MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT, [1, 1])
+        d.run(2)
+
+        then:
+        !texts(0).any { it[2].startsWith('Internal Errors') }
+        d.since(0, msg_heartbeat).every { it.system_status != MAV_STATE.MAV_STATE_CRITICAL }
+
+        when: 'armed, started again, in AUTO, then HOLD and AUTO again'
+        int from = d.mark()
+        d.setMode(guided)
+        assert d.arm().result == MAV_RESULT.MAV_RESULT_ACCEPTED
+        d.command(MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT, [1, 1])
+        d.setMode(auto)
+        d.command(MAV_CMD.MAV_CMD_MISSION_START)
+        d.run(5)
+        d.setMode(hold)
+        d.setMode(auto)
+        d.run(5)
+        def said = texts(from)*.getAt(2)
+
+        then: 'the text right after the start of the first item, once'
+        said.findAll { it.startsWith('Internal Errors') } == errors
+        !errors || said[said.indexOf('Internal Errors 0x20000000') - 1] == 'Mission: 1 Takeoff'
+        texts(from).findAll { it[2].startsWith('Internal Errors') }.every { it[1] == MAV_SEVERITY.MAV_SEVERITY_CRITICAL }
+        (d.since(from, msg_heartbeat).last().system_status == MAV_STATE.MAV_STATE_CRITICAL) == !errors.empty
+
+        where:
+        kind               | guided                           | auto                         | hold                           || errors
+        VehicleKind.ROVER  | ROVER_MODE.ROVER_MODE_MANUAL     | ROVER_MODE.ROVER_MODE_AUTO   | ROVER_MODE.ROVER_MODE_HOLD     || ['Internal Errors 0x20000000']
+        VehicleKind.BOAT   | ROVER_MODE.ROVER_MODE_MANUAL     | ROVER_MODE.ROVER_MODE_AUTO   | ROVER_MODE.ROVER_MODE_HOLD     || ['Internal Errors 0x20000000']
+        VehicleKind.COPTER | COPTER_MODE.COPTER_MODE_GUIDED   | COPTER_MODE.COPTER_MODE_AUTO | COPTER_MODE.COPTER_MODE_LOITER || []
     }
 
     def "a pilot takes a copter over mid-survey: LOITER, held there 15 s, then AUTO at the same item; the survey ends as it would have"() {
@@ -354,7 +430,7 @@ class SimFaultFlightSpec extends Specification {
         d.since(from, msg_heartbeat).every { it.custom_mode == COPTER_MODE.COPTER_MODE_STABILIZE && (it.base_mode & 128) == 0 }
         d.vehicle.streams().isEmpty()
         d.since(from, msg_global_position_int).empty
-        texts(from)*.getAt(2) == ['SIM Hit ground at 13.800000 m/s']
+        texts(from)*.getAt(2) == ['SIM Hit ground at 14.600000 m/s']
         heightAboveHome() == 0
         d.vehicle.missionCurrent() == 0
         d.vehicle.missionState() == MISSION_STATE.MISSION_STATE_NOT_STARTED
@@ -392,7 +468,7 @@ class SimFaultFlightSpec extends Specification {
         !d.since(from, msg_heartbeat).empty
     }
 
-    def "a plane whose engine fails glides down at its sink rate, hits the ground, and 3 s later is ON_GROUND; armed in AUTO, nothing said but SITL's"() {
+    def "a plane whose engine fails glides down at 2 m/s, hits the ground, and 9.5 s later is ON_GROUND; armed in AUTO, nothing said but SITL's"() {
         given:
         vehicle(VehicleKind.PLANE, ['motor@40'])
         assert d.upload([HOME_ITEM, rel(1, MAV_CMD.MAV_CMD_NAV_TAKEOFF, 0, 0, 30), rel(2, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 2000, 0, 30)]) ==
@@ -407,17 +483,17 @@ class SimFaultFlightSpec extends Specification {
         when:
         runToAfterArming(45)
 
-        then: 'losing 3 m a second, still moving on'
-        Math.abs(heightAboveHome() - (height - 15)) < 0.2
+        then: 'losing 2 m a second, still moving on'
+        Math.abs(heightAboveHome() - (height - 10)) < 0.2
 
         when:
         d.runUntil(30, 'the ground') { heightAboveHome() == 0 }
         long hit = d.now
-        d.runUntil(5, 'ON_GROUND') { d.vehicle.landedState() == MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND }
+        d.runUntil(15, 'ON_GROUND') { d.vehicle.landedState() == MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND }
 
         then:
-        Math.abs((d.now - hit) / 1e9 - 3) <= 0.1
-        texts(from)*.getAt(2) == ['SIM Hit ground at 3.000000 m/s']
+        Math.abs((d.now - hit) / 1e9 - 9.5) <= 0.1
+        texts(from)*.getAt(2) == ['SIM Hit ground at 2.000000 m/s']
         d.vehicle.armed()
         d.vehicle.mode() == PLANE_MODE.PLANE_MODE_AUTO
         d.vehicle.missionCurrent() == 2

@@ -21,9 +21,9 @@ final class VehicleWords {
     record Said(int severity, String text, long at) {
 
         /**
-         * EMERGENCY, ALERT or CRITICAL: ArduPilot's thrust loss, crash, EKF and failsafe messages; but not
-         * its report of an internal error, which ArduRover sends at CRITICAL as every mission starts
-         * ("Internal Errors 0x20000000", a zero-length S-curve path) and drives on.
+         * EMERGENCY, ALERT or CRITICAL: ArduPilot's thrust loss, crash, EKF and failsafe messages; but
+         * not its internal errors ("Internal Errors 0x20000000"), a flag of a bug caught in the
+         * firmware, which flies on: ArduRover SITL says it as every mission starts (docs/failures.md).
          */
         boolean severe() {
             return severity <= MAV_SEVERITY.MAV_SEVERITY_CRITICAL && !text.startsWith(INTERNAL_ERRORS);
@@ -40,8 +40,8 @@ final class VehicleWords {
         }
     }
 
-    /** How ArduPilot's AP_InternalError report begins. */
-    private static final String INTERNAL_ERRORS = "Internal Errors ";
+    /** AP_InternalError's report (GCS_MAVLINK): "Internal Errors 0x%x". */
+    static final String INTERNAL_ERRORS = "Internal Errors ";
     /** How long before the first sign a text still explains it. */
     static final long BEFORE_NANOS = 3_000_000_000L;
     /** How long after the first sign the executor waits for the vehicle's explanation before it fails the mission. */

@@ -57,6 +57,25 @@ class FlightAlarmsSpec extends Specification {
                 ' (NAV_WAYPOINT): armed, AUTO, landed state ON_GROUND, 0.0 m above home'
     }
 
+    def "ArduRover's 'Internal Errors 0x20000000' (CRITICAL) as its mission starts is no fault; a fault after it still is"() {
+        given:
+        def a = alarms(VehicleFamily.ROVER)
+        words.heard(MAV_SEVERITY.MAV_SEVERITY_INFO, 'Mission: 1 WP', 1 * S)
+        words.heard(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, 'Internal Errors 0x20000000', 1 * S)
+        def s = state(VehicleFamily.ROVER, true, MAV_LANDED_STATE.MAV_LANDED_STATE_UNDEFINED, 0)
+
+        expect: 'a minute of driving with it said'
+        (1..60).every { t -> a.judge(s, 2, false, t * S).empty }
+
+        when: 'the GPS is lost later'
+        words.heard(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, 'EKF variance', 61 * S)
+        words.heard(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, 'EKF failsafe', 61 * S)
+
+        then:
+        a.judge(s, 3, false, 62 * S).empty
+        a.judge(s, 3, false, 63 * S).get().startsWith("vehicle 1 reported 'EKF variance', 'EKF failsafe' during item 3 of 4")
+    }
+
     def "texts from before the flight (a PreArm while it waited) do not count"() {
         given:
         def a = new FlightAlarms(FlightRules.of(VehicleFamily.COPTER), new ItemNames([MissionItem.command(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 0, 0, 0, 0),

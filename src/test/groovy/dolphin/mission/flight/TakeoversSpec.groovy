@@ -115,12 +115,12 @@ class TakeoversSpec extends Specification {
 
         when:
         t.look(in(VehicleFamily.COPTER, 'LAND'), false, 2, 10 * S)
-        words.heard(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, 'EKF Failsafe: changed to LAND Mode', 10 * S + 300_000_000)
+        words.heard(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, 'EKF Failsafe: changed to Land Mode', 10 * S + 300_000_000)
         def failed = t.look(in(VehicleFamily.COPTER, 'LAND'), false, 2, 12 * S)
 
         then:
         failed.text() == "vehicle 1 left AUTO for LAND during item 2 of 4 (NAV_WAYPOINT), before the mission ended, saying 'EKF variance'," +
-                " 'EKF Failsafe: changed to LAND Mode': armed, LAND, landed state UNDEFINED, 30.0 m above home"
+                " 'EKF Failsafe: changed to Land Mode': armed, LAND, landed state UNDEFINED, 30.0 m above home"
     }
 
     def "a plane's own RTL at its last item waits the grace for the mission's end; in mid-mission it does not"() {
