@@ -465,14 +465,7 @@ class MissionExecutorFaultsSpec extends MissionFlights {
     @Unroll
     def "during the mission, #what: ERROR naming the item and what the vehicle reported; no RTL"() {
         given: 'a copter flying item 2 at 20 m, item 1 reported reached'
-        vehicle.ready()
-        vehicle.autopilot = true
-        launch(hop5())
-        stepUntil(FlightState.RUNNING)
-        vehicle.landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR)
-        vehicle.at(0, 20)
-        vehicle.next(2)
-        runTo(5)
+        flyingItem2()
         int sent = vehicle.commands.size()
 
         when:
