@@ -16,6 +16,7 @@ import dolphin.mission.transfer.TransferStatus;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
 
 /**
@@ -32,7 +33,7 @@ public final class VehicleMissions implements MissionVehicle {
     private volatile TransferStatus transfer;
     /** Whether a mission of ours on the vehicle is paused by someone else's hand now, and how often that began. */
     private volatile boolean takenOver;
-    private final java.util.concurrent.atomic.AtomicInteger takeovers = new java.util.concurrent.atomic.AtomicInteger();
+    private final AtomicInteger takeovers = new AtomicInteger();
 
     VehicleMissions(MAVLinkNode node, MissionService service) {
         this.node = node;
