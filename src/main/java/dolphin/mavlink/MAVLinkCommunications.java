@@ -86,6 +86,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
     private final Timers timers = new Timers();
     private final CommandSender commands;
     private final TelemetryRequests telemetry;
+    private final CapabilityRequests capabilities;
     private final List<FrameObserver> observers = new CopyOnWriteArrayList<>();
     private final List<ComponentListener> componentListeners = new CopyOnWriteArrayList<>();
     private final List<Consumer<VehicleEvent>> vehicleEventListeners = new CopyOnWriteArrayList<>();
@@ -103,6 +104,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
         this.clock = clock;
         this.commands = new CommandSender(this::sendOnCommsThread, config.commandTimeout().toNanos(), config.commandAttempts());
         this.telemetry = new TelemetryRequests(this, config.telemetryHz());
+        this.capabilities = CapabilityRequests.of(this);
         routeVehicleState();
     }
 
@@ -252,6 +254,10 @@ public final class MAVLinkCommunications implements AutoCloseable {
         return result;
     }
 
+    void hurryCapabilities(MAVLinkNode node) {
+        capabilities.hurry(node, clock.nanoTime());
+    }
+
     /** Runs an action on the communications thread. */
     public void execute(Runnable action) {
         queue.add(action);
@@ -354,10 +360,14 @@ public final class MAVLinkCommunications implements AutoCloseable {
         long now = clock.nanoTime();
         commands.tick(now);
         telemetry.check(now);
+        capabilities.check(now);
         nodesByKey.values().forEach(n -> {
             if (n.wasConnected != n.isConnected()) {
                 n.wasConnected = !n.wasConnected;
                 LOG.info("vehicle {} {}", n.getId(), n.wasConnected ? "is back" : "lost: no heartbeat within " + n.getConnectionTimeout() + " s");
+                if (n.wasConnected) {
+                    capabilities.ask(n, now);
+                }
                 telemetryListener.run();
             }
             n.contact().check().ifPresent(this::publish);
@@ -430,6 +440,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
         nodesById.put(id, node);
         LOG.info("discovered vehicle {} ({}, {}) on {} at {}", id, type, family, link, peer);
         telemetry.discovered(node, clock.nanoTime());
+        capabilities.ask(node, clock.nanoTime());
         return node;
     }
 
@@ -447,7 +458,10 @@ public final class MAVLinkCommunications implements AutoCloseable {
         handler.on(msg_mission_current.class, (n, m) -> changed(n, s -> s.withMissionCurrent(m.seq, m.total, m.mission_state)));
         handler.on(msg_ekf_status_report.class, (n, m) -> changed(n, s -> s.withEkfFlags(m.flags)));
         handler.on(msg_fence_status.class, (n, m) -> changed(n, s -> s.withFenceBreached(m.breach_status != 0)));
-        handler.on(msg_autopilot_version.class, (n, m) -> n.capabilities(m.capabilities));
+        handler.on(msg_autopilot_version.class, (n, m) -> {
+            n.capabilities(m.capabilities);
+            capabilities.answered(n);
+        });
         handler.on(msg_statustext.class, (n, m) -> {
             String text = m.getText();
             LOG.info("vehicle {}: {}", n.getId(), text);

@@ -37,6 +37,8 @@ public final class MAVLinkNode extends AbstractNode {
     private final Contact contact;
     /** AUTOPILOT_VERSION.capabilities (MAV_PROTOCOL_CAPABILITY bits), -1 until the vehicle sent it. */
     private volatile long capabilities = -1;
+    /** AUTOPILOT_VERSION requests sent since the last answer; written on the communications thread only. */
+    private volatile int capabilityAsks;
     private volatile SocketAddress address;
     /** What a fleet file says of the vehicle, when it says it (docs/sensors.md, "Fleet files"). */
     private volatile String name;
@@ -78,6 +80,27 @@ public final class MAVLinkNode extends AbstractNode {
 
     void capabilities(long bits) {
         capabilities = bits;
+        capabilityAsks = 0;
+    }
+
+    /**
+     * How many times the vehicle was asked what it offers since it last answered (0 once it did): a
+     * transfer that cannot wait says how long it was left without an answer.
+     */
+    public int capabilityAsks() {
+        return capabilityAsks;
+    }
+
+    void capabilityAsked() {
+        capabilityAsks++;
+    }
+
+    /**
+     * Asks the vehicle again what it offers, unless it answered or an ask is on its way: for a
+     * transfer that would choose its path by the answer. From any thread.
+     */
+    public void askCapabilities() {
+        comms.execute(() -> comms.hurryCapabilities(this));
     }
 
     /** The measured round trip of the vehicle's link (command ACKs, mission transfers, FTP). */

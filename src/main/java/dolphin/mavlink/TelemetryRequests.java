@@ -3,7 +3,6 @@ package dolphin.mavlink;
 import com.MAVLink.ardupilotmega.msg_ekf_status_report;
 import com.MAVLink.common.msg_extended_sys_state;
 import com.MAVLink.common.msg_home_position;
-import com.MAVLink.standard.msg_autopilot_version;
 import com.MAVLink.common.msg_battery_status;
 import com.MAVLink.common.msg_mission_current;
 import com.MAVLink.standard.msg_global_position_int;
@@ -77,8 +76,6 @@ final class TelemetryRequests {
         v.streams.put(msg_ekf_status_report.MAVLINK_MSG_ID_EKF_STATUS_REPORT, new Stream(1_000_000_000L, true));
         vehicles.put(node, v);
         v.streams.forEach((id, s) -> request(node, v, id, s, now));
-        // What the vehicle offers (MAVLink FTP for whole-mission transfers): asked once, kept by the node.
-        comms.commandOnCommsThread(node, MAV_CMD.MAV_CMD_REQUEST_MESSAGE, msg_autopilot_version.MAVLINK_MSG_ID_AUTOPILOT_VERSION);
     }
 
     void seen(MAVLinkNode node, int msgid, long now) {

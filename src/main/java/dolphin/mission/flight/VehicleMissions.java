@@ -163,6 +163,16 @@ public final class VehicleMissions implements MissionVehicle {
     }
 
     @Override
+    public void askWhatItOffers() {
+        node.askCapabilities();
+    }
+
+    @Override
+    public int unansweredAsks() {
+        return node.capabilityAsks();
+    }
+
+    @Override
     public String silence() {
         return node.isConnected() ? "" : "no heartbeat within " + node.getConnectionTimeout() + " s";
     }

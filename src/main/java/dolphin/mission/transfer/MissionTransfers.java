@@ -13,9 +13,11 @@ import com.MAVLink.common.msg_mission_item;
 import com.MAVLink.common.msg_mission_item_int;
 import com.MAVLink.common.msg_mission_request;
 import com.MAVLink.common.msg_mission_request_int;
+import java.time.Duration;
 import java.util.ArrayDeque;
 import java.util.Deque;
 import java.util.List;
+import java.util.Optional;
 import java.util.function.Supplier;
 
 /**
@@ -30,8 +32,10 @@ import java.util.function.Supplier;
  * MAVLink FTP ({@link FtpMissionUpload}, {@link FtpMissionDownload}), failing when the vehicle has
  * no FTP; AUTO FTP when the vehicle's AUTOPILOT_VERSION offers it, else items, and items again for
  * that transfer when FTP fails. A vehicle that never answered FTP is remembered: its later AUTO
- * transfers go item by item at once, until an FTP transfer (forced with the FTP path) succeeds. A
- * transfer that fell back to items says so first in its result's note.
+ * transfers go item by item at once, until an FTP transfer (forced with the FTP path) succeeds. An
+ * AUTO transfer whose vehicle has not yet said what it offers asks it again and waits up to
+ * {@link #CAPABILITY_WAIT} for the answer (docs/radios.md, "What the vehicle offers"). An AUTO
+ * transfer that goes item by item says why first in its result's note.
  */
 public final class MissionTransfers {
 
@@ -39,6 +43,15 @@ public final class MissionTransfers {
     public static final List<Class<? extends MAVLinkMessage>> MESSAGES = List.of(msg_mission_request.class,
             msg_mission_request_int.class, msg_mission_ack.class, msg_mission_count.class, msg_mission_item_int.class,
             msg_mission_item.class, msg_file_transfer_protocol.class);
+
+    /**
+     * How long an AUTO transfer waits for the vehicle to say whether it offers FTP, when it has not
+     * yet: a round trip or two on a radio, with an ask lost on the way.
+     */
+    static final Duration CAPABILITY_WAIT = Duration.ofSeconds(3);
+    /** A vehicle asked more often than this in vain has nothing to say: transfers no longer wait for it. */
+    static final int PATIENT_ASKS = 3;
+    private static final Duration CAPABILITY_POLL = Duration.ofMillis(50);
 
     /** A transfer waiting its turn: an item transfer, the items of an upload (null for a download), or items only. */
     private record Queued(Transfer transfer, List<MissionItem> upload, boolean itemsOnly) {
@@ -53,6 +66,7 @@ public final class MissionTransfers {
     private final Deque<Queued> waiting = new ArrayDeque<>();
     private Transfer active;
     private boolean ftpUnanswered;
+    private long waitingSince = -1;     // since when the next transfer waits to hear whether the vehicle offers FTP
 
     /** @param config the timeouts and path of transfers started from now on (a command line may change them) */
     public MissionTransfers(VehicleChannel vehicle, ProtocolTimers timers, Supplier<MissionTransferConfig> config) {
@@ -129,25 +143,63 @@ public final class MissionTransfers {
     }
 
     private void pump() {
-        if (active == null && !waiting.isEmpty()) {
-            Queued q = waiting.poll();
-            Transfer t = q.itemsOnly() || !overFtp(q.transfer().config.path()) ? q.transfer() : overFtp(q);
-            active = t;
-            t.begin(() -> {
-                if (active == t) {
-                    active = null;
-                    timers.execute(this::pump);
-                }
-            });
+        if (active != null || waiting.isEmpty()) {
+            return;
         }
+        Queued q = waiting.peek();
+        PathChoice choice = q.itemsOnly() ? PathChoice.ITEMS_ONLY : choose(q.transfer().config.path());
+        if (choice == null) {
+            return;
+        }
+        waiting.poll();
+        Transfer t = choice.ftp() ? overFtp(q) : q.transfer();
+        if (!choice.ftp() && !choice.why().isEmpty()) {
+            t.pathNote(choice.why());
+        }
+        active = t;
+        t.begin(() -> {
+            if (active == t) {
+                active = null;
+                timers.execute(this::pump);
+            }
+        });
     }
 
-    private boolean overFtp(TransferPath path) {
-        return switch (path) {
-            case ITEMS -> false;
-            case FTP -> true;
-            case AUTO -> !ftpUnanswered && vehicle.offersFtp().orElse(false);
-        };
+    /** The path a transfer takes and why, when a user may want to know. */
+    private record PathChoice(boolean ftp, String why) {
+        static final PathChoice ITEMS_ONLY = new PathChoice(false, "");
+    }
+
+    /**
+     * The path for a transfer's turn, or null while the vehicle has not said what it offers and the
+     * transfer waits for its answer (asked again at once; {@link #pump} runs again when the wait
+     * ends).
+     */
+    private PathChoice choose(TransferPath path) {
+        if (path != TransferPath.AUTO) {
+            return new PathChoice(path == TransferPath.FTP, "");
+        }
+        if (ftpUnanswered) {
+            return new PathChoice(false, "item by item, as MAVLink FTP went unanswered before");
+        }
+        Optional<Boolean> offers = vehicle.offersFtp();
+        if (offers.isPresent()) {
+            waitingSince = -1;
+            return offers.get() ? new PathChoice(true, "") : new PathChoice(false, "item by item: the vehicle offers no MAVLink FTP");
+        }
+        long now = timers.nanoTime();
+        if (waitingSince < 0) {
+            waitingSince = now;
+            vehicle.askWhatItOffers();
+        }
+        if (now - waitingSince < CAPABILITY_WAIT.toNanos() && vehicle.unansweredAsks() <= PATIENT_ASKS) {
+            timers.schedule(CAPABILITY_POLL, this::pump);
+            return null;
+        }
+        waitingSince = -1;
+        int asks = vehicle.unansweredAsks();
+        return new PathChoice(false, "item by item: the vehicle has not said whether it offers MAVLink FTP (AUTOPILOT_VERSION asked "
+                + asks + (asks == 1 ? " time)" : " times)"));
     }
 
     /** The FTP transfer standing for an item transfer; its result goes to the item transfer's caller. */
@@ -164,7 +216,7 @@ public final class MissionTransfers {
             } else if (items.config.path() == TransferPath.AUTO) {
                 // item by item, right after: its errors name the item the vehicle refuses
                 ftpUnanswered |= f.unanswered();
-                items.fallingBackFrom("item by item, as FTP failed (" + f.why() + ")");
+                items.pathNote("item by item, as FTP failed (" + f.why() + ")");
                 waiting.addFirst(new Queued(items, null, true));
             } else {
                 items.result.complete(r);

@@ -131,8 +131,12 @@ abstract class Transfer {
                 resends, ignoredAcks));
     }
 
-    /** This transfer stands in for one that failed on another path: its result says so first. */
-    final void fallingBackFrom(String why) {
+    /**
+     * Why the transfer took its path, when it was not the one asked for or the one a user would
+     * expect (it stands in for one that failed over FTP, or the vehicle did not offer FTP): its
+     * result says so first.
+     */
+    final void pathNote(String why) {
         fallback = why;
     }
 

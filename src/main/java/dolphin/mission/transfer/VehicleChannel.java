@@ -35,6 +35,12 @@ public interface VehicleChannel {
      */
     Optional<Boolean> offersFtp();
 
+    /** Asks the vehicle again what it offers, unless it answered or an ask is on its way. */
+    void askWhatItOffers();
+
+    /** How many times the vehicle was asked what it offers without answering (0 once it answered). */
+    int unansweredAsks();
+
     /** Why the vehicle is not heard ("no heartbeat within 5 s"), or empty while it is. */
     String silence();
 }

@@ -158,6 +158,12 @@ class FakeFlightVehicle implements MissionVehicle {
     @Override
     Optional<Boolean> offersFtp() { Optional.empty() }
 
+    @Override
+    void askWhatItOffers() { }
+
+    @Override
+    int unansweredAsks() { 0 }
+
     /** Where a transfer in progress stands, as a spec sets it. */
     dolphin.mission.transfer.TransferStatus transferStatus
 

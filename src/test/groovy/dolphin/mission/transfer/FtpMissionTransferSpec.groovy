@@ -271,6 +271,71 @@ class FtpMissionTransferSpec extends Specification {
         Optional.empty()    | 'item by item' | 'succeeds'
     }
 
+    def "AUTO on a vehicle that has not said what it offers: it asks again and waits for the answer"() {
+        given: 'the first AUTOPILOT_VERSION was lost; the ask the transfer sends is answered 0.4 s later'
+        channel.offersFtp = Optional.empty()
+        channel.answerAsk = { clock.schedule(Duration.ofMillis(400)) { channel.offersFtp = Optional.of(true) } }
+
+        when:
+        CompletableFuture<TransferResult> f = upload(TransferPath.AUTO)
+
+        then: 'nothing is sent before the answer'
+        channel.asks == 1
+        channel.sent.isEmpty()
+
+        when:
+        TransferResult r = settle(f)
+
+        then:
+        r.verified()
+        r.note() == 'over FTP'
+        missionMessages() == 0
+        channel.sent.first().time >= 0.4d
+    }
+
+    def "AUTO on a vehicle that never says what it offers: item by item after 3 s, saying why"() {
+        given:
+        channel.offersFtp = Optional.empty()
+
+        when:
+        TransferResult r = settle(upload(TransferPath.AUTO))
+
+        then:
+        r.success()
+        ftpMessages() == 0
+        channel.sent.first().time >= 3.0d
+        r.note() == 'item by item: the vehicle has not said whether it offers MAVLink FTP (AUTOPILOT_VERSION asked 1 time)'
+        vehicle.stored == intended()
+    }
+
+    def "AUTO on a vehicle asked in vain more than three times: item by item at once"() {
+        given:
+        channel.offersFtp = Optional.empty()
+        channel.asks = 4
+
+        when:
+        TransferResult r = settle(upload(TransferPath.AUTO))
+
+        then:
+        r.success()
+        channel.sent.first().time == 0.0d
+        r.note() == 'item by item: the vehicle has not said whether it offers MAVLink FTP (AUTOPILOT_VERSION asked 5 times)'
+    }
+
+    def "AUTO on a vehicle without FTP says so; the paths a user forced need no word"() {
+        given:
+        channel.offersFtp = Optional.of(false)
+
+        when:
+        TransferResult auto = settle(upload(TransferPath.AUTO))
+        TransferResult items = settle(upload(TransferPath.ITEMS))
+
+        then:
+        auto.note() == 'item by item: the vehicle offers no MAVLink FTP'
+        items.note() == ''
+        channel.asks == 0
+    }
+
     def "ITEMS never uses FTP"() {
         when:
         TransferResult r = settle(upload(TransferPath.ITEMS))

@@ -39,7 +39,8 @@ class MissionTransferSpec extends Specification {
 
     ManualClock clock = new ManualClock()
     RecordingChannel channel = new RecordingChannel(clock)
-    MissionTransferConfig config = MissionTransferConfig.DEFAULT
+    /** The mission protocol's own path: AUTO would add why it goes item by item to each note. */
+    MissionTransferConfig config = new MissionTransferConfig(dolphin.mavlink.LinkTimeouts.DEFAULT, TransferPath.ITEMS)
     MissionTransfers transfers = new MissionTransfers(channel, new ClockTimers(clock), { config })
     /** When each transfer ended, in clock seconds. */
     Map<CompletableFuture<TransferResult>, Double> ends = new IdentityHashMap<>()

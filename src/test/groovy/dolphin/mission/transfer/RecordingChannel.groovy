@@ -44,8 +44,12 @@ class RecordingChannel implements VehicleChannel {
     String vehicleId = '2'
     /** The link's measured round trip, which the transfers feed. */
     final RoundTrip roundTrip = new RoundTrip()
-    /** What the vehicle said of MAVLink FTP (empty: nothing yet). */
-    Optional<Boolean> offersFtp = Optional.empty()
+    /** What the vehicle said of MAVLink FTP (empty: nothing yet); most specs fly a vehicle without it. */
+    Optional<Boolean> offersFtp = Optional.of(false)
+    /** Times the transfers asked the vehicle what it offers. */
+    int asks
+    /** The vehicle side's answer to an ask, if any: it may set {@link #offersFtp}. */
+    Closure answerAsk
     /** Why the vehicle is not heard, or empty; the vehicle side may replace it. */
     Closure<String> silenceText = { '' }
     /** The vehicle side: gets every message sent; null sends them nowhere. */
@@ -64,6 +68,15 @@ class RecordingChannel implements VehicleChannel {
 
     @Override
     Optional<Boolean> offersFtp() { offersFtp }
+
+    @Override
+    void askWhatItOffers() {
+        asks++
+        answerAsk?.call()
+    }
+
+    @Override
+    int unansweredAsks() { offersFtp.present ? 0 : asks }
 
     @Override
     void send(MAVLinkMessage message) {
