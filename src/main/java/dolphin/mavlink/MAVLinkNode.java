@@ -7,6 +7,7 @@ import dolphin.core.EnvironmentException;
 import dolphin.core.Payload;
 import dolphin.core.Position;
 import dolphin.mavlink.link.Link;
+import dolphin.mavlink.link.LinkUrl;
 import java.net.SocketAddress;
 import java.time.Duration;
 import java.util.Optional;
@@ -110,6 +111,14 @@ public final class MAVLinkNode extends AbstractNode {
 
     public Link getLink() {
         return link;
+    }
+
+    /**
+     * Whether the vehicle is reached through a telemetry radio: its link is a serial port (where
+     * radios sit). Transfers then send frames a SiK radio carries well (docs/radios.md).
+     */
+    public boolean throughRadio() {
+        return link != null && link.url().kind() == LinkUrl.Transport.SERIAL;
     }
 
     /** Where the vehicle was last heard: replies go there. */

@@ -7,6 +7,7 @@ import dolphin.mission.model.BadItemException;
 import dolphin.mission.model.Fence;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
+import dolphin.mission.transfer.StoredItems;
 import dolphin.mission.model.RallyPoints;
 import java.util.ArrayList;
 import java.util.List;
@@ -114,13 +115,8 @@ final class AirspaceStore implements ItemStore {
 
     @Override
     public MissionItem reported(int seq) {
-        MissionItem i = items().get(seq);
-        if (type == MissionType.FENCE) {
-            float p1 = i.command() == MAV_CMD.MAV_CMD_NAV_FENCE_RETURN_POINT ? 0 : i.param1();
-            return new MissionItem(seq, i.command(), MAV_FRAME.MAV_FRAME_GLOBAL, p1, 0, 0, 0, i.x(), i.y(), 0, false);
-        }
-        return new MissionItem(seq, i.command(), MissionItem.altitudeReference(i.frame()), 0, 0, 0, 0, i.x(), i.y(),
-                (short) i.z(), false);
+        MissionItem i = items().get(seq).withSeq(seq);
+        return type == MissionType.FENCE ? StoredItems.fenceItem(i) : StoredItems.rallyItem(i);
     }
 
     @Override

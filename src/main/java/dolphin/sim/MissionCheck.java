@@ -4,6 +4,7 @@ import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_FRAME;
 import com.MAVLink.enums.MAV_MISSION_RESULT;
 import dolphin.mission.model.MissionItem;
+import dolphin.mission.transfer.StoredItems;
 import java.util.Map;
 import java.util.Set;
 
@@ -18,13 +19,6 @@ import java.util.Set;
  * must be sane.
  */
 final class MissionCheck {
-
-    /** Commands with a location, whose frame and x, y, z are checked. */
-    static final Set<Integer> POSITIONAL = Set.of(MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM,
-            MAV_CMD.MAV_CMD_NAV_LOITER_TURNS, MAV_CMD.MAV_CMD_NAV_LOITER_TIME, MAV_CMD.MAV_CMD_NAV_LAND,
-            MAV_CMD.MAV_CMD_NAV_TAKEOFF, MAV_CMD.MAV_CMD_NAV_CONTINUE_AND_CHANGE_ALT, MAV_CMD.MAV_CMD_NAV_LOITER_TO_ALT,
-            MAV_CMD.MAV_CMD_NAV_SPLINE_WAYPOINT, MAV_CMD.MAV_CMD_DO_SET_HOME, MAV_CMD.MAV_CMD_DO_SET_ROI,
-            MAV_CMD.MAV_CMD_DO_LAND_START);
 
     /** Commands without a location that ArduPilot stores in a mission. */
     static final Set<Integer> OTHERS = Set.of(MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH, MAV_CMD.MAV_CMD_NAV_DELAY,
@@ -70,7 +64,7 @@ final class MissionCheck {
         if (params != MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
             return params;
         }
-        if (!POSITIONAL.contains(item.command())) {
+        if (!StoredItems.POSITIONAL.contains(item.command())) {
             return OTHERS.contains(item.command()) ? MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
                     : MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED;
         }

@@ -12,6 +12,7 @@ import com.MAVLink.common.msg_mission_request_list;
 import com.MAVLink.enums.MAV_MISSION_RESULT;
 import com.MAVLink.enums.MAV_SEVERITY;
 import dolphin.mission.model.MissionItem;
+import dolphin.mission.transfer.StoredItems;
 import dolphin.mission.model.MissionType;
 
 /**
@@ -260,7 +261,7 @@ final class MissionItemProtocol {
     }
 
     private static MissionItem fromFloat(msg_mission_item i, MissionType type) {
-        boolean positional = type != MissionType.MISSION || MissionCheck.POSITIONAL.contains(i.command);
+        boolean positional = type != MissionType.MISSION || StoredItems.POSITIONAL.contains(i.command);
         int x = positional ? clampE7(i.x) : Math.round(i.x);
         int y = positional ? clampE7(i.y) : Math.round(i.y);
         return new MissionItem(i.seq, i.command, i.frame, i.param1, i.param2, i.param3, i.param4, x, y, i.z,
@@ -275,7 +276,7 @@ final class MissionItemProtocol {
 
     private static msg_mission_item toFloat(MissionItem item, int sys, int comp, MissionType type) {
         msg_mission_item m = new msg_mission_item();
-        boolean positional = type != MissionType.MISSION || MissionCheck.POSITIONAL.contains(item.command())
+        boolean positional = type != MissionType.MISSION || StoredItems.POSITIONAL.contains(item.command())
                 || item.seq() == 0;
         m.target_system = (short) sys;
         m.target_component = (short) comp;

@@ -6,6 +6,7 @@ import dolphin.core.Position;
 import com.MAVLink.enums.MAV_MISSION_RESULT;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
+import dolphin.mission.transfer.StoredItems;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Supplier;
@@ -85,10 +86,10 @@ final class MissionStore implements ItemStore {
         }
     }
 
-    /** An item as a download reports it: what ArduPilot keeps of it ({@link CommandStorage}), home included. */
+    /** An item as a download reports it: what ArduPilot keeps of it ({@link StoredItems}), home included. */
     @Override
     public MissionItem reported(int seq) {
-        return CommandStorage.reported(get(seq), plane);
+        return seq == 0 ? StoredItems.home(home.get()) : StoredItems.missionItem(get(seq), plane);
     }
 
     @Override

@@ -1,5 +1,7 @@
 package dolphin.sim;
 
+import dolphin.mavlink.ftp.FileCrc32;
+import java.io.ByteArrayOutputStream;
 import java.util.Arrays;
 import java.util.function.Consumer;
 
@@ -15,6 +17,8 @@ final class SimFtpSession {
     static final long STALE_NANOS = 3_000_000_000L;
     /** BurstReadFile's most replies to one request (its transfer_size). */
     static final int BURST_LIMIT = 2000;
+    /** AP_Filesystem::crc32 reads a file 64 bytes at a time. */
+    private static final int CRC_CHUNK = 64;
 
     private final MissionFiles files;
     /** Whether a client took the session: its id, system and component are set. */
@@ -100,11 +104,12 @@ final class SimFtpSession {
             case SimFtpPacket.BURST_READ_FILE -> burst(request, reply, link, now);
             case SimFtpPacket.CREATE_FILE, SimFtpPacket.OPEN_FILE_WO -> new SimFtpOutcome(openWrite(request, reply, now), false);
             case SimFtpPacket.WRITE_FILE -> new SimFtpOutcome(write(request, reply, now), false);
+            case SimFtpPacket.CALC_FILE_CRC32 -> new SimFtpOutcome(crc32(request, reply, now), false);
             // eaten: a client's ACK or NAK is not a request
             case SimFtpPacket.ACK, SimFtpPacket.NAK -> new SimFtpOutcome(reply, true);
             // paths outside @MISSION: the simulated vehicle has no other files or directories
             case SimFtpPacket.LIST_DIRECTORY, SimFtpPacket.REMOVE_FILE, SimFtpPacket.CREATE_DIRECTORY,
-                    SimFtpPacket.REMOVE_DIRECTORY, SimFtpPacket.CALC_FILE_CRC32, SimFtpPacket.RENAME ->
+                    SimFtpPacket.REMOVE_DIRECTORY, SimFtpPacket.RENAME ->
                     new SimFtpOutcome(reply.nak(request.nameLengthValid() ? SimFtpPacket.FILE_NOT_FOUND : SimFtpPacket.INVALID_DATA_SIZE),
                             false);
             default -> new SimFtpOutcome(reply.nak(SimFtpPacket.FAIL), false);
@@ -185,6 +190,28 @@ final class SimFtpSession {
             return reply.nak(SimFtpPacket.FILE_NOT_FOUND);
         }
         return writing ? reply.nak(SimFtpPacket.FAIL) : null;
+    }
+
+    /** The CRC32 of a whole file, read as OpenFileRO would (AP_Filesystem::crc32), in a file slot of its own. */
+    private SimFtpPacket crc32(SimFtpPacket request, SimFtpPacket reply, long now) {
+        if (!request.nameLengthValid()) {
+            return reply.nak(SimFtpPacket.INVALID_DATA_SIZE);
+        }
+        if (MissionFiles.typeOf(request.path()) == null) {
+            return reply.nak(SimFtpPacket.FILE_NOT_FOUND);
+        }
+        int slot = files.open(request.path(), true, now);
+        if (slot < 0) {
+            return reply.nak(SimFtpPacket.FAIL_ERRNO, -slot);
+        }
+        ByteArrayOutputStream whole = new ByteArrayOutputStream();
+        for (byte[] chunk = files.read(slot, 0, CRC_CHUNK, now); chunk.length > 0;
+                chunk = files.read(slot, whole.size(), CRC_CHUNK, now)) {
+            whole.writeBytes(chunk);
+        }
+        files.close(slot);
+        long crc = FileCrc32.of(whole.toByteArray());
+        return reply.ack(4, new byte[] {(byte) crc, (byte) (crc >> 8), (byte) (crc >> 16), (byte) (crc >> 24)}, 0);
     }
 
     private SimFtpPacket openWrite(SimFtpPacket request, SimFtpPacket reply, long now) {

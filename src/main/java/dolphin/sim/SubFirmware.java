@@ -9,6 +9,7 @@ import com.MAVLink.enums.SUB_MODE;
 import dolphin.core.Position;
 import dolphin.mavlink.VehicleFamily;
 import dolphin.mission.model.MissionItem;
+import dolphin.mission.transfer.StoredItems;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -162,7 +163,7 @@ final class SubFirmware implements Firmware {
      */
     @Override
     public Optional<NavRefusal> navRefusal(MissionItem item) {
-        int frame = MissionCheck.POSITIONAL.contains(item.command()) ? item.frame() : MAV_FRAME.MAV_FRAME_GLOBAL;
+        int frame = StoredItems.POSITIONAL.contains(item.command()) ? item.frame() : MAV_FRAME.MAV_FRAME_GLOBAL;
         long centimetres = Math.round(item.z() * 100.0);
         if (ABOVE_HOME.contains(frame)) {
             if (centimetres > 0) {

@@ -1,11 +1,16 @@
 package dolphin.sitl
 
+import com.MAVLink.common.msg_file_transfer_protocol
 import com.MAVLink.enums.MAV_CMD
+import com.MAVLink.enums.MAV_FRAME
 import dolphin.core.Position
 import dolphin.mavlink.LinkTimeouts
 import dolphin.mavlink.MAVLinkNode
+import dolphin.mission.model.Fence
+import dolphin.mission.model.FenceRegion
 import dolphin.mission.model.MissionItem
 import dolphin.mission.model.MissionType
+import dolphin.mission.model.RallyPoints
 import dolphin.mission.transfer.MissionTransferConfig
 import dolphin.mission.transfer.MissionTransfers
 import dolphin.mission.transfer.MissionVerification
@@ -83,6 +88,35 @@ class SitlFtpSpec extends Specification {
         MissionVerification.firstDifference(items, overFtp.orThrow()).isEmpty()
         MissionVerification.firstDifference(items, byItems.orThrow()).isEmpty()
         node.roundTrip().samples() > 0
+    }
+
+    def "the mission, a fence and rally points uploaded over FTP are verified by ArduPilot's CRC of its copy: nothing is read back"() {
+        given:
+        Position home = node.home
+        List<Integer> opcodes = Collections.synchronizedList([])
+        sitl.comms.addObserver { boolean incoming, link, frame ->
+            if (!incoming && frame.message() instanceof msg_file_transfer_protocol) {
+                opcodes << (frame.message().payload[3] & 0xff)
+            }
+        }
+        Fence fence = Fence.of([new FenceRegion.Polygon(true, [home.displace(-300, -300, 0), home.displace(-300, 300, 0),
+                                                               home.displace(300, 300, 0), home.displace(300, -300, 0)]),
+                                new FenceRegion.Circle(false, home.displace(100, 0, 0), 25.5)],
+                home.displace(0, 10, -30), MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT)
+        RallyPoints rally = RallyPoints.at([home.displace(50, 50, -40.3), home.displace(-50, 50, -45)])
+        List<MissionItem> survey = mission(40) + [MissionItem.command(42, MAV_CMD.MAV_CMD_DO_CHANGE_SPEED, 1, 7.5f, -1, 0),
+                                                  MissionItem.command(43, MAV_CMD.MAV_CMD_DO_SET_CAM_TRIGG_DIST, 12.5f, 0, 1, 0)]
+
+        when:
+        List<TransferResult> up = [transfers().upload().upload(MissionType.MISSION, survey, on(TransferPath.FTP), null),
+                                   transfers().upload().upload(MissionType.FENCE, fence.items(), on(TransferPath.FTP), null),
+                                   transfers().upload().upload(MissionType.RALLY, rally.items(), on(TransferPath.FTP), null)]
+                *.get(60, TimeUnit.SECONDS)
+
+        then:
+        up.every { it.success() && it.verified() }
+        opcodes.count { it == 14 } == 3   // CalcFileCRC32
+        opcodes.count { it == 4 } == 0    // OpenFileRO
     }
 
     def "a DO_JUMP to item 0 is refused when the file is closed"() {

@@ -9,6 +9,14 @@ import dolphin.mavlink.RoundTrip;
  */
 public interface FtpChannel {
 
+    /**
+     * The file bytes per request through a SiK telemetry radio: its deployed firmware carries
+     * frames of about 200 bytes and more badly (they wait for a window of their own, or are lost),
+     * so a frame stays at 187 bytes; as large as that allows, since the few requests in flight
+     * (ArduPilot queues five) bound what a round trip can carry.
+     */
+    int RADIO_DATA_BYTES = 160;
+
     /** Sends a message to the vehicle. */
     void send(MAVLinkMessage message);
 
@@ -23,4 +31,12 @@ public interface FtpChannel {
 
     /** The measured round trip of the vehicle's link. */
     RoundTrip roundTrip();
+
+    /**
+     * The most file bytes one request or reply carries: the protocol's 239, or fewer on a link that
+     * carries large frames badly (a SiK radio: docs/radios.md). Read when a transfer starts.
+     */
+    default int dataBytes() {
+        return FtpPayload.DATA_BYTES;
+    }
 }

@@ -60,6 +60,22 @@ public final class FtpClient {
         return result;
     }
 
+    /**
+     * The vehicle's CRC32 of a whole file ({@link FileCrc32}), which it reads itself: a read-back
+     * that costs one round trip; from any thread.
+     */
+    public CompletableFuture<Long> crc32(String path, LinkTimeouts timeouts) {
+        CompletableFuture<Long> result = new CompletableFuture<>();
+        timers.execute(() -> new FtpChecksum(open(path, timeouts)).start().whenComplete((crc, e) -> {
+            if (e == null) {
+                result.complete(crc);
+            } else {
+                result.completeExceptionally(e);
+            }
+        }));
+        return result;
+    }
+
     private static FtpProgress orNone(FtpProgress p) {
         return p == null ? FtpProgress.NONE : p;
     }

@@ -20,6 +20,7 @@ record FtpPayload(int seq, int session, int opcode, int size, int reqOpcode, boo
     static final int READ_FILE = 5;
     static final int CREATE_FILE = 6;
     static final int WRITE_FILE = 7;
+    static final int CALC_FILE_CRC32 = 14;
     static final int BURST_READ_FILE = 15;
     static final int ACK = 128;
     static final int NAK = 129;

@@ -6,21 +6,21 @@ import java.util.concurrent.CompletableFuture;
 import java.util.function.ToIntFunction;
 
 /**
- * Reads a whole file over one session: OpenFileRO, one BurstReadFile of 239-byte packets, then
+ * Reads a whole file over one session: OpenFileRO, one BurstReadFile of 239-byte packets (fewer
+ * bytes on a radio, {@link FtpChannel#dataBytes}), then
  * ReadFile for every packet the burst lost. The file ends at a short packet, at EOF, or at the
  * length the caller learns from its first bytes (an @MISSION file reports a fake size of 1 MiB).
  */
 final class FtpRead implements FtpSession.Owner {
 
-    private static final int BLOCK = FtpPayload.DATA_BYTES;
-
     private final FtpSession session;
+    private final int block;        // file bytes per reply
     private final ToIntFunction<byte[]> length;
     private final FtpProgress progress;
     private final CompletableFuture<FtpFile> result = new CompletableFuture<>();
     private final BitSet received = new BitSet();
     private final BitSet requested = new BitSet();
-    private byte[] buffer = new byte[BLOCK];
+    private byte[] buffer = new byte[FtpPayload.DATA_BYTES];
     private long reported = -1;
     private long end = -1;          // the file's length, once known
     private long eofAt = -1;        // nothing at or after this offset
@@ -33,6 +33,7 @@ final class FtpRead implements FtpSession.Owner {
     /** @param length the file's whole length from its first bytes, -1 while they do not tell; null: read to the end */
     FtpRead(FtpSession session, ToIntFunction<byte[]> length, FtpProgress progress) {
         this.session = session;
+        this.block = session.dataBytes();
         this.length = length;
         this.progress = progress;
         session.serve(this);
@@ -57,7 +58,7 @@ final class FtpRead implements FtpSession.Owner {
                 } else {
                     session.fail(FtpException.refused(session.path(), request, reply));
                 }
-                requested.clear(block(request.offset()));
+                requested.clear(blockOf(request.offset()));
             }
             default -> { }
         }
@@ -68,7 +69,7 @@ final class FtpRead implements FtpSession.Owner {
         if (reply.opcode() == FtpPayload.ACK) {
             byte[] d = reply.data();
             reported = d.length < 4 ? -1 : (d[0] & 0xff) | (d[1] & 0xff) << 8 | (d[2] & 0xff) << 16 | (long) (d[3] & 0xff) << 24;
-            burst = session.send(FtpPayload.BURST_READ_FILE, BLOCK, 0, null);
+            burst = session.send(FtpPayload.BURST_READ_FILE, block, 0, null);
             bursting = true;
         } else if (!reset && FtpErrors.busy(reply)) {
             // sessions of ours left open (their TerminateSession lost): close them all, then open again
@@ -102,7 +103,7 @@ final class FtpRead implements FtpSession.Owner {
             }
             // the packets before the EOF NAK, numbered from the burst's seq + 1, reached the end
             long packets = ((p.seq() - burst.seq()) & 0xffff) - 1;
-            long at = burst.offset() + packets * BLOCK;
+            long at = burst.offset() + packets * block;
             eofAt = eofAt < 0 ? at : Math.min(eofAt, at);
             bursting = false;
             return;
@@ -123,16 +124,16 @@ final class FtpRead implements FtpSession.Owner {
         });
     }
 
-    private static int block(long offset) {
-        return (int) (offset / BLOCK);
+    private int blockOf(long offset) {
+        return (int) (offset / block);
     }
 
     private void store(long offset, byte[] data) {
-        if (offset % BLOCK != 0 || received.get(block(offset))) {
+        if (offset % block != 0 || received.get(blockOf(offset))) {
             return;
         }
-        int b = block(offset);
-        if (data.length < BLOCK) {
+        int b = blockOf(offset);
+        if (data.length < block) {
             end = end < 0 ? offset + data.length : Math.min(end, offset + data.length);
         }
         int need = (int) offset + data.length;
@@ -144,7 +145,7 @@ final class FtpRead implements FtpSession.Owner {
         bytes += data.length;
         if (length != null && end < 0 && received.get(0)) {
             // every block so far is whole (a short one ends the file): the prefix read so far
-            int whole = length.applyAsInt(Arrays.copyOf(buffer, received.nextClearBit(0) * BLOCK));
+            int whole = length.applyAsInt(Arrays.copyOf(buffer, received.nextClearBit(0) * block));
             if (whole >= 0) {
                 end = whole;
             }
@@ -158,7 +159,7 @@ final class FtpRead implements FtpSession.Owner {
         if (limit < 0) {
             return -1;
         }
-        int blocks = (int) ((limit + BLOCK - 1) / BLOCK);
+        int blocks = (int) ((limit + block - 1) / block);
         return received.nextClearBit(0) >= blocks ? limit : -1;
     }
 
@@ -176,7 +177,7 @@ final class FtpRead implements FtpSession.Owner {
             return;
         }
         long limit = end >= 0 ? end : eofAt;
-        int blocks = limit < 0 ? Integer.MAX_VALUE : (int) ((limit + BLOCK - 1) / BLOCK);
+        int blocks = limit < 0 ? Integer.MAX_VALUE : (int) ((limit + block - 1) / block);
         int b = 0;
         while (session.free() > 0) {
             while (received.get(b) || requested.get(b)) {
@@ -186,7 +187,7 @@ final class FtpRead implements FtpSession.Owner {
                 return;
             }
             requested.set(b);
-            session.send(FtpPayload.READ_FILE, BLOCK, (long) b * BLOCK, null);
+            session.send(FtpPayload.READ_FILE, block, (long) b * block, null);
         }
     }
 }

@@ -97,6 +97,11 @@ final class FtpSession {
         return channel.roundTrip();
     }
 
+    /** The file bytes per request or reply on this link, 1 to 239. */
+    int dataBytes() {
+        return Math.max(1, Math.min(FtpPayload.DATA_BYTES, channel.dataBytes()));
+    }
+
     ProtocolTimers timers() {
         return timers;
     }

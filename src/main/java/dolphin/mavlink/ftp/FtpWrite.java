@@ -5,20 +5,20 @@ import java.util.BitSet;
 import java.util.concurrent.CompletableFuture;
 
 /**
- * Writes a whole file over one session: CreateFile, WriteFile of up to 239 bytes with at most
+ * Writes a whole file over one session: CreateFile, WriteFile of up to 239 bytes (fewer on a radio,
+ * {@link FtpChannel#dataBytes}) with at most
  * {@link FtpSession#WINDOW} outstanding (each sent again on its own timeout), then TerminateSession,
  * whose answer is the vehicle's verdict on the file (ArduPilot parses an @MISSION file when it is
  * closed).
  */
 final class FtpWrite implements FtpSession.Owner {
 
-    private static final int BLOCK = FtpPayload.DATA_BYTES;
-
     private final FtpSession session;
     private final byte[] bytes;
     private final FtpProgress progress;
     private final CompletableFuture<FtpFile> result = new CompletableFuture<>();
     private final BitSet acked = new BitSet();
+    private final int block;        // file bytes per WriteFile
     private final int blocks;
     private int next = -1;          // the next block to send; -1 until the file is open
     private long done;
@@ -29,7 +29,8 @@ final class FtpWrite implements FtpSession.Owner {
         this.session = session;
         this.bytes = bytes.clone();
         this.progress = progress;
-        this.blocks = (bytes.length + BLOCK - 1) / BLOCK;
+        this.block = session.dataBytes();
+        this.blocks = (bytes.length + block - 1) / block;
         session.serve(this);
     }
 
@@ -64,7 +65,7 @@ final class FtpWrite implements FtpSession.Owner {
                     session.fail(FtpException.refused(session.path(), request, reply));
                     return;
                 }
-                int b = (int) (request.offset() / BLOCK);
+                int b = (int) (request.offset() / block);
                 if (!acked.get(b)) {
                     acked.set(b);
                     done += request.size();
@@ -90,8 +91,8 @@ final class FtpWrite implements FtpSession.Owner {
 
     private void advance() {
         while (next < blocks && session.free() > 0) {
-            int from = next * BLOCK;
-            byte[] chunk = Arrays.copyOfRange(bytes, from, Math.min(bytes.length, from + BLOCK));
+            int from = next * block;
+            byte[] chunk = Arrays.copyOfRange(bytes, from, Math.min(bytes.length, from + block));
             session.send(FtpPayload.WRITE_FILE, chunk.length, from, chunk);
             next++;
         }

@@ -2,11 +2,13 @@ package dolphin.mission.flight;
 
 import com.MAVLink.Messages.MAVLinkMessage;
 import com.MAVLink.enums.MAV_PROTOCOL_CAPABILITY;
+import dolphin.core.Position;
 import dolphin.core.VehicleEvent;
 import dolphin.core.VehicleEvent.EventKind;
 import dolphin.mavlink.CommandResult;
 import dolphin.mavlink.MAVLinkNode;
 import dolphin.mavlink.RoundTrip;
+import dolphin.mavlink.VehicleFamily;
 import dolphin.mavlink.VehicleState;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
@@ -160,6 +162,21 @@ public final class VehicleMissions implements MissionVehicle {
         var bits = node.capabilities();
         return bits.isPresent() ? Optional.of((bits.getAsLong() & MAV_PROTOCOL_CAPABILITY.MAV_PROTOCOL_CAPABILITY_FTP) != 0)
                 : Optional.empty();
+    }
+
+    @Override
+    public boolean throughRadio() {
+        return node.throughRadio();
+    }
+
+    @Override
+    public Position home() {
+        return node.getHome();
+    }
+
+    @Override
+    public VehicleFamily family() {
+        return node.getFamily();
     }
 
     @Override

@@ -1,6 +1,9 @@
 package dolphin.mission.transfer;
 
+import dolphin.core.Position;
 import dolphin.mavlink.ProtocolTimers;
+import dolphin.mavlink.VehicleFamily;
+import dolphin.mavlink.ftp.FileCrc32;
 import dolphin.mavlink.ftp.FtpClient;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
@@ -8,10 +11,12 @@ import java.util.List;
 import java.util.Optional;
 
 /**
- * Uploads a list as one file ({@link MissionFtpFile}), then reads the file back and compares it
- * with what was sent ({@link MissionVerification}): ArduPilot ACKs a TerminateSession repeated after
- * its refusal was lost, so only the read-back proves the vehicle holds the list. Progress counts the
- * bytes written and read back, twice the file's length in all.
+ * Uploads a list as one file ({@link MissionFtpFile}), then has it read back: ArduPilot ACKs a
+ * TerminateSession repeated after its refusal was lost, so only the read-back proves the vehicle
+ * holds the list. The vehicle reads it itself and answers with its CRC32, compared with that of the
+ * file predicted from what was sent; when they differ, the file is read back over the link and
+ * compared item by item ({@link MissionVerification}). Progress counts the bytes written and read
+ * back, twice the file's length in all.
  */
 final class FtpMissionUpload extends FtpMissionTransfer {
 
@@ -39,11 +44,42 @@ final class FtpMissionUpload extends FtpMissionTransfer {
         byte[] file = MissionFtpFile.encode(type, items);
         long total = 2L * file.length;
         ftp.write(path, file, config.timeouts(), (done, length, resent) -> reportBytes(true, done, total, resent))
-                .thenCompose(written -> {
-                    resends = written.resends();
-                    return ftp.read(path, MissionFtpFile::length, config.timeouts(),
-                            (done, length, resent) -> reportBytes(true, file.length + done, total, written.resends() + resent));
-                })
+                .whenComplete((written, e) -> {
+                    if (e != null) {
+                        failed(e);
+                    } else {
+                        resends = written.resends();
+                        verify(file.length, total);
+                    }
+                });
+    }
+
+    /**
+     * Compares the vehicle's CRC32 of the file it reads back with that of the file predicted from
+     * what was sent ({@link StoredItems}): equal, the list is verified at the cost of one round trip;
+     * otherwise (no home known, a prediction that misses, a vehicle without CalcFileCRC32) the whole
+     * file is read back and compared item by item.
+     */
+    private void verify(long written, long total) {
+        Position home = vehicle.home();
+        if (type == MissionType.MISSION && home == null) {
+            readBack(written, total);
+            return;
+        }
+        long expected = FileCrc32.of(StoredItems.file(type, items, home, vehicle.family() == VehicleFamily.PLANE));
+        ftp.crc32(path, config.timeouts()).whenComplete((crc, e) -> {
+            if (e == null && crc == expected) {
+                reportBytes(true, total, total, resends);
+                succeed(items);
+            } else {
+                readBack(written, total);
+            }
+        });
+    }
+
+    private void readBack(long written, long total) {
+        ftp.read(path, MissionFtpFile::length, config.timeouts(),
+                        (done, length, resent) -> reportBytes(true, written + done, total, resends + resent))
                 .whenComplete((read, e) -> {
                     if (e != null) {
                         failed(e);

@@ -100,6 +100,11 @@ public final class MissionTransfers {
             public RoundTrip roundTrip() {
                 return vehicle.roundTrip();
             }
+
+            @Override
+            public int dataBytes() {
+                return vehicle.throughRadio() ? RADIO_DATA_BYTES : FtpChannel.super.dataBytes();
+            }
         }, timers);
     }
 

@@ -1,7 +1,9 @@
 package dolphin.mission.transfer;
 
 import com.MAVLink.Messages.MAVLinkMessage;
+import dolphin.core.Position;
 import dolphin.mavlink.RoundTrip;
+import dolphin.mavlink.VehicleFamily;
 import java.util.Optional;
 
 /**
@@ -40,6 +42,18 @@ public interface VehicleChannel {
 
     /** How many times the vehicle was asked what it offers without answering (0 once it answered). */
     int unansweredAsks();
+
+    /**
+     * Whether the vehicle is reached through a telemetry radio (one reports on its link, or the link
+     * is a serial port): transfers then send frames the radio carries well (docs/radios.md).
+     */
+    boolean throughRadio();
+
+    /** The vehicle's home as it last reported it (HOME_POSITION), or null while it has not. */
+    Position home();
+
+    /** The vehicle's firmware family: what it keeps of an item depends on it ({@link StoredItems}). */
+    VehicleFamily family();
 
     /** Why the vehicle is not heard ("no heartbeat within 5 s"), or empty while it is. */
     String silence();

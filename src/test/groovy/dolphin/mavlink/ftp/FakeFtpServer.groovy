@@ -33,6 +33,8 @@ class FakeFtpServer {
     Closure<Boolean> refuseList = { String path, byte[] bytes -> false }
     /** What the vehicle keeps of a file written and accepted (ArduPilot stores a list its own way): path, bytes. */
     Closure<byte[]> keep = { String path, byte[] bytes -> bytes }
+    /** Whether CalcFileCRC32 is refused, as by a vehicle without it. */
+    boolean refuseCrc
     Duration latency = Duration.ofMillis(20)
     Duration serviceTime = Duration.ofMillis(1)
     /** Extra random delay of each packet, which reorders them. */
@@ -179,6 +181,19 @@ class FakeFtpServer {
                         byte[] d = Arrays.copyOfRange(f, (int) r.offset(), (int) Math.min(f.length, r.offset() + r.size()))
                         reply(ack(r, d.length, r.offset(), d))
                     }
+                }
+                break
+            case FtpPayload.CALC_FILE_CRC32:
+                // nothing opened in the session: the file is read whole (AP_Filesystem::crc32)
+                sessions.remove(r.session())
+                String crcPath = name(r)
+                if (refuseCrc) {
+                    reply(nak(r, FtpErrors.FAIL))
+                } else if (!files.containsKey(crcPath)) {
+                    reply(nak(r, 10))
+                } else {
+                    long crc = FileCrc32.of(files[crcPath])
+                    reply(ack(r, 4, 0, ByteBuffer.allocate(4).order(ByteOrder.LITTLE_ENDIAN).putInt((int) crc).array()))
                 }
                 break
             case FtpPayload.BURST_READ_FILE:

@@ -159,6 +159,15 @@ class FakeFlightVehicle implements MissionVehicle {
     Optional<Boolean> offersFtp() { Optional.empty() }
 
     @Override
+    boolean throughRadio() { false }
+
+    @Override
+    dolphin.core.Position home() { state.home() }
+
+    @Override
+    VehicleFamily family() { family }
+
+    @Override
     void askWhatItOffers() { }
 
     @Override

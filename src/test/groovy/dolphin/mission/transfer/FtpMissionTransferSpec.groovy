@@ -336,6 +336,92 @@ class FtpMissionTransferSpec extends Specification {
         channel.asks == 0
     }
 
+    /** ArduPilot's storage of a list written: what StoredItems says it keeps, home as item 0. */
+    void vehicleStoresAsArduPilot() {
+        channel.home = MissionTransferSpec.HOME
+        server.keep = { String path, byte[] bytes ->
+            MissionFtpFile.Contents c = MissionFtpFile.decode(bytes)
+            StoredItems.file(c.type(), c.items(), MissionTransferSpec.HOME, false)
+        }
+    }
+
+    def "the vehicle's CRC of its read-back matches the one predicted: verified with one request, nothing read"() {
+        given:
+        vehicleStoresAsArduPilot()
+
+        when:
+        TransferResult r = settle(upload(TransferPath.FTP))
+
+        then:
+        r.verified()
+        server.requests['CalcFileCRC32'] == 1
+        server.requests['OpenFileRO'] == 0
+        statuses.last().done() == statuses.last().total()
+    }
+
+    @Unroll
+    def "#when: the file is read back and compared item by item"() {
+        given:
+        vehicleStoresAsArduPilot()
+        setUp(this)
+
+        when:
+        TransferResult r = settle(upload(TransferPath.FTP))
+
+        then:
+        r.verified()
+        server.requests['CalcFileCRC32'] == (crcAsked ? 1 : 0)
+        server.requests['OpenFileRO'] == 1
+
+        where:
+        when                                                     | crcAsked | setUp
+        'the vehicle has not reported its home'                  | false    | { it.channel.home = null }
+        'the vehicle keeps a param2 not foreseen (CRC differs)'  | true     | { spec ->
+            Closure stored = spec.server.keep
+            spec.server.keep = { String path, byte[] b ->
+                byte[] f = stored(path, b)
+                MissionFtpFile.Contents c = MissionFtpFile.decode(f)
+                List<MissionItem> items = new ArrayList<>(c.items())
+                MissionItem last = items.last()
+                items[-1] = new MissionItem(last.seq(), last.command(), last.frame(), last.param1(), 7f, last.param3(),
+                        last.param4(), last.x(), last.y(), last.z(), last.autocontinue())
+                MissionFtpFile.encode(c.type(), items)
+            }
+        }
+        'the vehicle refuses CalcFileCRC32'                      | true     | { it.server.refuseCrc = true }
+    }
+
+    @Unroll
+    def "#link: file bytes per FTP request and reply at most #most"() {
+        given: 'no home reported, so the file is read back over the link too'
+        channel.throughRadio = radio
+        List<Integer> written = []
+        List<Integer> read = []
+        Closure toVehicle = channel.receiver
+        channel.receiver = { MAVLinkMessage m ->
+            if (m instanceof msg_file_transfer_protocol) {
+                def p = dolphin.mavlink.ftp.FtpPayload.decode(m)
+                if (p.opcode() == 7) { written << p.size() }
+                if (p.opcode() == 5 || p.opcode() == 15) { read << p.size() }
+            }
+            toVehicle(m)
+        }
+
+        when:
+        TransferResult r = settle(upload(TransferPath.FTP, MissionType.MISSION, intended()))
+
+        then:
+        r.verified()
+        written.max() == Math.min(most, 10 + 5 * 38)
+        written.sum() == 10 + 5 * 38
+        read.every { it == most }
+
+        where:
+        link                 | radio | most
+        'a radio'            | true  | 160
+        'a link without one' | false | 239
+    }
+
     def "ITEMS never uses FTP"() {
         when:
         TransferResult r = settle(upload(TransferPath.ITEMS))

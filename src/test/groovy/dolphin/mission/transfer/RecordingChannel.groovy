@@ -46,6 +46,11 @@ class RecordingChannel implements VehicleChannel {
     final RoundTrip roundTrip = new RoundTrip()
     /** What the vehicle said of MAVLink FTP (empty: nothing yet); most specs fly a vehicle without it. */
     Optional<Boolean> offersFtp = Optional.of(false)
+    /** The vehicle's home as it reported it (null: not yet), and its family. */
+    dolphin.core.Position home
+    dolphin.mavlink.VehicleFamily family = dolphin.mavlink.VehicleFamily.COPTER
+    /** Whether the vehicle is reached through a telemetry radio. */
+    boolean throughRadio
     /** Times the transfers asked the vehicle what it offers. */
     int asks
     /** The vehicle side's answer to an ask, if any: it may set {@link #offersFtp}. */
@@ -68,6 +73,15 @@ class RecordingChannel implements VehicleChannel {
 
     @Override
     Optional<Boolean> offersFtp() { offersFtp }
+
+    @Override
+    boolean throughRadio() { throughRadio }
+
+    @Override
+    dolphin.core.Position home() { home }
+
+    @Override
+    dolphin.mavlink.VehicleFamily family() { family }
 
     @Override
     void askWhatItOffers() {

@@ -110,6 +110,39 @@ class SimMissionTransferSpec extends Specification {
         fleet.vehicle(1).fence() == fence
     }
 
+    @Unroll
+    def "over FTP to a simulated #kind, the mission, fence and rally points are verified by the vehicle's CRC of its copy: nothing is read back"() {
+        given:
+        h.fleet(1, kind, 1, SimOptions.DEFAULT, FaultModel.NONE)
+        h.eventually(20) { assert h.node('1')?.home != null && h.node('1').capabilities().present }
+        def node = h.node('1')
+        Position home = node.home
+        List<Integer> opcodes = new java.util.concurrent.CopyOnWriteArrayList<>()
+        h.comms.addObserver { boolean incoming, link, frame ->
+            if (!incoming && frame.message() instanceof com.MAVLink.common.msg_file_transfer_protocol) {
+                opcodes << (frame.message().payload[3] & 0xff)
+            }
+        }
+        Fence fence = Fence.of([new FenceRegion.Polygon(true, [home.displace(-300, -300, 0), home.displace(-300, 300, 0),
+                                                               home.displace(300, 300, 0), home.displace(300, -300, 0)]),
+                                new FenceRegion.Circle(false, home.displace(100, 0, 0), 25.5)],
+                home.displace(0, 10, -30), MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT)
+        RallyPoints rally = RallyPoints.at([home.displace(50, 50, -40.3), home.displace(-50, 50, -45)])
+
+        when:
+        def up = [MissionLayer.uploads(node).upload(missionAround(home, 8, 30.123)),
+                  MissionLayer.uploads(node).upload(MissionType.FENCE, fence.items()),
+                  MissionLayer.uploads(node).upload(MissionType.RALLY, rally.items())]*.get(30, TimeUnit.SECONDS)
+
+        then:
+        up.every { it.success() && it.verified() && it.note() == 'over FTP' }
+        opcodes.count { it == 14 } == 3   // CalcFileCRC32
+        opcodes.count { it == 4 } == 0    // OpenFileRO: no read-back over the link
+
+        where:
+        kind << [VehicleKind.COPTER, VehicleKind.PLANE]
+    }
+
     def "with 30% loss both ways a download always returns what the vehicle holds, whatever became of the upload before it"() {
         given: 'the vehicle may cancel an upload after 8 s without an item; the download gives up only after 10 s without progress'
         def fleet = h.fleet(1, VehicleKind.COPTER, 1, SimOptions.DEFAULT, FaultModel.loss(0.3, 7))

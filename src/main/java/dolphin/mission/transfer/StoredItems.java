@@ -1,9 +1,14 @@
-package dolphin.sim;
+package dolphin.mission.transfer;
 
 import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_FRAME;
 import com.MAVLink.enums.MAV_MOUNT_MODE;
+import dolphin.core.Position;
 import dolphin.mission.model.MissionItem;
+import dolphin.mission.model.MissionType;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
 
 /**
  * What ArduPilot gives back of a mission item it stored: AP_Mission keeps each command in a few
@@ -13,15 +18,68 @@ import dolphin.mission.model.MissionItem;
  * as GLOBAL, GLOBAL_RELATIVE_ALT or GLOBAL_TERRAIN_ALT, and a command without a location has x, y
  * and z 0 and frame GLOBAL. Only ArduPlane keeps a NAV_WAYPOINT's acceptance radius and pass-by
  * distance (as whole metres up to 255) instead of its hold time. Integer fields take a float as C
- * does on x86 SITL: truncated towards zero, then cut to the field's width.
+ * does on x86 SITL: truncated towards zero, then cut to the field's width. Item 0 of a mission is
+ * the vehicle's home. A fence keeps of each item its command, param1 (none for the return point)
+ * and position; a rally point its position, altitude reference and whole metres of height.
+ *
+ * <p>The simulated vehicles answer downloads with these items, and an FTP upload predicts from them
+ * the file the vehicle will read back ({@link #file}), so the recordings of SITL that pin the
+ * simulator's answers pin the prediction too.
  */
-final class CommandStorage {
+public final class StoredItems {
 
-    private CommandStorage() {
+    /** Commands with a location, whose frame and x, y, z ArduPilot keeps. */
+    public static final Set<Integer> POSITIONAL = Set.of(MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM,
+            MAV_CMD.MAV_CMD_NAV_LOITER_TURNS, MAV_CMD.MAV_CMD_NAV_LOITER_TIME, MAV_CMD.MAV_CMD_NAV_LAND,
+            MAV_CMD.MAV_CMD_NAV_TAKEOFF, MAV_CMD.MAV_CMD_NAV_CONTINUE_AND_CHANGE_ALT, MAV_CMD.MAV_CMD_NAV_LOITER_TO_ALT,
+            MAV_CMD.MAV_CMD_NAV_SPLINE_WAYPOINT, MAV_CMD.MAV_CMD_DO_SET_HOME, MAV_CMD.MAV_CMD_DO_SET_ROI,
+            MAV_CMD.MAV_CMD_DO_LAND_START);
+
+    private StoredItems() {
     }
 
-    /** The item as a download reports it, for any command {@link MissionCheck} accepts. */
-    static MissionItem reported(MissionItem i, boolean plane) {
+    /**
+     * The file a vehicle holding {@code sent} reads back over FTP ({@link MissionFtpFile}): each item
+     * as it keeps it, and for a mission its home in place of item 0.
+     *
+     * @param home the vehicle's home, for a mission; null for a fence or rally points
+     */
+    public static byte[] file(MissionType type, List<MissionItem> sent, Position home, boolean plane) {
+        List<MissionItem> held = new ArrayList<>(sent.size());
+        for (MissionItem i : sent) {
+            held.add(switch (type) {
+                case MISSION -> i.seq() == 0 ? home(home) : missionItem(i, plane);
+                case FENCE -> fenceItem(i);
+                case RALLY -> rallyItem(i);
+            });
+        }
+        return MissionFtpFile.encode(type, held);
+    }
+
+    /**
+     * Home as AP_Mission gives it for item 0: a NAV_WAYPOINT at the vehicle's home, its height above
+     * mean sea level in the whole centimetres ArduPilot keeps (HOME_POSITION reports them in mm).
+     */
+    public static MissionItem home(Position home) {
+        int centimetres = (int) Math.round(home.hae() * 100);
+        return new MissionItem(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_FRAME.MAV_FRAME_GLOBAL, 0, 0, 0, 0,
+                MissionItem.degE7(home.latitudeDegrees()), MissionItem.degE7(home.longitudeDegrees()), centimetres * 0.01f, true);
+    }
+
+    /** A fence item as a download reports it. */
+    public static MissionItem fenceItem(MissionItem i) {
+        float p1 = i.command() == MAV_CMD.MAV_CMD_NAV_FENCE_RETURN_POINT ? 0 : i.param1();
+        return new MissionItem(i.seq(), i.command(), MAV_FRAME.MAV_FRAME_GLOBAL, p1, 0, 0, 0, i.x(), i.y(), 0, false);
+    }
+
+    /** A rally point as a download reports it. */
+    public static MissionItem rallyItem(MissionItem i) {
+        return new MissionItem(i.seq(), i.command(), MissionItem.altitudeReference(i.frame()), 0, 0, 0, 0, i.x(), i.y(),
+                (short) i.z(), false);
+    }
+
+    /** A mission item as a download reports it, for any command ArduPilot accepts. */
+    public static MissionItem missionItem(MissionItem i, boolean plane) {
         float p1 = 0;
         float p2 = 0;
         float p3 = 0;
@@ -131,7 +189,7 @@ final class CommandStorage {
             default -> {
             }
         }
-        if (!MissionCheck.POSITIONAL.contains(i.command())) {
+        if (!POSITIONAL.contains(i.command())) {
             return new MissionItem(i.seq(), i.command(), MAV_FRAME.MAV_FRAME_GLOBAL, p1, p2, p3, p4, 0, 0, 0, true);
         }
         int reference = MissionItem.altitudeReference(i.frame());
