@@ -95,6 +95,7 @@ import os
 import pty
 import random
 import selectors
+import signal
 import socket
 import sys
 import time
@@ -734,6 +735,8 @@ class Relay:
             self.write(t, "stat %s in %d air %d out %d rx %d/%d tx %d/%d" % (
                 radio.name, c["in"], c["air"], c["out"], len(radio.rx), RX_BUFF_MAX - 1,
                 len(radio.line_out.queue), TX_BUFF_MAX - 1))
+        if self.logfile:
+            self.logfile.flush()
         self.sched.at(t + self.stats_interval_us, self.periodic_stats)
 
     def command(self, line):
@@ -866,6 +869,7 @@ def main():
     profile = tuple(d if g is None else g for g, d in zip(given, PROFILES[a.profile]))
     log = open(a.log, "a", buffering=1 << 16) if a.log else None
     relay = Relay(a, profile, log)
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(0))   # stop as on quit: the log flushed, the pty link removed
     if a.gcs_pty:
         print("ready vehicle %s pty %s" % (",".join(map(str, a.vehicle_port)), a.gcs_pty), flush=True)
     else:
