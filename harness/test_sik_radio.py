@@ -223,6 +223,27 @@ class AirTest(unittest.TestCase):
         self.assertAlmostEqual(78, statistics.mean(delays), delta=15)
 
 
+class MultipointTest(unittest.TestCase):
+
+    def test_two_vehicle_radios_take_turns_with_the_ground_radio_and_all_hear_it(self):
+        sched = sik.Scheduler()
+        timing = sik.Timing()
+        ground = sik.Radio("g", "up", timing, 57600, sched, lambda *_: None)
+        vehicles = [sik.Radio("v%d" % i, "down", timing, 57600, sched, lambda *_: None) for i in (1, 2)]
+        heard = {r.name: [] for r in [ground] + vehicles}
+        for r in [ground] + vehicles:
+            r.to_host = lambda f, t, name=r.name: heard[name].append(f)
+        air = sik.Air(ground, vehicles, timing, [sik.Channel(CLEAR, 1), sik.Channel(CLEAR, 2)], sched, lambda *_: None)
+        ground.rx += frame(30, 1)
+        vehicles[0].rx += frame(30, 2)
+        vehicles[1].rx += frame(30, 3)
+        sched.run_until(3 * 118400)               # three windows: G, V1, V2
+        self.assertEqual([frame(30, 1)], heard["v1"])
+        self.assertEqual([frame(30, 1)], heard["v2"])
+        self.assertEqual([frame(30, 2), frame(30, 3)], heard["g"])
+        self.assertIsNone(air.bonus)
+
+
 class BufferTest(unittest.TestCase):
 
     def test_bytes_arriving_at_a_full_buffer_are_dropped_and_logged_with_their_frame(self):
