@@ -54,7 +54,7 @@ What is modelled, and from which file of the SiK firmware (github.com/ArduPilot/
   Gilbert-Elliott channel per vehicle radio: good periods, exponentially distributed with mean
   --mean-good seconds (15 s: bad periods start at 1/15 a second), lose P_good; bad periods of fixed
   length B lose P_bad. Profiles: sik (P_good 1 %, P_bad 50 %, B 1 s: 4.1 % of packets lost on average),
-  worse (3 %, 60 %, 2 s: 10.3 %), clear (no loss). The channel's periods come from one random
+  worse (3 %, 60 %, 2 s: 9.7 %), clear (no loss). The channel's periods come from one random
   generator seeded by --seed, the packet draws from another, so a run repeats up to its timing.
 
 Not modelled: frequency hopping, its sync search and lost sync (the radios are always in step, on
