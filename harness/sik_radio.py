@@ -368,7 +368,6 @@ class RadioStatus:
     """RADIO_STATUS frames as mavlink.c sends them, built with pymavlink, from system 51 component 68."""
 
     def __init__(self):
-        os.environ.setdefault("MAVLINK20", "1")
         from pymavlink.dialects.v10 import common as v1
         from pymavlink.dialects.v20 import common as v2
         self.dialects = {1: v1, 2: v2}
@@ -404,13 +403,12 @@ class Radio:
         self.framer = Framer()
         self.to_host = None                 # callable(bytes, t_us): each frame (or run of other bytes) for the host
         self.wake = None                    # when the next frame to the host will be whole
-        self.report_due = False
         self.rssi = self.noise = 0          # statistics.average_rssi, average_noise
         self.remote = (0, 0)                # remote_statistics
         self.rx_errors = 0
         self.send_statistics = False
         self.counts = dict.fromkeys(("in", "air", "out", "buffer_full", "serial_full", "air_loss"), 0)
-        self.labels = []                    # (start offset in line_in, length, description) to name drops
+        self.labels = []                    # (offset in all bytes from the host, length, the write): to name drops
         self.in_offset = 0
 
     # ---- serial side
@@ -510,7 +508,7 @@ class Radio:
             self.report(t_us)
         return data
 
-    def heard(self, rssi, t_us):
+    def heard(self, rssi):
         self.rssi = (rssi + 7 * self.rssi) // 8
 
     def sample_noise(self, noise):
@@ -582,7 +580,6 @@ class Air:
         self.turn = -1
         self.generation = 0                 # windows started: stale polls from an ended window are ignored
         self.packets = {"up": [0, 0], "down": [0, 0]}   # air packets sent, lost
-        self.stats_at = 0
         self.sched.at(0, self.start_window)
         self.sched.at(LINK_UPDATE_US, self.link_update)
 
@@ -657,7 +654,7 @@ class Air:
             if data:
                 self.log(t, "drop %s air-loss %d bytes %s" % (sender.direction, len(data), describe_packet(data)))
             return
-        receiver.heard(self.RSSI_BAD if channel.bad(t) else self.RSSI_GOOD, t)
+        receiver.heard(self.RSSI_BAD if channel.bad(t) else self.RSSI_GOOD)
         if kind == "statistics":
             receiver.remote = (sender.rssi, sender.noise)
         elif data:
@@ -836,12 +833,18 @@ class Relay:
                 self.sched.run_until(self.now_us())
                 t = self.sched.now
                 if kind == "vehicle":
-                    data, addr = self.vehicle_socks[i].recvfrom(65536)
+                    try:
+                        data, addr = self.vehicle_socks[i].recvfrom(65536)
+                    except OSError:      # an ICMP port unreachable for an earlier send: no datagram
+                        continue
                     if addr[0] == HOST:
                         self.vehicle_addrs[i] = addr
                         self.vehicles[i].from_host(data, t)
                 elif kind == "gcs":
-                    data, addr = self.gcs_sock.recvfrom(65536)
+                    try:
+                        data, addr = self.gcs_sock.recvfrom(65536)
+                    except OSError:
+                        continue
                     if addr != self.gcs_addr:
                         self.ignored += 1
                         continue
