@@ -66,15 +66,18 @@ ground radio (windows G, V1, V2, ...); the ground radio's packets reach every ve
 only the ground radio, and no window is yielded to another radio: a plain SiK pair knows no
 multipoint, so this is a sketch of multipoint firmware, not a model of it.
 
-The log (--log): "drop" lines with the direction ("up" ground station to vehicle, "down" vehicle to
-ground station) and the cause (buffer-full: the 1850-byte buffer; serial-full: the 645-byte one;
-air-loss: an air packet lost), "hold" lines when the 8-bit counter keeps a frame back, "pass" lines
-for mission, FTP and STATUSTEXT messages delivered, and every --stats-interval seconds one "stat" line
-per radio: bytes in from its host, sent over the air, out to its host, and the buffers' fill:
+The log (--log), in lossy_relay.py's form (harness/relay_log_summary.py reads it): "drop" lines with
+the direction ("up" ground station to vehicle, "down" vehicle to ground station), the messages hit and
+the cause in brackets (buffer-full: the 1850-byte buffer; serial-full: the 645-byte one; air-loss: an
+air packet lost); "hold" lines when the 8-bit counter keeps a frame back; "pass" lines for mission,
+FTP and STATUSTEXT messages delivered whole, "cut" lines for those delivered with bytes missing (a bad
+CRC); and every --stats-interval seconds one "stat" line per radio: bytes in from its host, sent over
+the air, out to its host, and the buffers' fill:
 
-  12.345 drop up buffer-full 37/45 bytes MISSION_ITEM_INT seq=17
+  12.345 drop up MISSION_ITEM_INT seq=17 [buffer-full 37 bytes]
   12.351 pass down MISSION_REQUEST_INT seq=18
-  13.000 stat v1 in 5760 air 5811 out 1204 rx 1849/1849 tx 0/645
+  12.400 hold down FILE_TRANSFER_PROTOCOL ... [window-counter: 263 bytes, budget 120]
+  13.000 stat v1 in 5760 air 5811 out 1204 rx 1849/1849 tx 0/644
 
 Commands with --control, one a line, each answered "ok ..." or "error ...":
   radio PROFILE         sik, worse or clear
@@ -445,7 +448,7 @@ class Radio:
             lo, hi = max(0, done - n - start), min(length, done - start)
             if lo < hi:
                 what.append(cut_frames(data, lo, hi))
-        self.log(t_us, "drop %s buffer-full %d bytes %s" % (self.direction, n, " | ".join(what)))
+        self.log(t_us, "drop %s %s [buffer-full %d bytes]" % (self.direction, " | ".join(what), n))
 
     def flush_out(self, t_us):
         out = self.line_out.settle(t_us)
@@ -472,8 +475,8 @@ class Radio:
         room = TX_BUFF_MAX - 1 - len(self.line_out.queue)
         if len(data) > room:
             self.counts["serial_full"] += len(data) - room
-            self.log(t_us, "drop %s serial-full %d/%d bytes %s" % (
-                other(self.direction), len(data) - room, len(data), describe_packet(data[room:])))
+            self.log(t_us, "drop %s %s [serial-full %d/%d bytes]" % (
+                other(self.direction), describe_packet(data[room:]), len(data) - room, len(data)))
         if room > 0:
             self.line_out.push(data[:room], t_us)
             self.arm_out()
@@ -501,7 +504,7 @@ class Radio:
         data = self.packetizer.next(self.rx, budget, t_us // US_PER_TICK)
         held = self.packetizer.held
         if held and held[0] <= unwrapped:
-            self.log(t_us, "hold %s window-counter %s (%d bytes, budget %d)" % (
+            self.log(t_us, "hold %s %s [window-counter: %d bytes, budget %d]" % (
                 self.direction, describe_packet(bytes(self.rx[:held[0]])), held[0], held[1]))
         self.counts["air"] += len(data)
         if data:
@@ -517,6 +520,23 @@ class Radio:
 
 def other(direction):
     return "down" if direction == "up" else "up"
+
+
+def intact(frame):
+    """Whether a frame delivered to a host has its CRC right (bytes lost on the way make it wrong)."""
+    from pymavlink.dialects.v20 import common
+    from pymavlink.generator.mavcrc import x25crc
+    header = 10 if frame[0] == STX2 else 6
+    end = header + frame[1]
+    if len(frame) < end + 2:
+        return False
+    msgid = frame[7] | frame[8] << 8 | frame[9] << 16 if frame[0] == STX2 else frame[5]
+    known = common.mavlink_map.get(msgid)
+    if known is None:
+        return True
+    crc = x25crc(frame[1:end])
+    crc.accumulate([known.crc_extra])
+    return crc.crc == frame[end] | frame[end + 1] << 8
 
 
 def cut_frames(data, lo, hi):
@@ -652,7 +672,7 @@ class Air:
             receiver.rx_errors = min(receiver.rx_errors + 1, 0xFFFF)
             receiver.counts["air_loss"] += len(data)
             if data:
-                self.log(t, "drop %s air-loss %d bytes %s" % (sender.direction, len(data), describe_packet(data)))
+                self.log(t, "drop %s %s [air-loss %d bytes]" % (sender.direction, describe_packet(data), len(data)))
             return
         receiver.heard(self.RSSI_BAD if channel.bad(t) else self.RSSI_GOOD)
         if kind == "statistics":
@@ -720,7 +740,8 @@ class Relay:
     def follow(self, direction, frame, t_us):
         msgs = list(frames(frame))
         if any(m in FOLLOWED for m, _ in msgs):
-            self.write(t_us, "pass %s %s" % (direction, " | ".join(describe(m, p) for m, p in msgs)))
+            fate = "pass" if intact(frame) else "cut"
+            self.write(t_us, "%s %s %s" % (fate, direction, " | ".join(describe(m, p) for m, p in msgs)))
 
     def sender(self, i):
         def send(frame, t_us):
@@ -744,7 +765,7 @@ class Relay:
         try:
             os.write(self.pty_master, frame)
         except BlockingIOError:
-            self.write(t_us, "drop down pty-full %d bytes" % len(frame))
+            self.write(t_us, "drop down %s [pty-full %d bytes]" % (describe_packet(frame), len(frame)))
 
     def periodic_stats(self):
         t = self.sched.now
