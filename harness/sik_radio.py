@@ -746,11 +746,13 @@ class Relay:
     def sender(self, i):
         def send(frame, t_us):
             self.follow("up", frame, t_us)
-            if self.vehicle_addrs[i] is not None:
-                try:
-                    self.vehicle_socks[i].sendto(frame, self.vehicle_addrs[i])
-                except OSError as e:
-                    self.write(t_us, "unsent up %s" % e)
+            if self.vehicle_addrs[i] is None:
+                self.write(t_us, "unsent up no vehicle has sent to %d yet" % self.vehicle_socks[i].getsockname()[1])
+                return
+            try:
+                self.vehicle_socks[i].sendto(frame, self.vehicle_addrs[i])
+            except OSError as e:
+                self.write(t_us, "unsent up %s" % e)
         return send
 
     def to_gcs(self, frame, t_us):
