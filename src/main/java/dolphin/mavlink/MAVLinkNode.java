@@ -89,6 +89,14 @@ public final class MAVLinkNode extends AbstractNode {
         return link;
     }
 
+    /**
+     * The health of the link the vehicle is reached through, now: its traffic each way and the latest
+     * report of a telemetry radio on it (docs/embedding.md, "Link health"). From any thread.
+     */
+    public LinkHealth linkHealth() {
+        return comms.linkHealth(link);
+    }
+
     /** Where the vehicle was last heard: replies go there. */
     public SocketAddress getAddress() {
         return address;
