@@ -42,6 +42,16 @@ public record RadioStatus(int rssi, int remrssi, int noise, int remnoise, int rx
         return dbm(remrssi);
     }
 
+    /** The local noise floor in dBm, on the same scale; NaN when unknown. */
+    public double noiseDbm() {
+        return dbm(noise);
+    }
+
+    /** The remote noise floor in dBm; NaN when unknown. */
+    public double remnoiseDbm() {
+        return dbm(remnoise);
+    }
+
     /** How long ago the report came, at clock time {@code nowNanos}. */
     public Duration age(long nowNanos) {
         return Duration.ofNanos(Math.max(0, nowNanos - heardNanos));

@@ -4,6 +4,9 @@ import com.MAVLink.enums.MISSION_STATE
 import com.MAVLink.minimal.msg_heartbeat
 import dolphin.core.Position
 import dolphin.core.TaskTree
+import dolphin.mavlink.LinkHealth
+import dolphin.mavlink.RadioStatus
+import java.time.Duration
 import dolphin.mavlink.VehicleFamily
 import dolphin.mavlink.VehicleState
 import groovy.json.JsonSlurper
@@ -60,7 +63,7 @@ class FleetFeedSpec extends Specification {
         given:
         samples = [new VehicleSample(VehicleView.of('1', 'UAV', true, -1, false, state(HOME), '', ['Camera', 'SMOKE'],
                 [new VehicleView.Shown('SMOKE', 42.5d, '', 1, true), new VehicleView.Shown('TEMP', Double.NaN, 'degC', 191, false)],
-                null), null, { null })]
+                null, null), null, { null })]
 
         when:
         def v = parse(feed.sample(1.0).vehicles()['1'].json())
@@ -74,7 +77,7 @@ class FleetFeedSpec extends Specification {
     def "a transfer in progress is sent with its list, path, amount, resends and text; none is null"() {
         given:
         def status = new TransferStatus(MissionType.FENCE, true, TransferPath.FTP, 620, 1530, 2)
-        samples = [new VehicleSample(VehicleView.of('1', 'UAV', true, -1, false, state(HOME), '', [], [], status), null, { null }),
+        samples = [new VehicleSample(VehicleView.of('1', 'UAV', true, -1, false, state(HOME), '', [], [], status, null), null, { null }),
                    sample('2', HOME)]
 
         when:
@@ -86,9 +89,72 @@ class FleetFeedSpec extends Specification {
         parse(frame.vehicles()['2'].json()).transfer == null
     }
 
+    VehicleSample onLink(LinkHealth health) {
+        new VehicleSample(VehicleView.of('1', 'UAV', true, -1, false, state(HOME), '', [], [], null, LinkView.of(health)), null, { null })
+    }
+
+    static LinkHealth health(double in, double out, RadioStatus radio = null, double radioAge = 0) {
+        new LinkHealth('serial:/dev/ttyUSB0:57600', in, out, 9000, 4000, 3, 1, 2, radio,
+                radio ? Duration.ofMillis(Math.round(radioAge * 1000)) : null)
+    }
+
+    def "a vehicle's link is sent with its rates to 100 B/s, its losses and its radio's report; null before it has one"() {
+        given:
+        def radio = new RadioStatus(124, 118, 40, 45, 6, 9, 97, 0)
+        samples = [onLink(health(1234, 3456, radio, 0.5))]
+
+        when:
+        def frame = feed.sample(1.0)
+
+        then:
+        parse(frame.vehicles()['1'].json()).link == [name: 'serial:/dev/ttyUSB0:57600', in: 1200, out: 3500, lost: 3, badCrcs: 1,
+                radio: [rssi: 124, remrssi: 118, noise: 40, remnoise: 45, rssiDbm: -62, remrssiDbm: -65, noiseDbm: -106,
+                        remnoiseDbm: -103, rxerrors: 6, fixed: 9, txbuf: 97, silence: null]]
+
+        when: 'a radio whose report is old news, one that does not know its signal, a link without a radio'
+        samples = [onLink(health(0, 0, radio, 12.5))]
+        def stale = parse(feed.sample(2.0).vehicles()['1'].json())
+        samples = [onLink(health(0, 0, new RadioStatus(255, 118, 255, 45, 0, 0, 50, 0), 1))]
+        def unknown = parse(feed.sample(3.0).vehicles()['1'].json())
+        samples = [onLink(health(250, 40))]
+        def plain = parse(feed.sample(4.0).vehicles()['1'].json())
+
+        then:
+        stale.link.radio.silence == 12
+        unknown.link.radio.rssiDbm == null && unknown.link.radio.noiseDbm == null && unknown.link.radio.remrssiDbm == -65
+        plain.link.radio == null && plain.link.in == 300 && plain.link.out == 0
+
+        when: 'a vehicle of a platform that knows no link'
+        samples = [sample('1', HOME)]
+
+        then:
+        parse(feed.sample(5.0).vehicles()['1'].json()).link == null
+    }
+
+    def "rates that round to the same 100 B/s, and a current radio report's age, send the vehicle again no sooner"() {
+        given:
+        def radio = new RadioStatus(124, 118, 40, 45, 6, 9, 97, 0)
+        samples = [onLink(health(1210, 3420, radio, 0.2))]
+        def first = feed.sample(1.0)
+
+        when:
+        samples = [onLink(health(1160, 3440, radio, 3.9))]
+        def second = feed.sample(1.25)
+
+        then:
+        parse(FleetFeed.update(second, first.number(), new EventLog(1).since(0), '')).vehicles.isEmpty()
+
+        when:
+        samples = [onLink(health(1290, 3440, radio, 4.1))]
+        def third = feed.sample(1.5)
+
+        then:
+        parse(FleetFeed.update(third, second.number(), new EventLog(1).since(0), '')).vehicles*.link*.in == [1300]
+    }
+
     def "a silent vehicle is sent with the seconds of its silence, a heard one with null; each second more is a change"() {
         given:
-        def silent = { int seconds -> new VehicleSample(VehicleView.of('1', 'UAV', true, seconds, false, state(HOME), '', [], [], null), null, { null }) }
+        def silent = { int seconds -> new VehicleSample(VehicleView.of('1', 'UAV', true, seconds, false, state(HOME), '', [], [], null, null), null, { null }) }
         samples = [silent(7), sample('2', HOME)]
 
         when:
