@@ -5,9 +5,9 @@ import dolphin.mavlink.RadioStatus;
 import groovy.json.JsonOutput;
 
 /**
- * What the page shows of the link a vehicle is reached through: its bytes each way, what it lost,
- * and the telemetry radio's latest report. Rounded as shown (rates to 100 B/s, a radio's age to
- * whole seconds once it is old news), so the vehicle is sent again only when what shows changes.
+ * What the page shows of a link: its bytes each way, what it lost, and the telemetry radio's latest
+ * report. Rounded as shown (rates to 100 B/s, a radio's age to whole seconds once it is old news),
+ * so the link is sent again only when what shows changes.
  *
  * @param in bytes per second received, rounded to 100
  * @param out bytes per second sent, likewise

@@ -14,12 +14,12 @@ import groovy.json.JsonOutput;
  * where a mission transfer to or from it stands, and its link's health.
  *
  * @param silence whole seconds the vehicle has been silent, -1 while it is heard
- * @param link the link the vehicle is reached through, or null when not known
+ * @param link the name of the link the vehicle is reached through ({@link LinkView#name()}), or null when not known
  */
 record VehicleView(String id, String type, String family, boolean connected, int silence, boolean picked, Position position,
                    double relativeAlt, double heading, String mode, boolean armed, int battery, Position home,
                    int item, int total, boolean fenceBreached, String task, List<String> payloads, List<Shown> readings,
-                   TransferStatus transfer, LinkView link) {
+                   TransferStatus transfer, String link) {
 
     /** A sensor reading as shown: stale ones are greyed out, not hidden, so a silent sensor is seen. */
     record Shown(String name, double value, String unit, int component, boolean fresh) {
@@ -36,7 +36,7 @@ record VehicleView(String id, String type, String family, boolean connected, int
 
     /** @param transfer where a mission transfer in progress stands, or null */
     static VehicleView of(String id, String type, boolean connected, int silence, boolean picked, VehicleState s, String task,
-                          List<String> payloads, List<Shown> readings, TransferStatus transfer, LinkView link) {
+                          List<String> payloads, List<Shown> readings, TransferStatus transfer, String link) {
         return new VehicleView(id, type, s.family().label(), connected, silence, picked, s.position(), s.relativeAlt(), s.heading(),
                 s.modeName(), s.armed(), s.batteryPercent(), s.home(), s.flyingMission() ? s.missionSeq() : -1, s.missionTotal(),
                 s.fenceBreached(), task, payloads, readings, transfer, link);
@@ -70,7 +70,7 @@ record VehicleView(String id, String type, String family, boolean connected, int
                 .append(",\"payloads\":").append(JsonOutput.toJson(payloads))
                 .append(",\"readings\":").append(readingsJson())
                 .append(",\"transfer\":").append(transferJson())
-                .append(",\"link\":").append(link == null ? "null" : link.json())
+                .append(",\"link\":").append(JsonOutput.toJson(link))
                 .append('}').toString();
     }
 

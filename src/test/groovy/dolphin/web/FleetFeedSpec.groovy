@@ -23,7 +23,8 @@ class FleetFeedSpec extends Specification {
     TaskBoard board = new TaskBoard(0)
     List<VehicleSample> samples = []
     int drawn
-    FleetFeed feed = new FleetFeed({ samples } as java.util.function.Supplier, board)
+    List<LinkView> links = []
+    FleetFeed feed = new FleetFeed({ samples } as java.util.function.Supplier, { links } as java.util.function.Supplier, board)
 
     static VehicleState state(Position at, boolean armed = true, int item = 2) {
         def hb = new msg_heartbeat(base_mode: (short) (armed ? 128 : 0), custom_mode: 3)
@@ -89,67 +90,70 @@ class FleetFeedSpec extends Specification {
         parse(frame.vehicles()['2'].json()).transfer == null
     }
 
-    VehicleSample onLink(LinkHealth health) {
-        new VehicleSample(VehicleView.of('1', 'UAV', true, -1, false, state(HOME), '', [], [], null, LinkView.of(health)), null, { null })
+    static final String SERIAL = 'serial:/dev/ttyUSB0:57600'
+    static final RadioStatus RADIO = new RadioStatus(124, 118, 40, 45, 6, 9, 97, 0)
+
+    VehicleSample onLink(String id, String link) {
+        new VehicleSample(VehicleView.of(id, 'UAV', true, -1, false, state(HOME), '', [], [], null, link), null, { null })
     }
 
-    static LinkHealth health(double in, double out, RadioStatus radio = null, double radioAge = 0) {
-        new LinkHealth('serial:/dev/ttyUSB0:57600', in, out, 9000, 4000, 3, 1, 2, radio,
-                radio ? Duration.ofMillis(Math.round(radioAge * 1000)) : null)
+    static LinkView view(double in, double out, RadioStatus radio = null, double radioAge = 0) {
+        LinkView.of(new LinkHealth(SERIAL, in, out, 9000, 4000, 3, 1, 2, radio, radio ? Duration.ofMillis(Math.round(radioAge * 1000)) : null))
     }
 
-    def "a vehicle's link is sent with its rates to 100 B/s, its losses and its radio's report; null before it has one"() {
+    static Map linkJson(FleetFeed.FeedFrame frame) {
+        parse(frame.links()[SERIAL].json())
+    }
+
+    def "each link is sent apart from its vehicles, which name it: rates to 100 B/s, losses, the radio's report"() {
         given:
-        def radio = new RadioStatus(124, 118, 40, 45, 6, 9, 97, 0)
-        samples = [onLink(health(1234, 3456, radio, 0.5))]
+        samples = [onLink('1', SERIAL), sample('2', HOME)]
+        links = [view(1234, 3456, RADIO, 0.5)]
 
         when:
-        def frame = feed.sample(1.0)
+        def all = parse(FleetFeed.update(feed.sample(1.0), 0, new EventLog(1).since(0), ''))
 
         then:
-        parse(frame.vehicles()['1'].json()).link == [name: 'serial:/dev/ttyUSB0:57600', in: 1200, out: 3500, lost: 3, badCrcs: 1,
+        all.links == [(SERIAL): [name: SERIAL, in: 1200, out: 3500, lost: 3, badCrcs: 1,
                 radio: [rssi: 124, remrssi: 118, noise: 40, remnoise: 45, rssiDbm: -62, remrssiDbm: -65, noiseDbm: -106,
-                        remnoiseDbm: -103, rxerrors: 6, fixed: 9, txbuf: 97, silence: null]]
+                        remnoiseDbm: -103, rxerrors: 6, fixed: 9, txbuf: 97, silence: null]]]
+        all.vehicles.find { it.id == '1' }.link == SERIAL
+        all.vehicles.find { it.id == '2' }.link == null
 
         when: 'a radio whose report is old news, one that does not know its signal, a link without a radio'
-        samples = [onLink(health(0, 0, radio, 12.5))]
-        def stale = parse(feed.sample(2.0).vehicles()['1'].json())
-        samples = [onLink(health(0, 0, new RadioStatus(255, 118, 255, 45, 0, 0, 50, 0), 1))]
-        def unknown = parse(feed.sample(3.0).vehicles()['1'].json())
-        samples = [onLink(health(250, 40))]
-        def plain = parse(feed.sample(4.0).vehicles()['1'].json())
+        links = [view(0, 0, RADIO, 12.5)]
+        def stale = linkJson(feed.sample(2.0))
+        links = [view(0, 0, new RadioStatus(255, 118, 255, 45, 0, 0, 50, 0), 1)]
+        def unknown = linkJson(feed.sample(3.0))
+        links = [view(250, 40)]
+        def plain = linkJson(feed.sample(4.0))
 
         then:
-        stale.link.radio.silence == 12
-        unknown.link.radio.rssiDbm == null && unknown.link.radio.noiseDbm == null && unknown.link.radio.remrssiDbm == -65
-        plain.link.radio == null && plain.link.in == 300 && plain.link.out == 0
-
-        when: 'a vehicle of a platform that knows no link'
-        samples = [sample('1', HOME)]
-
-        then:
-        parse(feed.sample(5.0).vehicles()['1'].json()).link == null
+        stale.radio.silence == 12
+        unknown.radio.rssiDbm == null && unknown.radio.noiseDbm == null && unknown.radio.remrssiDbm == -65
+        plain.radio == null && plain.in == 300 && plain.out == 0
     }
 
-    def "rates that round to the same 100 B/s, and a current radio report's age, send the vehicle again no sooner"() {
+    def "a link whose rates change is sent again, not its vehicles; rates that round the same and a current report's age send nothing"() {
         given:
-        def radio = new RadioStatus(124, 118, 40, 45, 6, 9, 97, 0)
-        samples = [onLink(health(1210, 3420, radio, 0.2))]
+        samples = [onLink('1', SERIAL), onLink('2', SERIAL)]
+        links = [view(1210, 3420, RADIO, 0.2)]
         def first = feed.sample(1.0)
 
         when:
-        samples = [onLink(health(1160, 3440, radio, 3.9))]
-        def second = feed.sample(1.25)
+        links = [view(1160, 3440, RADIO, 3.9)]
+        def second = parse(FleetFeed.update(feed.sample(1.25), first.number(), new EventLog(1).since(0), ''))
 
         then:
-        parse(FleetFeed.update(second, first.number(), new EventLog(1).since(0), '')).vehicles.isEmpty()
+        second.links.isEmpty() && second.vehicles.isEmpty()
 
         when:
-        samples = [onLink(health(1290, 3440, radio, 4.1))]
-        def third = feed.sample(1.5)
+        links = [view(1290, 3440, RADIO, 4.1)]
+        def third = parse(FleetFeed.update(feed.sample(1.5), first.number(), new EventLog(1).since(0), ''))
 
         then:
-        parse(FleetFeed.update(third, second.number(), new EventLog(1).since(0), '')).vehicles*.link*.in == [1300]
+        third.links.values()*.in == [1300]
+        third.vehicles.isEmpty()
     }
 
     def "a silent vehicle is sent with the seconds of its silence, a heard one with null; each second more is a change"() {
