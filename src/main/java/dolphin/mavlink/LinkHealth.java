@@ -4,7 +4,8 @@ import java.time.Duration;
 
 /**
  * One link's health at one moment, immutable: what it carries each way, what it loses, and what
- * the telemetry radio on it last reported (docs/mavlink.md, "Link health").
+ * the telemetry radio on it last reported (docs/mavlink.md, "The ground station"; docs/decisions.md,
+ * "Link health").
  *
  * @param link the link as it was given ("serial:/dev/ttyUSB0:57600", "udpin:0.0.0.0:14559")
  * @param inBytesPerSecond bytes received per second, over the last few seconds of clock time
