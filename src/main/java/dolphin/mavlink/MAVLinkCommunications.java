@@ -154,7 +154,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
         links.forEach(l -> l.start(queue::add, problem -> LOG.warn("link {}", problem)));
     }
 
-    /** Makes an open link one of ours, before the thread starts (a spec's fake link, without it). */
+    /** Makes an open link one of ours: {@link #start} does so with each link it opens, a spec with a fake link. */
     void attach(Link link) {
         DropCounters linkDrops = new DropCounters(drops);
         links.add(link);
@@ -388,7 +388,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
         timers.at(now + SECOND / 4, this::supervise);
     }
 
-    /** Decodes what a link's reader handed over; on the communications thread (a spec's, without it). */
+    /** Counts and decodes what a link's reader handed over; on the communications thread, or a spec's in its place. */
     void receive(Link.Received r) {
         traffic.get(r.link()).received(clock.nanoTime(), r.bytes().length);
         FrameReader reader = readers.get(r.link());
@@ -433,7 +433,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
     /**
      * Counts the frame for its link's losses and keeps a telemetry radio's report, whoever sent it
      * and whatever the allow-list: a radio's report tells of the link, so it makes no vehicle and is
-     * no sign of one's life (docs/decisions.md, "Contact").
+     * no sign of one's life (docs/decisions.md, "Link health").
      */
     private void noteOnLink(Link link, Frame frame) {
         LinkTraffic t = traffic.get(link);
