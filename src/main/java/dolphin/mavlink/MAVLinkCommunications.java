@@ -3,6 +3,7 @@ package dolphin.mavlink;
 import dolphin.mavlink.codec.MessageTable;
 import com.MAVLink.Messages.MAVLinkMessage;
 import com.MAVLink.ardupilotmega.msg_ekf_status_report;
+import com.MAVLink.ardupilotmega.msg_radio;
 import com.MAVLink.common.msg_fence_status;
 import com.MAVLink.common.msg_command_ack;
 import com.MAVLink.common.msg_command_long;
@@ -10,6 +11,7 @@ import com.MAVLink.common.msg_extended_sys_state;
 import com.MAVLink.standard.msg_autopilot_version;
 import com.MAVLink.common.msg_home_position;
 import com.MAVLink.common.msg_mission_current;
+import com.MAVLink.common.msg_radio_status;
 import com.MAVLink.common.msg_statustext;
 import com.MAVLink.common.msg_sys_status;
 import com.MAVLink.enums.MAV_AUTOPILOT;
@@ -78,6 +80,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
     private final Map<Link, FrameReader> readers = new HashMap<>();
     private final Map<Link, FrameWriter> writers = new HashMap<>();
     private final Map<Link, Set<SocketAddress>> peers = new HashMap<>();
+    private final Map<Link, LinkTraffic> traffic = new ConcurrentHashMap<>();
     private final Map<String, MAVLinkNode> nodesByKey = new ConcurrentHashMap<>();
     private final Map<String, MAVLinkNode> nodesById = new ConcurrentHashMap<>();
     private final MessageHandler handler = new MessageHandler();
@@ -137,11 +140,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
         }
         try {
             for (int i = 0; i < config.links().size(); i++) {
-                Link link = Link.open(config.links().get(i), i);
-                links.add(link);
-                readers.put(link, new FrameReader(config.signingKey(), drops));
-                writers.put(link, new FrameWriter(config.sysid(), config.compid(), config.signingKey(), i));
-                peers.put(link, new LinkedHashSet<>());
+                attach(Link.open(config.links().get(i), i));
             }
             if (config.tlog() != null) {
                 tlog = new Tlog(config.tlog());
@@ -157,8 +156,30 @@ public final class MAVLinkCommunications implements AutoCloseable {
         links.forEach(l -> l.start(queue::add, problem -> LOG.warn("link {}", problem)));
     }
 
+    /** Makes an open link one of ours: {@link #start} does so with each link it opens, a spec with a fake link. */
+    void attach(Link link) {
+        DropCounters linkDrops = new DropCounters(drops);
+        links.add(link);
+        readers.put(link, new FrameReader(config.signingKey(), linkDrops));
+        writers.put(link, new FrameWriter(config.sysid(), config.compid(), config.signingKey(), link.index()));
+        peers.put(link, new LinkedHashSet<>());
+        traffic.put(link, new LinkTraffic(link.url().toString(), linkDrops, clock.nanoTime()));
+    }
+
     public List<Link> links() {
         return List.copyOf(links);
+    }
+
+    /** Every link's health now, in the order the links were given; from any thread. */
+    public List<LinkHealth> linkHealth() {
+        long now = clock.nanoTime();
+        return links().stream().map(l -> traffic.get(l).health(now)).toList();
+    }
+
+    /** The health of one link now; a link these communications do not run has nothing counted. */
+    LinkHealth linkHealth(Link link) {
+        LinkTraffic t = link == null ? null : traffic.get(link);
+        return t == null ? LinkHealth.unmeasured(link == null ? "" : link.toString()) : t.health(clock.nanoTime());
     }
 
     /** Every vehicle discovered so far, connected or not, by system id then link. */
@@ -296,6 +317,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
         try {
             node.getLink().send(frame, node.getAddress());
             framesOut.incrementAndGet();
+            traffic.get(node.getLink()).sent(clock.nanoTime(), frame.length);
             log(frame);
         } catch (IOException e) {
             LOG.warn("relaying a frame to vehicle {} failed: {}", node.getId(), e.getMessage());
@@ -307,6 +329,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
         try {
             link.send(frame, to);
             framesOut.incrementAndGet();
+            traffic.get(link).sent(clock.nanoTime(), frame.length);
             log(frame);
             if (!observers.isEmpty()) {
                 observeOutgoing(link, frame);
@@ -375,7 +398,9 @@ public final class MAVLinkCommunications implements AutoCloseable {
         timers.at(now + SECOND / 4, this::supervise);
     }
 
-    private void receive(Link.Received r) {
+    /** Counts and decodes what a link's reader handed over; on the communications thread, or a spec's in its place. */
+    void receive(Link.Received r) {
+        traffic.get(r.link()).received(clock.nanoTime(), r.bytes().length);
         FrameReader reader = readers.get(r.link());
         reader.feed(r.bytes(), 0, r.bytes().length, f -> onFrame(r.link(), r.peer(), f));
         if (r.datagram()) {
@@ -388,6 +413,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
         log(frame.raw());
         peers.get(link).add(peer);
         observers.forEach(o -> o.frame(true, link, frame));
+        noteOnLink(link, frame);
         if (!config.allowedSysids().isEmpty() && !config.allowedSysids().contains(frame.sysid())) {
             filtered.incrementAndGet();
             return;
@@ -412,6 +438,21 @@ public final class MAVLinkCommunications implements AutoCloseable {
         node.contact().heard(frame.msgid()).ifPresent(this::publish);
         telemetry.seen(node, frame.msgid(), clock.nanoTime());
         handler.dispatch(node, message);
+    }
+
+    /**
+     * Counts the frame for its link's losses and keeps a telemetry radio's report, whoever sent it
+     * and whatever the allow-list: a radio's report tells of the link, so it makes no vehicle and is
+     * no sign of one's life (docs/decisions.md, "Link health").
+     */
+    private void noteOnLink(Link link, Frame frame) {
+        LinkTraffic t = traffic.get(link);
+        t.frame(frame.sysid(), frame.compid(), frame.seq());
+        if (frame.msgid() == msg_radio_status.MAVLINK_MSG_ID_RADIO_STATUS && frame.message() instanceof msg_radio_status m) {
+            t.radio(RadioStatus.of(m, clock.nanoTime()));
+        } else if (frame.msgid() == msg_radio.MAVLINK_MSG_ID_RADIO && frame.message() instanceof msg_radio m) {
+            t.radio(RadioStatus.of(m, clock.nanoTime()));
+        }
     }
 
     private void tellComponentListeners(MAVLinkNode node, int component, MAVLinkMessage message) {

@@ -115,10 +115,19 @@ public final class MAVLinkNode extends AbstractNode {
 
     /**
      * Whether the vehicle is reached through a telemetry radio: its link is a serial port (where
-     * radios sit). Transfers then send frames a SiK radio carries well (docs/radios.md).
+     * radios sit), or a radio reports on it. Transfers then send frames a SiK radio carries well
+     * (docs/radios.md).
      */
     public boolean throughRadio() {
-        return link != null && link.url().kind() == LinkUrl.Transport.SERIAL;
+        return link != null && (link.url().kind() == LinkUrl.Transport.SERIAL || linkHealth().radio() != null);
+    }
+
+    /**
+     * The health of the link the vehicle is reached through, now: its traffic each way and the latest
+     * report of a telemetry radio on it (docs/embedding.md, "Link health"). From any thread.
+     */
+    public LinkHealth linkHealth() {
+        return comms.linkHealth(link);
     }
 
     /** Where the vehicle was last heard: replies go there. */

@@ -1,6 +1,8 @@
 package dolphin.platform;
 
+import dolphin.mavlink.LinkHealth;
 import dolphin.mavlink.MAVLinkCommunications;
+import dolphin.mavlink.MAVLinkNode;
 import dolphin.core.Node;
 import dolphin.core.NodeSet;
 import dolphin.core.Platform;
@@ -10,6 +12,7 @@ import dolphin.dsl.ScriptContext;
 import dolphin.dsl.check.CallCheck;
 import dolphin.sensor.SensorService;
 import java.util.List;
+import java.util.Optional;
 import java.util.function.Consumer;
 import org.codehaus.groovy.control.customizers.ImportCustomizer;
 
@@ -32,6 +35,15 @@ public final class MAVLinkPlatform implements Platform, DslExtension {
 
     public MAVLinkCommunications communications() {
         return comms;
+    }
+
+    /**
+     * The health of the link a vehicle is reached through, by the vehicle's id ("1", "1@2"): its traffic,
+     * losses and telemetry radio, now (docs/embedding.md, "Link health"). Empty for an id no vehicle
+     * has. From any thread.
+     */
+    public Optional<LinkHealth> linkHealth(String vehicleId) {
+        return Optional.ofNullable(comms.node(vehicleId)).map(MAVLinkNode::linkHealth);
     }
 
     @Override

@@ -8,8 +8,8 @@ import java.util.Map;
 import java.util.function.Supplier;
 
 /**
- * Turns samples of the fleet and the program into {@link Frame}s, a few times a second, on the
- * sampler thread. A frame keeps each vehicle's, mission's and the trees' JSON with the number of
+ * Turns samples of the fleet, its links and the program into {@link Frame}s, a few times a second, on the
+ * sampler thread. A frame keeps each vehicle's, link's, mission's and the trees' JSON with the number of
  * the frame that last changed it, so a viewer that has frame N is sent only what changed after N,
  * however many frames it missed. Tracks (each vehicle's path, thinned as it grows) are sent whole
  * only in a snapshot; a viewer extends them from the positions that follow.
@@ -21,29 +21,39 @@ final class FleetFeed {
     }
 
     /** What the viewers are sent, as of one sample; immutable. */
-    record FeedFrame(long number, double time, Map<String, Stamped> vehicles, Map<String, Stamped> missions, Stamped executes) {
+    record FeedFrame(long number, double time, Map<String, Stamped> vehicles, Map<String, Stamped> links, Map<String, Stamped> missions,
+                     Stamped executes) {
     }
 
     private final Supplier<List<VehicleSample>> fleet;
+    private final Supplier<List<LinkView>> linkViews;
     private final TaskBoard board;
     private final Map<String, VehicleView> views = new HashMap<>();
     private final Map<String, Stamped> vehicles = new LinkedHashMap<>();
+    private final Map<String, LinkView> linksShown = new HashMap<>();
+    private final Map<String, Stamped> links = new LinkedHashMap<>();
     private final Map<String, Stamped> missions = new LinkedHashMap<>();
     private final Map<String, Object> missionKeys = new HashMap<>();
     private final Map<String, Track> tracks = new LinkedHashMap<>();
     private long number;
     private long boardVersion = -1;
     private Stamped executes = new Stamped("[]", 0);
-    private volatile FeedFrame latest = new FeedFrame(0, 0, Map.of(), Map.of(), executes);
+    private volatile FeedFrame latest = new FeedFrame(0, 0, Map.of(), Map.of(), Map.of(), executes);
 
-    FleetFeed(Supplier<List<VehicleSample>> fleet, TaskBoard board) {
+    /**
+     * @param links every link's view: apart from the vehicles, which name theirs, so a link's rates
+     *              changing each second send one link again, not every vehicle on it
+     */
+    FleetFeed(Supplier<List<VehicleSample>> fleet, Supplier<List<LinkView>> links, TaskBoard board) {
         this.fleet = fleet;
+        this.linkViews = links;
         this.board = board;
     }
 
     /** Samples the fleet and the program into the next frame (sampler thread). */
     FeedFrame sample(double time) {
         List<VehicleSample> samples = fleet.get();
+        List<LinkView> linkSamples = linkViews.get();
         synchronized (this) {
             long n = ++number;
             for (VehicleSample s : samples) {
@@ -62,12 +72,17 @@ final class FleetFeed {
                     }
                 }
             }
+            for (LinkView l : linkSamples) {
+                if (!l.equals(linksShown.put(l.name(), l))) {
+                    links.put(l.name(), new Stamped(l.json(), n));
+                }
+            }
             long version = board.version();
             if (version != boardVersion) {
                 boardVersion = version;
                 executes = new Stamped(Json.write(board.json()), n);
             }
-            latest = new FeedFrame(n, time, Map.copyOf(vehicles), Map.copyOf(missions), executes);
+            latest = new FeedFrame(n, time, Map.copyOf(vehicles), Map.copyOf(links), Map.copyOf(missions), executes);
             return latest;
         }
     }
@@ -92,7 +107,9 @@ final class FleetFeed {
         b.append("{\"frame\":").append(frame.number()).append(",\"time\":").append(Json.tenths(frame.time()));
         b.append(",\"vehicles\":[");
         appendChanged(b, frame.vehicles(), after, false);
-        b.append("],\"missions\":{");
+        b.append("],\"links\":{");
+        appendChanged(b, frame.links(), after, true);
+        b.append("},\"missions\":{");
         appendChanged(b, frame.missions(), after, true);
         b.append('}');
         if (frame.executes().frame() > after || after == 0) {

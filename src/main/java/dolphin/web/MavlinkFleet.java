@@ -17,7 +17,7 @@ import java.util.function.Supplier;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
-/** Samples the MAVLink platform's vehicles: each node's snapshot, whether the script holds it, its mission. */
+/** Samples the MAVLink platform's vehicles: each node's snapshot, whether the script holds it, its mission, the name of its link. */
 final class MavlinkFleet implements Supplier<List<VehicleSample>> {
 
     private static final Logger LOG = LoggerFactory.getLogger(MavlinkFleet.class);
@@ -42,7 +42,7 @@ final class MavlinkFleet implements Supplier<List<VehicleSample>> {
             int silence = n.silence().map(d -> (int) d.toSeconds()).orElse(-1);
             VehicleView view = VehicleView.of(n.getId(), n.getType(), n.isConnected(), silence, bound.contains(n.getId()), n.state(),
                     tasks.getOrDefault(n.getId(), ""), n.getPayload().names(), readings(n),
-                    MissionService.of(n.communications()).transferOn(n).orElse(null));
+                    MissionService.of(n.communications()).transferOn(n).orElse(null), n.getLink() == null ? null : n.getLink().toString());
             MissionExecutor executor = MissionService.of(n.communications()).executorOn(n);
             samples.add(new VehicleSample(view, executor, () -> draw(executor.mission(), n)));
         }

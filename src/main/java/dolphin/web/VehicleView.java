@@ -10,15 +10,16 @@ import groovy.json.JsonOutput;
 /**
  * What the page shows of one vehicle at one sample: where it is (null before its first position),
  * where it points, its Dolphin type, mode, arming, battery, home, the mission item it flies, whether
- * the script picked it, the last platform task on it, its payloads, its latest sensor readings and
- * where a mission transfer to or from it stands.
+ * the script picked it, the last platform task on it, its payloads, its latest sensor readings,
+ * where a mission transfer to or from it stands, and its link's health.
  *
  * @param silence whole seconds the vehicle has been silent, -1 while it is heard
+ * @param link the name of the link the vehicle is reached through ({@link LinkView#name()}), or null when not known
  */
 record VehicleView(String id, String type, String family, boolean connected, int silence, boolean picked, Position position,
                    double relativeAlt, double heading, String mode, boolean armed, int battery, Position home,
                    int item, int total, boolean fenceBreached, String task, List<String> payloads, List<Shown> readings,
-                   TransferStatus transfer) {
+                   TransferStatus transfer, String link) {
 
     /** A sensor reading as shown: stale ones are greyed out, not hidden, so a silent sensor is seen. */
     record Shown(String name, double value, String unit, int component, boolean fresh) {
@@ -30,15 +31,15 @@ record VehicleView(String id, String type, String family, boolean connected, int
     }
 
     static VehicleView of(String id, String type, boolean connected, boolean picked, VehicleState s, String task) {
-        return of(id, type, connected, -1, picked, s, task, List.of(), List.of(), null);
+        return of(id, type, connected, -1, picked, s, task, List.of(), List.of(), null, null);
     }
 
     /** @param transfer where a mission transfer in progress stands, or null */
     static VehicleView of(String id, String type, boolean connected, int silence, boolean picked, VehicleState s, String task,
-                          List<String> payloads, List<Shown> readings, TransferStatus transfer) {
+                          List<String> payloads, List<Shown> readings, TransferStatus transfer, String link) {
         return new VehicleView(id, type, s.family().label(), connected, silence, picked, s.position(), s.relativeAlt(), s.heading(),
                 s.modeName(), s.armed(), s.batteryPercent(), s.home(), s.flyingMission() ? s.missionSeq() : -1, s.missionTotal(),
-                s.fenceBreached(), task, payloads, readings, transfer);
+                s.fenceBreached(), task, payloads, readings, transfer, link);
     }
 
     /**
@@ -69,6 +70,7 @@ record VehicleView(String id, String type, String family, boolean connected, int
                 .append(",\"payloads\":").append(JsonOutput.toJson(payloads))
                 .append(",\"readings\":").append(readingsJson())
                 .append(",\"transfer\":").append(transferJson())
+                .append(",\"link\":").append(JsonOutput.toJson(link))
                 .append('}').toString();
     }
 

@@ -75,7 +75,8 @@ public final class WebView implements EngineListener, AutoCloseable {
         this.displayClock = displayClock;
         this.origin = runClock.seconds();
         this.board = new TaskBoard(origin);
-        this.feed = new FleetFeed(new MavlinkFleet(comms::nodes, () -> engine.getEnvironment().getBound(), board), board);
+        this.feed = new FleetFeed(new MavlinkFleet(comms::nodes, () -> engine.getEnvironment().getBound(), board),
+                () -> comms.linkHealth().stream().map(LinkView::of).toList(), board);
         this.broadcast = new Broadcast(displayClock, feed.latest());
         Map<String, Object> settings = new LinkedHashMap<>();
         settings.put("tiles", config.tiles());

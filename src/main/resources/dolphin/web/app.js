@@ -16,6 +16,7 @@ L.control.scale({ imperial: false }).addTo(map);
 
 let vehicles = new Map();   // id -> { data, color, marker, arrow, track, points, home }
 let missions = new Map();   // id -> { layer, items: Map(seq -> layer), current }
+let links = new Map();      // link name -> { name, in, out, lost, badCrcs, radio }: the vehicles name theirs
 let tileLayer = null;
 let userMoved = false;     // the map follows the fleet and its missions until the user pans or zooms
 let fitted = false;
@@ -50,6 +51,7 @@ function reset() {
   for (const m of missions.values()) m.layer.remove();
   vehicles = new Map();
   missions = new Map();
+  links = new Map();
   lastLogSeq = 0;
   document.getElementById('log').innerHTML = '';
 }
@@ -144,7 +146,36 @@ function popupText(d) {
     + `${d.transfer ? '<br><span class="dolphin-transfer">' + escapeHtml(d.transfer.text) + '</span>' : ''}`
     + `${d.fenceBreached ? '<br><b>outside its fence</b>' : ''}`
     + `${d.payloads && d.payloads.length ? '<br>carries ' + d.payloads.map(escapeHtml).join(', ') : ''}`
-    + `${d.readings && d.readings.length ? '<br>' + readingsText(d.readings) : ''}`;
+    + `${d.readings && d.readings.length ? '<br>' + readingsText(d.readings) : ''}`
+    + `${links.has(d.link) ? '<br>' + linkDetail(links.get(d.link)) : ''}`;
+}
+
+/** The link's kB/s in and out, "1.2/3.4 kB/s": a tenth below ten, whole ones above, as the status table shows them. */
+function ratesText(link) {
+  const kilobytes = bytes => (bytes / 1000 < 9.95 ? (bytes / 1000).toFixed(1) : (bytes / 1000).toFixed(0));
+  return `${kilobytes(link.in)}/${kilobytes(link.out)} kB/s`;
+}
+
+/** A radio's report: its signals and the free part of the ground radio's transmit buffer, or how long it has been silent. */
+function radioText(r) {
+  if (r.silence != null) return `<span class="dolphin-radio" data-radio="silent">radio silent ${r.silence} s</span>`;
+  const dbm = v => (v == null ? '?' : v);
+  return `<span class="dolphin-radio" data-radio="current" data-txbuf="${r.txbuf}" data-low="${r.txbuf < 50}">`
+    + `radio ${dbm(r.rssiDbm)}/${dbm(r.remrssiDbm)} dBm txbuf ${r.txbuf}%</span>`;
+}
+
+/** The vehicle's link in the table's cell: its rates, and the radio's report when one came. */
+function linkText(d) {
+  const link = links.get(d.link);
+  return link ? ratesText(link) + (link.radio ? ' ' + radioText(link.radio) : '') : '';
+}
+
+/** The link in the popup: its name, rates and losses, the radio's report with its noise and errors. */
+function linkDetail(link) {
+  const r = link.radio;
+  return `link ${escapeHtml(link.name)}: ${ratesText(link)} in/out`
+    + `${link.lost ? ', ' + link.lost + ' frames lost' : ''}${link.badCrcs ? ', ' + link.badCrcs + ' bad CRCs' : ''}`
+    + `${r ? '<br>' + radioText(r) + `, noise ${r.noiseDbm ?? '?'}/${r.remnoiseDbm ?? '?'} dBm, ${r.rxerrors} receive errors, ${r.fixed} corrected` : ''}`;
 }
 
 /** Readings as "SMOKE 12.5, TEMP 21 degC"; a stale one is greyed, as its sensor has stopped sending. */
@@ -254,7 +285,7 @@ function renderTable() {
       + `data-lat="${pos[0]}" data-lon="${pos[1]}" data-mode="${escapeHtml(d.mode)}">`
       + `<td>${escapeHtml(d.id)}</td><td>${escapeHtml(d.type)}</td><td>${escapeHtml(modeText(d))}${d.armed ? ' armed' : ''}</td>`
       + `<td>${d.battery == null ? '?' : d.battery + ' %'}</td><td>${d.relativeAlt.toFixed(1)} m</td>`
-      + `<td>${d.item != null ? d.item + '/' + d.total : '-'}</td>`
+      + `<td>${d.item != null ? d.item + '/' + d.total : '-'}</td><td class="dolphin-link">${linkText(d)}</td>`
       + `<td>${d.readings && d.readings.length ? readingsText(d.readings) : ''}</td><td>${escapeHtml(d.task)}${d.transfer ? ' <span class="dolphin-transfer">' + escapeHtml(d.transfer.text) + '</span>' : ''}</td></tr>`;
   });
   document.querySelector('#vehicles tbody').innerHTML = rows.join('');
@@ -297,6 +328,7 @@ function follow() {
 ['mousedown', 'wheel', 'touchstart', 'keydown'].forEach(e => map.getContainer().addEventListener(e, () => { userMoved = true; }));
 
 function apply(data) {
+  Object.entries(data.links).forEach(([name, l]) => links.set(name, l));
   data.vehicles.forEach(updateVehicle);
   Object.entries(data.missions).forEach(([id, g]) => updateMission(id, g));
   if (data.executes) renderTree(data.executes);

@@ -82,7 +82,7 @@ class RunConsoleSpec extends Specification {
 
         then:
         out.toString().contains('[t] vehicle 1: no contact for 7 s\n')
-        out.toString().readLines().last() == '1        no contact 7 s   armed          ?     0.0 m -         '
+        out.toString().readLines().last() == '1        no contact 7 s   armed          ?     0.0 m -         0.0/0.0 kB/s '
 
         when:
         silence(4)

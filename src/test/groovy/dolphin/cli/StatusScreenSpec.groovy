@@ -1,13 +1,68 @@
 package dolphin.cli
 
+import dolphin.mavlink.LinkHealth
+import dolphin.mavlink.RadioStatus
+import java.time.Duration
 import spock.lang.Specification
 
 /** The vehicles' status: plain lines on change for logs, a table redrawn in place on a terminal. */
 class StatusScreenSpec extends Specification {
 
+    static final LinkHealth QUIET_UDP = link(0, 0)
+
     static VehicleStatus status(Map m = [:]) {
         new VehicleStatus(m.id ?: '1', m.containsKey('connected') ? m.connected : true, m.containsKey('silence') ? m.silence : -1,
-                m.mode ?: 'GUIDED', m.armed ?: false, m.battery ?: 100, m.alt ?: 0.0d, m.item ?: 0, m.total ?: 0, m.task ?: '', m.transfer ?: '')
+                m.mode ?: 'GUIDED', m.armed ?: false, m.battery ?: 100, m.alt ?: 0.0d, m.item ?: 0, m.total ?: 0, m.task ?: '', m.transfer ?: '',
+                m.link ?: QUIET_UDP)
+    }
+
+    /** A link's health: its rates in and out, and a radio's report of {@code radioAge} seconds ago, or none. */
+    static LinkHealth link(double in, double out, RadioStatus radio = null, double radioAge = 0) {
+        new LinkHealth(radio ? 'serial:/dev/ttyUSB0:57600' : 'udpin:0.0.0.0:14559', in, out, 0, 0, 0, 0, 0, radio,
+                radio ? Duration.ofMillis(Math.round(radioAge * 1000)) : null)
+    }
+
+    /** A SiK radio's report: 124 and 118 are -62 and -65 dBm on its scale. */
+    static RadioStatus radio(int rssi = 124, int remrssi = 118, int txbuf = 97) {
+        new RadioStatus(rssi, remrssi, 40, 45, 0, 0, txbuf, 0)
+    }
+
+    def "the link column shows the link's kB/s in and out; a radio's report ends the row, and the sentence with the rates"() {
+        given:
+        def onRadio = status(task: 'survey running', link: link(1200, 3400, radio(), 0.8))
+
+        expect:
+        onRadio.row() == '1        GUIDED           disarmed   100 %     0.0 m -         1.2/3.4 kB/s survey running, radio -62/-65 dBm txbuf 97%'
+        onRadio.sentence() == 'vehicle 1: GUIDED, disarmed, battery 100 %, altitude 0.0 m, task survey running, radio -62/-65 dBm txbuf 97% 1.2/3.4 kB/s'
+
+        and: 'no radio: the rates in their column, nothing more; the sentence as it always was'
+        status(link: link(1200, 3400)).row() == '1        GUIDED           disarmed   100 %     0.0 m -         1.2/3.4 kB/s '
+        status(link: link(1200, 3400)).sentence() == 'vehicle 1: GUIDED, disarmed, battery 100 %, altitude 0.0 m'
+
+        and: 'whole kilobytes from ten on, so the column stays narrow'
+        status(link: link(123_456, 9_960)).rateText() == '123/10 kB/s'
+        status(link: link(9_940, 49)).rateText() == '9.9/0.0 kB/s'
+
+        and: 'a signal the radio does not know, and a radio whose last report is old news'
+        status(link: link(0, 0, radio(255, 118, 50))).radioText() == 'radio ?/-65 dBm txbuf 50%'
+        status(link: link(0, 0, radio(), 12.4)).radioText() == 'radio silent 12 s'
+        status(transfer: 'uploading: 4 of 9 items', link: link(0, 0, radio(), 12.4)).row()
+                .endsWith(' 0.0/0.0 kB/s uploading: 4 of 9 items, radio silent 12 s')
+    }
+
+    def "plain: a radio's changing report and the link's rates make no line of their own"() {
+        given:
+        def out = new StringWriter()
+        def screen = new PlainScreen(new PrintWriter(out), { '[t] ' })
+
+        when:
+        screen.refresh([status(link: link(1200, 3400, radio(), 0.2))])
+        screen.refresh([status(link: link(900, 3100, radio(110, 100, 40), 0.4))])
+        screen.refresh([status(link: link(0, 0, radio(110, 100, 40), 9))])
+        screen.refresh([status(link: link(0, 0))])
+
+        then:
+        out.toString().readLines() == ['[t] vehicle 1: GUIDED, disarmed, battery 100 %, altitude 0.0 m, radio -62/-65 dBm txbuf 97% 1.2/3.4 kB/s']
     }
 
     def "a transfer in progress shows after the task, in the sentence and the table's row, and makes no log line of its own"() {
@@ -68,8 +123,8 @@ class StatusScreenSpec extends Specification {
 
         then:
         def table = [VehicleStatus.HEADER,
-                     '1        GUIDED           disarmed   100 %     0.0 m -         ',
-                     '2        AUTO             armed      100 %     0.0 m 1/4       hop running']
+                     '1        GUIDED           disarmed   100 %     0.0 m -         0.0/0.0 kB/s ',
+                     '2        AUTO             armed      100 %     0.0 m 1/4       0.0/0.0 kB/s hop running']
         out.toString() == (table + ["\033[3F\033[J[t] a message"] + table).join('\n') + '\n'
     }
 

@@ -4,6 +4,9 @@ import com.MAVLink.enums.MISSION_STATE
 import com.MAVLink.minimal.msg_heartbeat
 import dolphin.core.Position
 import dolphin.core.TaskTree
+import dolphin.mavlink.LinkHealth
+import dolphin.mavlink.RadioStatus
+import java.time.Duration
 import dolphin.mavlink.VehicleFamily
 import dolphin.mavlink.VehicleState
 import groovy.json.JsonSlurper
@@ -20,7 +23,8 @@ class FleetFeedSpec extends Specification {
     TaskBoard board = new TaskBoard(0)
     List<VehicleSample> samples = []
     int drawn
-    FleetFeed feed = new FleetFeed({ samples } as java.util.function.Supplier, board)
+    List<LinkView> links = []
+    FleetFeed feed = new FleetFeed({ samples } as java.util.function.Supplier, { links } as java.util.function.Supplier, board)
 
     static VehicleState state(Position at, boolean armed = true, int item = 2) {
         def hb = new msg_heartbeat(base_mode: (short) (armed ? 128 : 0), custom_mode: 3)
@@ -60,7 +64,7 @@ class FleetFeedSpec extends Specification {
         given:
         samples = [new VehicleSample(VehicleView.of('1', 'UAV', true, -1, false, state(HOME), '', ['Camera', 'SMOKE'],
                 [new VehicleView.Shown('SMOKE', 42.5d, '', 1, true), new VehicleView.Shown('TEMP', Double.NaN, 'degC', 191, false)],
-                null), null, { null })]
+                null, null), null, { null })]
 
         when:
         def v = parse(feed.sample(1.0).vehicles()['1'].json())
@@ -74,7 +78,7 @@ class FleetFeedSpec extends Specification {
     def "a transfer in progress is sent with its list, path, amount, resends and text; none is null"() {
         given:
         def status = new TransferStatus(MissionType.FENCE, true, TransferPath.FTP, 620, 1530, 2)
-        samples = [new VehicleSample(VehicleView.of('1', 'UAV', true, -1, false, state(HOME), '', [], [], status), null, { null }),
+        samples = [new VehicleSample(VehicleView.of('1', 'UAV', true, -1, false, state(HOME), '', [], [], status, null), null, { null }),
                    sample('2', HOME)]
 
         when:
@@ -86,9 +90,75 @@ class FleetFeedSpec extends Specification {
         parse(frame.vehicles()['2'].json()).transfer == null
     }
 
+    static final String SERIAL = 'serial:/dev/ttyUSB0:57600'
+    static final RadioStatus RADIO = new RadioStatus(124, 118, 40, 45, 6, 9, 97, 0)
+
+    VehicleSample onLink(String id, String link) {
+        new VehicleSample(VehicleView.of(id, 'UAV', true, -1, false, state(HOME), '', [], [], null, link), null, { null })
+    }
+
+    static LinkView view(double in, double out, RadioStatus radio = null, double radioAge = 0) {
+        LinkView.of(new LinkHealth(SERIAL, in, out, 9000, 4000, 3, 1, 2, radio, radio ? Duration.ofMillis(Math.round(radioAge * 1000)) : null))
+    }
+
+    static Map linkJson(FleetFeed.FeedFrame frame) {
+        parse(frame.links()[SERIAL].json())
+    }
+
+    def "each link is sent apart from its vehicles, which name it: rates to 100 B/s, losses, the radio's report"() {
+        given:
+        samples = [onLink('1', SERIAL), sample('2', HOME)]
+        links = [view(1234, 3456, RADIO, 0.5)]
+
+        when:
+        def all = parse(FleetFeed.update(feed.sample(1.0), 0, new EventLog(1).since(0), ''))
+
+        then:
+        all.links == [(SERIAL): [name: SERIAL, in: 1200, out: 3500, lost: 3, badCrcs: 1,
+                radio: [rssi: 124, remrssi: 118, noise: 40, remnoise: 45, rssiDbm: -62, remrssiDbm: -65, noiseDbm: -106,
+                        remnoiseDbm: -103, rxerrors: 6, fixed: 9, txbuf: 97, silence: null]]]
+        all.vehicles.find { it.id == '1' }.link == SERIAL
+        all.vehicles.find { it.id == '2' }.link == null
+
+        when: 'a radio whose report is old news, one that does not know its signal, a link without a radio'
+        links = [view(0, 0, RADIO, 12.5)]
+        def stale = linkJson(feed.sample(2.0))
+        links = [view(0, 0, new RadioStatus(255, 118, 255, 45, 0, 0, 50, 0), 1)]
+        def unknown = linkJson(feed.sample(3.0))
+        links = [view(250, 40)]
+        def plain = linkJson(feed.sample(4.0))
+
+        then:
+        stale.radio.silence == 12
+        unknown.radio.rssiDbm == null && unknown.radio.noiseDbm == null && unknown.radio.remrssiDbm == -65
+        plain.radio == null && plain.in == 300 && plain.out == 0
+    }
+
+    def "a link whose rates change is sent again, not its vehicles; rates that round the same and a current report's age send nothing"() {
+        given:
+        samples = [onLink('1', SERIAL), onLink('2', SERIAL)]
+        links = [view(1210, 3420, RADIO, 0.2)]
+        def first = feed.sample(1.0)
+
+        when:
+        links = [view(1160, 3440, RADIO, 3.9)]
+        def second = parse(FleetFeed.update(feed.sample(1.25), first.number(), new EventLog(1).since(0), ''))
+
+        then:
+        second.links.isEmpty() && second.vehicles.isEmpty()
+
+        when:
+        links = [view(1290, 3440, RADIO, 4.1)]
+        def third = parse(FleetFeed.update(feed.sample(1.5), first.number(), new EventLog(1).since(0), ''))
+
+        then:
+        third.links.values()*.in == [1300]
+        third.vehicles.isEmpty()
+    }
+
     def "a silent vehicle is sent with the seconds of its silence, a heard one with null; each second more is a change"() {
         given:
-        def silent = { int seconds -> new VehicleSample(VehicleView.of('1', 'UAV', true, seconds, false, state(HOME), '', [], [], null), null, { null }) }
+        def silent = { int seconds -> new VehicleSample(VehicleView.of('1', 'UAV', true, seconds, false, state(HOME), '', [], [], null, null), null, { null }) }
         samples = [silent(7), sample('2', HOME)]
 
         when:

@@ -1,10 +1,12 @@
 package dolphin.web
 
+import com.MAVLink.common.msg_radio_status
 import dolphin.core.SystemClock
 import dolphin.dsl.Engine
 import dolphin.dsl.ScriptResult
 import dolphin.mavlink.MAVLinkCommunications
 import dolphin.mavlink.MAVLinkConfig
+import dolphin.mavlink.codec.FrameWriter
 import dolphin.platform.MAVLinkPlatform
 import dolphin.sim.PlumeField
 import dolphin.sim.SimEquipment
@@ -154,6 +156,38 @@ class WebViewBrowserSpec extends Specification {
         waitUntil(10) { $('#vehicles tr[data-vehicle="2"][data-silent="false"]') }
         waitUntil(10) { logText() =~ /2 contact again after \d+ s/ }
         labels().contains('2')
+    }
+
+    def "the link column shows the link's rates, and a telemetry radio's report once one comes; the radio is no vehicle"() {
+        given:
+        browser.get(view.address())
+        waitUntil(10) { $('#connection[data-state="live"]') }
+        waitUntil(30) { positions().keySet() == ['1', '2'] as Set }
+        def radio = new FrameWriter(51, 68)
+        def socket = new DatagramSocket()
+        def ground = new InetSocketAddress('127.0.0.1', comms.links()[0].localPort())
+
+        expect: 'rates in kB/s, and no radio on a plain UDP link'
+        waitUntil(10) { linkCell('1') ==~ /\d+\.\d\/\d+\.\d kB\/s/ && linkCell('1') != '0.0/0.0 kB/s' }
+        !$('#vehicles .dolphin-radio')
+
+        and: 'a SiK radio on the link reports, as it does on each of our heartbeats (here on each look)'
+        waitUntil(10) {
+            byte[] f = radio.write(new msg_radio_status(rssi: 124, remrssi: 118, noise: 40, remnoise: 45, txbuf: 97))
+            socket.send(new DatagramPacket(f, f.length, ground))
+            $('#vehicles tr[data-vehicle="2"] .dolphin-radio[data-radio="current"]')
+        }
+        linkCell('1') ==~ /\d+\.\d\/\d+\.\d kB\/s radio -62\/-65 dBm txbuf 97%/
+        comms.nodes()*.id == ['1', '2']
+
+        cleanup:
+        socket?.close()
+    }
+
+    /** The link column of a vehicle's row in the table. */
+    private String linkCell(String id) {
+        (browser.executeScript('return document.querySelector(`#vehicles tr[data-vehicle="${arguments[0]}"] td.dolphin-link`).innerText', id) as String)
+                .replaceAll(/\s+/, ' ').trim()
     }
 
     /** The mode column of a vehicle's row in the table. */

@@ -25,9 +25,23 @@ public final class DropCounters {
     }
 
     private final AtomicLongArray counts = new AtomicLongArray(Reason.values().length);
+    /** Counters that also count everything counted here (all links'), or null. */
+    private final DropCounters total;
+
+    public DropCounters() {
+        this(null);
+    }
+
+    /** Counters of one stream (a link's) that also add what they count to {@code total}, the sum of all streams. */
+    public DropCounters(DropCounters total) {
+        this.total = total;
+    }
 
     void add(Reason r, long n) {
         counts.addAndGet(r.ordinal(), n);
+        if (total != null) {
+            total.add(r, n);
+        }
     }
 
     public long get(Reason r) {
