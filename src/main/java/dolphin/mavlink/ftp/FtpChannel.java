@@ -39,4 +39,13 @@ public interface FtpChannel {
     default int dataBytes() {
         return FtpPayload.DATA_BYTES;
     }
+
+    /**
+     * How much of our telemetry radio's buffer towards the vehicle is free, in percent, from its
+     * latest RADIO_STATUS (txbuf); -1 when no radio reports on the link. A filling buffer throws
+     * bytes away silently, so fewer requests go out at once while it fills.
+     */
+    default int radioBufferFree() {
+        return -1;
+    }
 }

@@ -10,7 +10,7 @@ import java.util.function.BooleanSupplier;
 
 /**
  * One session with the vehicle's FTP server, on the protocol's thread: its requests numbered,
- * at most {@link #WINDOW} outstanding, each sent again on its own timeout (the link's RTO, backed
+ * at most {@link #WINDOW} outstanding (fewer while our radio's buffer fills), each sent again on its own timeout (the link's RTO, backed
  * off per timeout in a row, twice at most), and matched with their replies by session, req_opcode and seq (a
  * reply's seq is its request's plus one); a session that makes no progress for the give-up time
  * fails. A request sent again keeps its seq, so ArduPilot repeats its remembered reply instead of
@@ -116,7 +116,16 @@ final class FtpSession {
 
     /** Requests that may still be sent now. */
     int free() {
-        return ended ? 0 : WINDOW - pending.size();
+        return ended ? 0 : window(channel.radioBufferFree()) - pending.size();
+    }
+
+    /**
+     * Requests outstanding at most, given how much of our radio's buffer is free: all of
+     * {@link #WINDOW} from half free up (or without a radio), two from a fifth, one below: the
+     * thresholds at which ArduPilot slows its own streams by its radio's report.
+     */
+    static int window(int radioBufferFree) {
+        return radioBufferFree < 0 || radioBufferFree >= 50 ? WINDOW : radioBufferFree >= 20 ? 2 : 1;
     }
 
     /** Sends a request naming the session's file (OpenFileRO, CreateFile). */

@@ -6,6 +6,7 @@ import dolphin.core.Position;
 import dolphin.core.VehicleEvent;
 import dolphin.core.VehicleEvent.EventKind;
 import dolphin.mavlink.CommandResult;
+import dolphin.mavlink.LinkHealth;
 import dolphin.mavlink.MAVLinkNode;
 import dolphin.mavlink.RoundTrip;
 import dolphin.mavlink.VehicleFamily;
@@ -167,6 +168,12 @@ public final class VehicleMissions implements MissionVehicle {
     @Override
     public boolean throughRadio() {
         return node.throughRadio();
+    }
+
+    @Override
+    public int radioBufferFree() {
+        LinkHealth health = node.linkHealth();
+        return health.radioCurrent() ? health.radio().txbuf() : -1;
     }
 
     @Override

@@ -102,6 +102,11 @@ public final class MissionTransfers {
             }
 
             @Override
+            public int radioBufferFree() {
+                return vehicle.radioBufferFree();
+            }
+
+            @Override
             public int dataBytes() {
                 return vehicle.throughRadio() ? RADIO_DATA_BYTES : FtpChannel.super.dataBytes();
             }

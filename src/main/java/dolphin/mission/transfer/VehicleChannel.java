@@ -49,6 +49,9 @@ public interface VehicleChannel {
      */
     boolean throughRadio();
 
+    /** The percentage free of our radio's buffer towards the vehicle (its txbuf), or -1 without a current report. */
+    int radioBufferFree();
+
     /** The vehicle's home as it last reported it (HOME_POSITION), or null while it has not. */
     Position home();
 

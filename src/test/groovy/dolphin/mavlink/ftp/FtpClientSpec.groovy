@@ -145,6 +145,28 @@ class FtpClientSpec extends Specification {
         progress.last() == [2000L, 2000L, 2L]
     }
 
+    @Unroll
+    def "our radio's buffer #free% free: at most #most writes outstanding"() {
+        given:
+        link.radioBufferFree = free
+
+        when:
+        settle(client.write('/b', bytes(2000), timeouts, recorder()))
+
+        then:
+        server.files['/b'] == bytes(2000)
+        server.mostQueued == most
+
+        where:
+        free | most
+        -1   | FtpSession.WINDOW
+        80   | FtpSession.WINDOW
+        50   | FtpSession.WINDOW
+        35   | 2
+        20   | 2
+        10   | 1
+    }
+
     def "a missing file: the NAK names the file, the operation and the error"() {
         when:
         Throwable e = failure(client.read('/nothing.txt', null, timeouts, null))

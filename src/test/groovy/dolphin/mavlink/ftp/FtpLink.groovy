@@ -12,6 +12,8 @@ class FtpLink implements FtpChannel {
     final FakeFtpServer server
     final FtpClient client
     int sent
+    /** Our radio's free buffer in percent; -1: no radio. */
+    int radioBufferFree = -1
 
     FtpLink(ManualClock clock, Closure<FtpClient> client) {
         this.server = new FakeFtpServer(clock, { msg_file_transfer_protocol m -> this.client.handle(m) })
@@ -35,4 +37,7 @@ class FtpLink implements FtpChannel {
 
     @Override
     RoundTrip roundTrip() { roundTrip }
+
+    @Override
+    int radioBufferFree() { radioBufferFree }
 }

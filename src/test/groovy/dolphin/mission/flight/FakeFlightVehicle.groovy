@@ -162,6 +162,9 @@ class FakeFlightVehicle implements MissionVehicle {
     boolean throughRadio() { false }
 
     @Override
+    int radioBufferFree() { -1 }
+
+    @Override
     dolphin.core.Position home() { state.home() }
 
     @Override

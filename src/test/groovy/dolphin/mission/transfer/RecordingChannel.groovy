@@ -51,6 +51,8 @@ class RecordingChannel implements VehicleChannel {
     dolphin.mavlink.VehicleFamily family = dolphin.mavlink.VehicleFamily.COPTER
     /** Whether the vehicle is reached through a telemetry radio. */
     boolean throughRadio
+    /** Our radio's free buffer in percent, -1: no radio reports. */
+    int radioBufferFree = -1
     /** Times the transfers asked the vehicle what it offers. */
     int asks
     /** The vehicle side's answer to an ask, if any: it may set {@link #offersFtp}. */
@@ -76,6 +78,9 @@ class RecordingChannel implements VehicleChannel {
 
     @Override
     boolean throughRadio() { throughRadio }
+
+    @Override
+    int radioBufferFree() { radioBufferFree }
 
     @Override
     dolphin.core.Position home() { home }
