@@ -1,34 +1,36 @@
 package dolphin.mavlink;
 
-import com.MAVLink.ardupilotmega.msg_ekf_status_report;
-import com.MAVLink.common.msg_extended_sys_state;
-import com.MAVLink.common.msg_home_position;
-import com.MAVLink.common.msg_battery_status;
-import com.MAVLink.common.msg_mission_current;
 import com.MAVLink.standard.msg_global_position_int;
-import com.MAVLink.common.msg_sys_status;
 import com.MAVLink.common.msg_request_data_stream;
 import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_DATA_STREAM;
+import dolphin.mavlink.link.Link;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.OptionalDouble;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicInteger;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
 /**
  * Asks each vehicle for the telemetry the runtime reads, because ArduCopter sends none unless asked
  * (docs/decisions.md, "ArduPilot behaviour we rely on"): MAV_CMD_SET_MESSAGE_INTERVAL per message,
  * falling back to REQUEST_DATA_STREAM when a vehicle refuses it, and asking again when a stream
- * falls silent.
+ * falls silent. The rates fit the link the vehicles share ({@link TelemetryBudget}).
  * Runs on the communications thread.
  */
 final class TelemetryRequests {
 
 
     private static final long MIN_SILENCE = 3_000_000_000L;
+    /** A SiK radio's serial side at its default 57600 baud, 8N1. */
+    private static final double SIK_SERIAL_BYTES_PER_SECOND = 5760;
+    private static final Logger LOG = LoggerFactory.getLogger(TelemetryRequests.class);
 
     private static final class Stream {
-        final long intervalNanos;
+        long intervalNanos;
         /**
          * A message only some autopilots send (EKF_STATUS_REPORT is ArduPilot's): a refusal does not
          * switch the vehicle to REQUEST_DATA_STREAM, and it is asked for again only once it was seen.
@@ -53,29 +55,89 @@ final class TelemetryRequests {
         boolean fallback;
     }
 
+    /** What a link's plan was made for: its vehicles and its bytes per second (NaN: unknown). */
+    private record PlanInputs(int vehicles, double bytesPerSecond) {
+    }
+
     private final MAVLinkCommunications comms;
-    private final long fastNanos;
+    private final double hz;
     private final Map<MAVLinkNode, Vehicle> vehicles = new LinkedHashMap<>();
+    private final Map<Link, PlanInputs> planned = new HashMap<>();
+    private final Map<Link, TelemetryBudget.Plan> plans = new ConcurrentHashMap<>();
     private final Map<String, AtomicInteger> rerequests = new ConcurrentHashMap<>();
 
     TelemetryRequests(MAVLinkCommunications comms, double hz) {
         this.comms = comms;
-        this.fastNanos = (long) (1e9 / hz);
+        this.hz = hz;
     }
 
     void discovered(MAVLinkNode node, long now) {
         Vehicle v = new Vehicle();
-        for (int id : new int[] {msg_sys_status.MAVLINK_MSG_ID_SYS_STATUS,
-                msg_global_position_int.MAVLINK_MSG_ID_GLOBAL_POSITION_INT, msg_mission_current.MAVLINK_MSG_ID_MISSION_CURRENT}) {
-            v.streams.put(id, new Stream(fastNanos, false));
-        }
-        for (int id : new int[] {msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE,
-                msg_battery_status.MAVLINK_MSG_ID_BATTERY_STATUS, msg_home_position.MAVLINK_MSG_ID_HOME_POSITION}) {
-            v.streams.put(id, new Stream(1_000_000_000L, false));
-        }
-        v.streams.put(msg_ekf_status_report.MAVLINK_MSG_ID_EKF_STATUS_REPORT, new Stream(1_000_000_000L, true));
         vehicles.put(node, v);
+        TelemetryBudget.Plan plan = replan(node.getLink(), now, node);
+        // asked for one at a time (a vehicle's commands of a kind queue up): what matters most first
+        for (int i = TelemetryBudget.STREAMS.size() - 1; i >= 0; i--) {
+            TelemetryBudget.Stream s = TelemetryBudget.STREAMS.get(i);
+            v.streams.put(s.msgid(), new Stream(interval(plan, s.msgid()), s.optional()));
+        }
         v.streams.forEach((id, s) -> request(node, v, id, s, now));
+    }
+
+    /** The plan of the streams asked of each vehicle on {@code link}, or null before a vehicle was heard there. */
+    TelemetryBudget.Plan plan(Link link) {
+        return plans.get(link);
+    }
+
+    /**
+     * Fits the streams of the link's vehicles to its bandwidth again when what it was fitted to
+     * changed: a vehicle more, or a radio heard on a link whose bandwidth was not stated (a SiK
+     * radio's host side runs at 57600 baud). The vehicles already asked, but {@code fresh}, are
+     * asked again at their new rates.
+     */
+    private TelemetryBudget.Plan replan(Link link, long now, MAVLinkNode fresh) {
+        int count = (int) vehicles.keySet().stream().filter(n -> n.getLink() == link).count();
+        PlanInputs inputs = new PlanInputs(count, bytesPerSecond(link));
+        TelemetryBudget.Plan plan = plans.get(link);
+        if (inputs.equals(planned.get(link))) {
+            return plan;
+        }
+        planned.put(link, inputs);
+        plan = TelemetryBudget.plan(hz, inputs.vehicles(), inputs.bytesPerSecond());
+        plans.put(link, plan);
+        if (!plan.fits()) {
+            LOG.warn("link {}: {} vehicles need {} bytes/s of telemetry at the slowest rates, more than half its {} bytes/s:"
+                    + " their telemetry may lag", link, count, Math.round(plan.bytesPerSecond()), Math.round(inputs.bytesPerSecond()));
+        } else if (plan.slowed()) {
+            LOG.info("link {}: {} vehicles in {} bytes/s: telemetry slowed to {}", link, count,
+                    Math.round(inputs.bytesPerSecond()), plan.slowedText(hz));
+        }
+        for (Map.Entry<MAVLinkNode, Vehicle> e : vehicles.entrySet()) {
+            if (e.getKey().getLink() == link && e.getKey() != fresh) {
+                for (Map.Entry<Integer, Stream> stream : e.getValue().streams.entrySet()) {
+                    long interval = interval(plan, stream.getKey());
+                    if (interval != stream.getValue().intervalNanos) {
+                        stream.getValue().intervalNanos = interval;
+                        request(e.getKey(), e.getValue(), stream.getKey(), stream.getValue(), now);
+                    }
+                }
+            }
+        }
+        return plan;
+    }
+
+    private double bytesPerSecond(Link link) {
+        if (link == null) {
+            return Double.NaN;
+        }
+        OptionalDouble stated = link.url().bytesPerSecond();
+        if (stated.isPresent()) {
+            return stated.getAsDouble();
+        }
+        return comms.linkHealth(link).radio() != null ? SIK_SERIAL_BYTES_PER_SECOND : Double.NaN;
+    }
+
+    private static long interval(TelemetryBudget.Plan plan, int msgid) {
+        return Math.round(1e9 / plan.hz().get(msgid));
     }
 
     void seen(MAVLinkNode node, int msgid, long now) {
@@ -87,8 +149,12 @@ final class TelemetryRequests {
         }
     }
 
-    /** Asks again for the streams that fell silent (vehicles that are lost are left alone). */
+    /**
+     * Asks again for the streams that fell silent (vehicles that are lost are left alone), and fits
+     * the streams to a link whose bandwidth became known.
+     */
     void check(long now) {
+        vehicles.keySet().stream().map(MAVLinkNode::getLink).distinct().toList().forEach(link -> replan(link, now, null));
         vehicles.forEach((node, v) -> {
             if (!node.isConnected()) {
                 return;
@@ -118,7 +184,7 @@ final class TelemetryRequests {
                 .thenAccept(r -> {
                     if (!r.accepted() && !v.fallback && !s.optional) {
                         v.fallback = true;
-                        requestDataStreams(node, fastNanos);
+                        requestDataStreams(node, v.streams.get(msg_global_position_int.MAVLINK_MSG_ID_GLOBAL_POSITION_INT).intervalNanos);
                     }
                 });
     }

@@ -22,7 +22,10 @@ class LinkSpec extends Specification {
         LinkUrl.parse('udpin:0.0.0.0:14559').kind() == LinkUrl.Transport.UDPIN
         LinkUrl.parse('udpout:127.0.0.1:14550').port() == 14550
         LinkUrl.parse('tcp:localhost:5760').host() == 'localhost'
-        with(LinkUrl.parse('serial:/dev/ttyUSB0:57600')) { device() == '/dev/ttyUSB0' && baud() == 57600 }
+        with(LinkUrl.parse('serial:/dev/ttyUSB0:57600')) { device() == '/dev/ttyUSB0' && baud() == 57600 && bytesPerSecond().asDouble == 5760 }
+        with(LinkUrl.parse('udpin:0.0.0.0:14550?bps=115200')) { port() == 14550 && bps() == 115200 && bytesPerSecond().asDouble == 11520 }
+        with(LinkUrl.parse('serial:/dev/ttyUSB0:115200?bps=57600')) { baud() == 115200 && bytesPerSecond().asDouble == 5760 }
+        LinkUrl.parse('udpin:0.0.0.0:14559').bytesPerSecond().empty
 
         when:
         LinkUrl.parse(text)
@@ -38,6 +41,8 @@ class LinkSpec extends Specification {
         'tcp:host'           | 'expected HOST:PORT'
         'tcp:host:0'         | 'between 1 and 65535'
         'udpout:host:x'      | "the port must be a number, got 'x'"
+        'udpin:h:1?baud=9'   | "unknown option 'baud=9': the only one is ?bps="
+        'udpin:h:1?bps=0'    | 'the bits per second must be positive'
         'serial:/dev/ttyS0'  | 'expected DEVICE:BAUD'
         'serial:/dev/ttyS0:0'| 'the baud rate must be positive'
     }
