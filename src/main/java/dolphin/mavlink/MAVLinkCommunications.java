@@ -465,10 +465,13 @@ public final class MAVLinkCommunications implements AutoCloseable {
         if (vehicleLinks.duplicate(link, frame, now)) {
             return true;
         }
-        for (LinkCandidate c : List.copyOf(candidates.values())) {
-            if (c.sysid() == frame.sysid()) {
-                c.heardKnown(node, link, frame, now);
-                joinIfSame(c);
+        if (!candidates.isEmpty()) {
+            for (Link other : links) {
+                LinkCandidate candidate = candidates.get(other.index() + "/" + frame.sysid());
+                if (candidate != null) {
+                    candidate.heardKnown(node, link, frame, now);
+                    joinIfSame(candidate);
+                }
             }
         }
         return false;
