@@ -5,8 +5,9 @@ import java.util.Objects;
 /**
  * Something that happened to a vehicle that a person watching the fleet should hear of, whether or
  * not a task runs on it: contact lost or regained, a pilot taking it over or handing it back, a
- * warning that it makes no progress, a link it is heard on or sent to through. Platforms raise them; an engine hands them to its listeners
- * ({@link RuntimeListener#vehicleEvent}) on the thread that raised them (docs/embedding.md).
+ * warning that it makes no progress, a link it is heard on or sent to through. Platforms raise them;
+ * an engine hands them to its listeners ({@link RuntimeListener#vehicleEvent}) on the thread that
+ * raised them (docs/embedding.md).
  *
  * @param vehicle the vehicle's node id, e.g. "1" or "1@2"
  * @param text what happened as a person reads it, without the vehicle: "no contact for 3 s"

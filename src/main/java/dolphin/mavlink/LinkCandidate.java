@@ -70,8 +70,13 @@ final class LinkCandidate {
         return heartbeat;
     }
 
-    /** The frames both links brought, for the vehicle that takes the link on. */
-    RecentFrames frames() {
+    /**
+     * The frames the known vehicle processed, for it to take the link on: its later copies on this
+     * link are duplicates. Those this link brought first were processed by none, so their copies on
+     * the other link still are processed.
+     */
+    RecentFrames processedFrames() {
+        frames.forget(link.index());
         return frames;
     }
 

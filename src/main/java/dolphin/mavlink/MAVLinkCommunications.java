@@ -517,7 +517,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
         Link link = candidate.link();
         String key = link.index() + "/" + candidate.sysid();
         candidates.remove(key);
-        node.links().join(link, candidate.peer(), clock.nanoTime(), candidate.frames());
+        node.links().join(link, candidate.peer(), clock.nanoTime(), candidate.processedFrames());
         nodesByKey.put(key, node);
         linkChanged(node, "also heard on " + link + ", the same frames as on " + node.getLink());
         return true;

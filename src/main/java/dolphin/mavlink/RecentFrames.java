@@ -43,6 +43,11 @@ final class RecentFrames {
         return -1;
     }
 
+    /** Forgets the frames {@code link} brought first. */
+    void forget(int link) {
+        frames.values().removeIf(a -> a.link() == link);
+    }
+
     private void evictBefore(long oldest) {
         Iterator<Map.Entry<Identity, Arrival>> it = frames.entrySet().iterator();
         while (it.hasNext() && it.next().getValue().nanos() < oldest) {

@@ -59,9 +59,9 @@ final class VehicleLinks {
     }
 
     /**
-     * Another link brings the same vehicle; the path stays where it is. {@code seen} are the frames of
-     * both that told them apart, so the first copies the new link brings of frames already processed
-     * are known as duplicates too.
+     * Another link brings the same vehicle; the path stays where it is. {@code seen} are the vehicle's
+     * frames processed while they were told apart, so the new link's late copies of them are known as
+     * duplicates too.
      */
     void join(Link link, SocketAddress address, long now, RecentFrames seen) {
         links.add(new Traffic(link, address, now));
