@@ -193,7 +193,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
     /** Every vehicle discovered so far, connected or not, by system id then the link it was discovered on. */
     public List<MAVLinkNode> nodes() {
         return nodesById.values().stream()
-                .sorted(Comparator.comparingInt(MAVLinkNode::getMavLinkId).thenComparingInt(n -> n.getLinks().get(0).index()))
+                .sorted(Comparator.comparingInt(MAVLinkNode::getMavLinkId).thenComparingInt(n -> n.links().first().index()))
                 .toList();
     }
 

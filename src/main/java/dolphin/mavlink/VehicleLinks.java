@@ -73,6 +73,11 @@ final class VehicleLinks {
         return List.copyOf(links);
     }
 
+    /** The link the vehicle was discovered on. */
+    Link first() {
+        return links.get(0).link;
+    }
+
     Traffic path() {
         return path;
     }

@@ -156,8 +156,8 @@ class LinkSpec extends Specification {
     }
 
     def "one simulated vehicle relayed to two udpin links is one vehicle, commanded through the first link, then through the second when the first is cut"() {
-        given: 'a copter whose datagrams a relay copies to both links'
-        def h = new FleetHarness(MAVLinkConfig.of('udpin:127.0.0.1:0', 'udpin:127.0.0.1:0'))
+        given: 'a copter whose datagrams a relay copies to both links; in real time, so a busy machine cannot stretch a copy past the 2 s and 4 s of telling the links apart'
+        def h = new FleetHarness(MAVLinkConfig.of('udpin:127.0.0.1:0', 'udpin:127.0.0.1:0'), 1)
         def events = new java.util.concurrent.CopyOnWriteArrayList<dolphin.core.VehicleEvent>()
         h.comms.addVehicleEventListener { events << it }
         def relay = new DatagramRelay(h.comms.links().collect { new InetSocketAddress('127.0.0.1', it.localPort()) })
@@ -166,19 +166,20 @@ class LinkSpec extends Specification {
         expect: 'one vehicle on both links, with its telemetry'
         h.eventually {
             assert h.comms.nodes()*.id == ['1']
-            assert h.node('1').getLinks() == h.comms.links()
+            assert h.node('1').getLinks().toSet() == h.comms.links().toSet()
             assert h.node('1').state().position() != null
         }
-        h.node('1').getLink() == h.comms.links()[0]
+        // which link's reader thread queues a datagram first varies: either may discover the vehicle
+        def (first, second) = h.node('1').getLinks()
+        h.node('1').getLink() == first
         h.comms.command(h.node('1'), MAV_CMD.MAV_CMD_DO_SET_MODE, 1f, 4f).get(10, TimeUnit.SECONDS).accepted()
-        // which reader thread queues a datagram's copy first varies: most of the second's are duplicates
-        h.eventually { assert h.node('1').duplicatesOn(h.comms.links()[1]) > 20 }
+        h.eventually { assert h.node('1').duplicatesOn(first) + h.node('1').duplicatesOn(second) > 20 }
 
         when: 'the first path is cut'
-        relay.cut << 0
+        relay.cut << first.index()
 
         then: 'the vehicle goes on through the second, without a silence'
-        h.eventually { assert h.node('1').getLink() == h.comms.links()[1] }
+        h.eventually { assert h.node('1').getLink() == second }
         events*.kind == [LINK_CHANGED, LINK_CHANGED]
         h.comms.command(h.node('1'), MAV_CMD.MAV_CMD_DO_SET_MODE, 1f, 0f).get(10, TimeUnit.SECONDS).accepted()
         h.eventually { assert fleet.vehicle(1).modeName() == 'STABILIZE' }
