@@ -223,6 +223,35 @@ class VehicleOnTwoLinksSpec extends Specification {
         comms.node('1').silence().present
     }
 
+    def "a link heard once and then silent for 4 s is forgotten: when it brings the vehicle again it is told apart afresh"() {
+        given: 'the LTE link brings one ATTITUDE of the copter at 0.5 s, then nothing until 10 s'
+        def copter = new FrameWriter(1, 1)
+        run(10) { long ms ->
+            stream(copter, ms, ms == 500 ? [(radio): 0, (lte): 50] : [(radio): 0])
+        }
+
+        when:
+        run(3) { long ms -> stream(copter, ms, [(radio): 0, (lte): 50]) }
+
+        then: 'the same vehicle, not another one for having taken longer than 4 s'
+        comms.nodes()*.id == ['1']
+        comms.node('1').getLinks() == [radio, lte]
+    }
+
+    def "a link that first brings the vehicle while its other link is silent has nothing to compare it with: another vehicle, 1@2"() {
+        given: 'the copter on the radio, which falls silent at 3 s; the LTE link comes up at 5 s'
+        def copter = new FrameWriter(1, 1)
+        run(3) { long ms -> stream(copter, ms, [(radio): 0]) }
+        run(2) { }
+
+        when:
+        run(4.5) { long ms -> stream(copter, ms, [(lte): 0]) }
+
+        then:
+        comms.nodes()*.id == ['1', '1@2']
+        comms.node('1@2').getLinks() == [lte]
+    }
+
     def "signed frames on both links: the copies are duplicates, not replays"() {
         given:
         def key = SigningKey.fromPassphrase('two links')
