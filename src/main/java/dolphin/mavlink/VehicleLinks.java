@@ -17,7 +17,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
  */
 final class VehicleLinks {
 
-    /** Five of the 4 Hz messages we ask for, a heartbeat and a half: no working link is that quiet. */
+    /** Six of each 4 Hz message we ask for and a heartbeat and a half: no working link is that quiet. */
     static final long SILENT = 1_500_000_000L;
 
     /** One link of the vehicle: where it is heard on it, when last, and how many of its frames were duplicates. */
