@@ -5,8 +5,9 @@ import java.util.Objects;
 /**
  * Something that happened to a vehicle that a person watching the fleet should hear of, whether or
  * not a task runs on it: contact lost or regained, a pilot taking it over or handing it back, a
- * warning that it makes no progress. Platforms raise them; an engine hands them to its listeners
- * ({@link RuntimeListener#vehicleEvent}) on the thread that raised them (docs/embedding.md).
+ * warning that it makes no progress, a link it is heard on or sent to through. Platforms raise them;
+ * an engine hands them to its listeners ({@link RuntimeListener#vehicleEvent}) on the thread that
+ * raised them (docs/embedding.md).
  *
  * @param vehicle the vehicle's node id, e.g. "1" or "1@2"
  * @param text what happened as a person reads it, without the vehicle: "no contact for 3 s"
@@ -25,7 +26,9 @@ public record VehicleEvent(String vehicle, EventKind kind, String text, double t
         /** The pilot gave the vehicle back to its task. */
         HANDED_BACK,
         /** A warning: the vehicle makes no progress on its task. */
-        STALLING
+        STALLING,
+        /** The vehicle is heard on one more link, or what is sent to it goes through another of its links. */
+        LINK_CHANGED
     }
 
     public VehicleEvent {

@@ -32,6 +32,7 @@ import java.net.SocketAddress;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -83,6 +84,10 @@ public final class MAVLinkCommunications implements AutoCloseable {
     private final Map<Link, LinkTraffic> traffic = new ConcurrentHashMap<>();
     private final Map<String, MAVLinkNode> nodesByKey = new ConcurrentHashMap<>();
     private final Map<String, MAVLinkNode> nodesById = new ConcurrentHashMap<>();
+    /** By LINK/SYSID: system ids heard on a link while known on another, not yet told apart. */
+    private final Map<String, LinkCandidate> candidates = new HashMap<>();
+    /** LINK/SYSID of candidates that turned out to be other vehicles, discovered as SYSID@LINK. */
+    private final Set<String> otherVehicles = new HashSet<>();
     private final MessageHandler handler = new MessageHandler();
     private final DropCounters drops = new DropCounters();
     private final LinkedBlockingQueue<Object> queue = new LinkedBlockingQueue<>();
@@ -166,6 +171,29 @@ public final class MAVLinkCommunications implements AutoCloseable {
         traffic.put(link, new LinkTraffic(link.url().toString(), linkDrops, clock.nanoTime()));
     }
 
+    /**
+     * For specs on a {@link dolphin.core.ManualClock}: takes {@code given} (fakes) as its links and
+     * starts neither their readers nor its thread; the spec hands bytes in with {@link #received} and
+     * does the thread's work with {@link #runDue}, on its own thread.
+     */
+    void attachForSpecs(List<Link> given) {
+        given.forEach(this::attach);
+        scheduleTicks();
+    }
+
+    /** For specs: bytes a link received, queued as a link's reader thread queues them. */
+    void received(Link.Received bytes) {
+        queue.add(bytes);
+    }
+
+    /** For specs: what the communications thread would do now, the queued work and the timers due. */
+    void runDue() {
+        for (Object event; (event = queue.poll()) != null; ) {
+            handle(event);
+        }
+        timers.runDue(clock.nanoTime());
+    }
+
     public List<Link> links() {
         return List.copyOf(links);
     }
@@ -182,10 +210,10 @@ public final class MAVLinkCommunications implements AutoCloseable {
         return t == null ? LinkHealth.unmeasured(link == null ? "" : link.toString()) : t.health(clock.nanoTime());
     }
 
-    /** Every vehicle discovered so far, connected or not, by system id then link. */
+    /** Every vehicle discovered so far, connected or not, by system id then the link it was discovered on. */
     public List<MAVLinkNode> nodes() {
-        return nodesByKey.values().stream()
-                .sorted(Comparator.comparingInt(MAVLinkNode::getMavLinkId).thenComparingInt(n -> n.getLink().index()))
+        return nodesById.values().stream()
+                .sorted(Comparator.comparingInt(MAVLinkNode::getMavLinkId).thenComparingInt(n -> n.links().first().index()))
                 .toList();
     }
 
@@ -339,25 +367,32 @@ public final class MAVLinkCommunications implements AutoCloseable {
         }
     }
 
-    private void loop() {
+    private void scheduleTicks() {
         long now = clock.nanoTime();
         timers.at(now, this::heartbeat);
         timers.at(now + SECOND / 2, this::supervise);
+    }
+
+    private void loop() {
+        scheduleTicks();
         while (running) {
             try {
                 long wait = Math.max(0, Math.min(timers.next() - clock.nanoTime(), SECOND));
-                Object event = queue.poll(Math.max(1, clock.realNanos(wait)), TimeUnit.NANOSECONDS);
-                if (event instanceof Link.Received r) {
-                    receive(r);
-                } else if (event instanceof Runnable action) {
-                    action.run();
-                }
+                handle(queue.poll(Math.max(1, clock.realNanos(wait)), TimeUnit.NANOSECONDS));
                 timers.runDue(clock.nanoTime());
             } catch (InterruptedException e) {
                 running = false;
             } catch (RuntimeException e) {
                 LOG.warn("communications: {}", e.toString(), e);
             }
+        }
+    }
+
+    private void handle(Object event) {
+        if (event instanceof Link.Received r) {
+            receive(r);
+        } else if (event instanceof Runnable action) {
+            action.run();
         }
     }
 
@@ -384,7 +419,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
         commands.tick(now);
         telemetry.check(now);
         capabilities.check(now);
-        nodesByKey.values().forEach(n -> {
+        nodesById.values().forEach(n -> {
             if (n.wasConnected != n.isConnected()) {
                 n.wasConnected = !n.wasConnected;
                 LOG.info("vehicle {} {}", n.getId(), n.wasConnected ? "is back" : "lost: no heartbeat within " + n.getConnectionTimeout() + " s");
@@ -395,6 +430,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
             }
             n.contact().check().ifPresent(this::publish);
         });
+        candidates.values().removeIf(c -> c.isStale(now));
         timers.at(now + SECOND / 4, this::supervise);
     }
 
@@ -410,10 +446,19 @@ public final class MAVLinkCommunications implements AutoCloseable {
 
     private void onFrame(Link link, SocketAddress peer, Frame frame) {
         framesIn.incrementAndGet();
-        log(frame.raw());
         peers.get(link).add(peer);
-        observers.forEach(o -> o.frame(true, link, frame));
+        // every frame the link brought counts for its losses, a duplicate of another link's included
         noteOnLink(link, frame);
+        String key = link.index() + "/" + frame.sysid();
+        if (!nodesByKey.containsKey(key)) {
+            tellApart(key, link, peer, frame);
+        }
+        MAVLinkNode node = nodesByKey.get(key);
+        if (node != null && duplicate(node, link, peer, frame)) {
+            return;
+        }
+        log(frame.raw());
+        observers.forEach(o -> o.frame(true, link, frame));
         if (!config.allowedSysids().isEmpty() && !config.allowedSysids().contains(frame.sysid())) {
             filtered.incrementAndGet();
             return;
@@ -422,19 +467,19 @@ public final class MAVLinkCommunications implements AutoCloseable {
         if (message == null) {
             return;
         }
-        String key = link.index() + "/" + frame.sysid();
-        MAVLinkNode node = nodesByKey.get(key);
-        if (node == null && message instanceof msg_heartbeat hb) {
+        if (node == null && message instanceof msg_heartbeat hb && !candidates.containsKey(key)) {
             node = discover(link, peer, frame, hb);
         }
-        if (node == null) {
-            return;
+        if (node != null) {
+            process(node, frame, message);
         }
+    }
+
+    private void process(MAVLinkNode node, Frame frame, MAVLinkMessage message) {
         tellComponentListeners(node, frame.compid(), message);
         if (frame.compid() != node.getAutopilotCompid()) {
             return;
         }
-        node.heardAt(peer);
         node.contact().heard(frame.msgid()).ifPresent(this::publish);
         telemetry.seen(node, frame.msgid(), clock.nanoTime());
         handler.dispatch(node, message);
@@ -453,6 +498,83 @@ public final class MAVLinkCommunications implements AutoCloseable {
         } else if (frame.msgid() == msg_radio.MAVLINK_MSG_ID_RADIO && frame.message() instanceof msg_radio m) {
             t.radio(RadioStatus.of(m, clock.nanoTime()));
         }
+    }
+
+    /**
+     * Whether a frame of a known vehicle is a duplicate that another of its links brought already. On
+     * the way, a sign of its life on this link, which may change the link it is sent to through, and a
+     * frame to compare with any link not yet told apart from it.
+     */
+    private boolean duplicate(MAVLinkNode node, Link link, SocketAddress peer, Frame frame) {
+        long now = clock.nanoTime();
+        VehicleLinks vehicleLinks = node.links();
+        if (frame.compid() == node.getAutopilotCompid() && Contact.isSignOfLife(frame.msgid())) {
+            vehicleLinks.heard(link, peer, now).ifPresent(change -> linkChanged(node, change));
+        }
+        if (vehicleLinks.duplicate(link, frame, now)) {
+            return true;
+        }
+        if (!candidates.isEmpty()) {
+            for (Link other : links) {
+                LinkCandidate candidate = candidates.get(other.index() + "/" + frame.sysid());
+                if (candidate != null) {
+                    candidate.heardKnown(node, link, frame, now);
+                    joinIfSame(candidate);
+                }
+            }
+        }
+        return false;
+    }
+
+    /**
+     * A frame of a system not discovered on this link. While a vehicle with its id is known on another
+     * link, the link is a {@link LinkCandidate} until told apart: it joins that vehicle, or it brings
+     * another vehicle, discovered at its last heartbeat. Till then its frames are logged and relayed
+     * as any undiscovered system's, and processed by none.
+     */
+    private void tellApart(String key, Link link, SocketAddress peer, Frame frame) {
+        if (otherVehicles.contains(key) || !nodesById.containsKey(String.valueOf(frame.sysid()))) {
+            return;
+        }
+        long now = clock.nanoTime();
+        LinkCandidate candidate = candidates.computeIfAbsent(key,
+                k -> new LinkCandidate(link, frame.sysid(), i -> nodesByKey.get(i + "/" + frame.sysid()), now));
+        candidate.heardHere(frame, peer, now);
+        if (joinIfSame(candidate) || !candidate.isOther(now)) {
+            return;
+        }
+        candidates.remove(key);
+        otherVehicles.add(key);
+        LOG.info("system {} on {} is another vehicle than the one on {}: no frames with a time in common in {} s", frame.sysid(),
+                link, node(String.valueOf(frame.sysid())).getLink(), LinkCandidate.DECIDE_WITHIN / SECOND);
+        // The frame at hand, a heartbeat or not, is processed next; an earlier heartbeat first.
+        Frame heartbeat = candidate.heartbeat();
+        if (heartbeat != null && heartbeat != frame && heartbeat.message() instanceof msg_heartbeat hb) {
+            MAVLinkNode node = discover(link, candidate.peer(), heartbeat, hb);
+            if (node != null) {
+                process(node, heartbeat, hb);
+            }
+        }
+    }
+
+    /** Makes the candidate's link one of the vehicle's when it has shown itself to be it. */
+    private boolean joinIfSame(LinkCandidate candidate) {
+        MAVLinkNode node = candidate.same();
+        if (node == null) {
+            return false;
+        }
+        Link link = candidate.link();
+        String key = link.index() + "/" + candidate.sysid();
+        candidates.remove(key);
+        node.links().join(link, candidate.peer(), clock.nanoTime(), candidate.processedFrames());
+        nodesByKey.put(key, node);
+        linkChanged(node, "also heard on " + link + ", the same frames as on " + node.getLink());
+        return true;
+    }
+
+    private void linkChanged(MAVLinkNode node, String change) {
+        LOG.info("vehicle {}: {}", node.getId(), change);
+        publish(new VehicleEvent(node.getId(), VehicleEvent.EventKind.LINK_CHANGED, change, clock.seconds()));
     }
 
     private void tellComponentListeners(MAVLinkNode node, int component, MAVLinkMessage message) {

@@ -10,6 +10,7 @@ import dolphin.mavlink.link.Link;
 import dolphin.mavlink.link.LinkUrl;
 import java.net.SocketAddress;
 import java.time.Duration;
+import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
@@ -17,8 +18,9 @@ import java.util.function.Predicate;
 import java.util.function.UnaryOperator;
 
 /**
- * A MAVLink vehicle as a Dolphin node: a system id on a link. Its state is an
- * immutable {@link VehicleState} that the communications thread replaces and any thread reads.
+ * A MAVLink vehicle as a Dolphin node: a system id on a link, or on several when they bring the same
+ * frames ({@link VehicleLinks}). Its state is an immutable {@link VehicleState} that the
+ * communications thread replaces and any thread reads.
  */
 public final class MAVLinkNode extends AbstractNode {
 
@@ -29,7 +31,7 @@ public final class MAVLinkNode extends AbstractNode {
     public static final Duration TELEMETRY_WAIT = Duration.ofSeconds(5);
 
     private final MAVLinkCommunications comms;
-    private final Link link;
+    private final VehicleLinks links;
     private final int sysid;
     private final int autopilotCompid;
     private final Clock clock;
@@ -40,7 +42,6 @@ public final class MAVLinkNode extends AbstractNode {
     private volatile long capabilities = -1;
     /** AUTOPILOT_VERSION requests sent since the last answer; written on the communications thread only. */
     private volatile int capabilityAsks;
-    private volatile SocketAddress address;
     /** What a fleet file says of the vehicle, when it says it (docs/sensors.md, "Fleet files"). */
     private volatile String name;
     private volatile String declaredType;
@@ -51,8 +52,7 @@ public final class MAVLinkNode extends AbstractNode {
                 int autopilotCompid, VehicleFamily family, Clock clock) {
         super(id, type, Payload.NONE);
         this.comms = comms;
-        this.link = link;
-        this.address = address;
+        this.links = new VehicleLinks(link, address, clock.nanoTime());
         this.sysid = sysid;
         this.autopilotCompid = autopilotCompid;
         this.clock = clock;
@@ -109,8 +109,9 @@ public final class MAVLinkNode extends AbstractNode {
         return roundTrip;
     }
 
+    /** The link the vehicle's sends go through: of its links, the one chosen by {@link VehicleLinks}. */
     public Link getLink() {
-        return link;
+        return links.path().link();
     }
 
     /**
@@ -119,6 +120,7 @@ public final class MAVLinkNode extends AbstractNode {
      * (docs/radios.md).
      */
     public boolean throughRadio() {
+        Link link = getLink();
         return link != null && (link.url().kind() == LinkUrl.Transport.SERIAL || linkHealth().radio() != null);
     }
 
@@ -127,16 +129,27 @@ public final class MAVLinkNode extends AbstractNode {
      * report of a telemetry radio on it (docs/embedding.md, "Link health"). From any thread.
      */
     public LinkHealth linkHealth() {
-        return comms.linkHealth(link);
+        return comms.linkHealth(getLink());
     }
 
-    /** Where the vehicle was last heard: replies go there. */
+    /** Where the vehicle was last heard on that link: replies go there. */
     public SocketAddress getAddress() {
-        return address;
+        return links.path().address();
     }
 
-    void heardAt(SocketAddress from) {
-        address = from;
+    /** Every link the vehicle is heard on, the one it was discovered on first. */
+    public List<Link> getLinks() {
+        return links.all().stream().map(VehicleLinks.Traffic::link).toList();
+    }
+
+    /** Frames of the vehicle that {@code link} brought after another of its links had: dropped. */
+    public long duplicatesOn(Link link) {
+        return links.all().stream().filter(t -> t.link() == link).mapToLong(VehicleLinks.Traffic::duplicates).sum();
+    }
+
+    /** For the communications thread. */
+    VehicleLinks links() {
+        return links;
     }
 
     /** The fleet file's name for the vehicle, else its id. */

@@ -39,11 +39,11 @@ public final class TelemetryBudget {
      * @param slowestHz the rate it never goes below, however full the link
      * @param optional sent by some autopilots only (EKF_STATUS_REPORT is ArduPilot's)
      */
-    public record Stream(int msgid, String name, int frameBytes, boolean fast, double slowestHz, boolean optional) {
+    public record AskedStream(int msgid, String name, int frameBytes, boolean fast, double slowestHz, boolean optional) {
     }
 
     /** Every stream asked for, in the order they slow down on a full link. */
-    public static final List<Stream> STREAMS = List.of(
+    public static final List<AskedStream> STREAMS = List.of(
             stream(msg_home_position.MAVLINK_MSG_ID_HOME_POSITION, "HOME_POSITION", msg_home_position.MAVLINK_MSG_LENGTH, false, 0.1, false),
             stream(msg_ekf_status_report.MAVLINK_MSG_ID_EKF_STATUS_REPORT, "EKF_STATUS_REPORT", msg_ekf_status_report.MAVLINK_MSG_LENGTH,
                     false, 0.2, true),
@@ -64,12 +64,12 @@ public final class TelemetryBudget {
      * @param bytesPerSecond what the streams and heartbeats of all the link's vehicles use at these rates
      * @param fits whether that is within the link's share (false: every stream is at its slowest and still does not fit)
      */
-    public record Plan(Map<Integer, Double> hz, double bytesPerSecond, boolean fits, boolean slowed) {
+    public record StreamRates(Map<Integer, Double> hz, double bytesPerSecond, boolean fits, boolean slowed) {
 
         /** "GLOBAL_POSITION_INT 1 Hz, SYS_STATUS 0.5 Hz, ..." for the streams below their wanted rate. */
         public String slowedText(double fastHz) {
             List<String> slow = new ArrayList<>();
-            for (Stream s : STREAMS) {
+            for (AskedStream s : STREAMS) {
                 double wanted = s.fast() ? fastHz : 1;
                 double got = hz.get(s.msgid());
                 if (got < wanted) {
@@ -83,35 +83,35 @@ public final class TelemetryBudget {
     private TelemetryBudget() {
     }
 
-    private static Stream stream(int msgid, String name, int payload, boolean fast, double slowestHz, boolean optional) {
-        return new Stream(msgid, name, FRAME_OVERHEAD + payload, fast, slowestHz, optional);
+    private static AskedStream stream(int msgid, String name, int payload, boolean fast, double slowestHz, boolean optional) {
+        return new AskedStream(msgid, name, FRAME_OVERHEAD + payload, fast, slowestHz, optional);
     }
 
     /**
      * The rates for {@code vehicles} vehicles sharing a link of {@code bytesPerSecond} (NaN: not
      * known, so no limit), each stream wanted at {@code fastHz} or 1 Hz.
      */
-    public static Plan plan(double fastHz, int vehicles, double bytesPerSecond) {
+    public static StreamRates plan(double fastHz, int vehicles, double bytesPerSecond) {
         Map<Integer, Double> hz = new LinkedHashMap<>();
-        for (Stream s : STREAMS) {
+        for (AskedStream s : STREAMS) {
             hz.put(s.msgid(), s.fast() ? fastHz : 1.0);
         }
         double budget = Double.isNaN(bytesPerSecond) ? Double.POSITIVE_INFINITY : SHARE * bytesPerSecond;
         int n = Math.max(1, vehicles);
         boolean slowed = false;
-        for (Stream s : STREAMS) {
+        for (AskedStream s : STREAMS) {
             while (used(hz, n) > budget && hz.get(s.msgid()) > s.slowestHz()) {
                 hz.put(s.msgid(), Math.max(s.slowestHz(), hz.get(s.msgid()) / 2));
                 slowed = true;
             }
         }
         double used = used(hz, n);
-        return new Plan(java.util.Collections.unmodifiableMap(hz), used, used <= budget, slowed);
+        return new StreamRates(java.util.Collections.unmodifiableMap(hz), used, used <= budget, slowed);
     }
 
     private static double used(Map<Integer, Double> hz, int vehicles) {
         double perVehicle = HEARTBEAT_BYTES;
-        for (Stream s : STREAMS) {
+        for (AskedStream s : STREAMS) {
             perVehicle += s.frameBytes() * hz.get(s.msgid());
         }
         return perVehicle * vehicles;

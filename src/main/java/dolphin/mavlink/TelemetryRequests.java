@@ -63,7 +63,7 @@ final class TelemetryRequests {
     private final double hz;
     private final Map<MAVLinkNode, Vehicle> vehicles = new LinkedHashMap<>();
     private final Map<Link, PlanInputs> planned = new HashMap<>();
-    private final Map<Link, TelemetryBudget.Plan> plans = new ConcurrentHashMap<>();
+    private final Map<Link, TelemetryBudget.StreamRates> plans = new ConcurrentHashMap<>();
     private final Map<String, AtomicInteger> rerequests = new ConcurrentHashMap<>();
 
     TelemetryRequests(MAVLinkCommunications comms, double hz) {
@@ -74,17 +74,17 @@ final class TelemetryRequests {
     void discovered(MAVLinkNode node, long now) {
         Vehicle v = new Vehicle();
         vehicles.put(node, v);
-        TelemetryBudget.Plan plan = replan(node.getLink(), now, node);
+        TelemetryBudget.StreamRates plan = replan(node.getLink(), now, node);
         // asked for one at a time (a vehicle's commands of a kind queue up): what matters most first
         for (int i = TelemetryBudget.STREAMS.size() - 1; i >= 0; i--) {
-            TelemetryBudget.Stream s = TelemetryBudget.STREAMS.get(i);
+            TelemetryBudget.AskedStream s = TelemetryBudget.STREAMS.get(i);
             v.streams.put(s.msgid(), new Stream(interval(plan, s.msgid()), s.optional()));
         }
         v.streams.forEach((id, s) -> request(node, v, id, s, now));
     }
 
     /** The plan of the streams asked of each vehicle on {@code link}, or null before a vehicle was heard there. */
-    TelemetryBudget.Plan plan(Link link) {
+    TelemetryBudget.StreamRates plan(Link link) {
         return plans.get(link);
     }
 
@@ -94,10 +94,10 @@ final class TelemetryRequests {
      * radio's host side runs at 57600 baud). The vehicles already asked, but {@code fresh}, are
      * asked again at their new rates.
      */
-    private TelemetryBudget.Plan replan(Link link, long now, MAVLinkNode fresh) {
+    private TelemetryBudget.StreamRates replan(Link link, long now, MAVLinkNode fresh) {
         int count = (int) vehicles.keySet().stream().filter(n -> n.getLink() == link).count();
         PlanInputs inputs = new PlanInputs(count, bytesPerSecond(link));
-        TelemetryBudget.Plan plan = plans.get(link);
+        TelemetryBudget.StreamRates plan = plans.get(link);
         if (inputs.equals(planned.get(link))) {
             return plan;
         }
@@ -136,7 +136,7 @@ final class TelemetryRequests {
         return comms.linkHealth(link).radio() != null ? SIK_SERIAL_BYTES_PER_SECOND : Double.NaN;
     }
 
-    private static long interval(TelemetryBudget.Plan plan, int msgid) {
+    private static long interval(TelemetryBudget.StreamRates plan, int msgid) {
         return Math.round(1e9 / plan.hz().get(msgid));
     }
 

@@ -16,16 +16,17 @@ import spock.util.concurrent.PollingConditions
 
 /**
  * A ground station and simulated fleets on loopback UDP, sharing one clock that runs ten times
- * faster than real time. Close it to stop everything and free the sockets.
+ * faster than real time unless told otherwise. Close it to stop everything and free the sockets.
  */
 class FleetHarness implements AutoCloseable {
     static final double SPEEDUP = 10
 
-    final SystemClock clock = new SystemClock(SPEEDUP)
+    final SystemClock clock
     final MAVLinkCommunications comms
     final List<SimFleet> fleets = []
 
-    FleetHarness(MAVLinkConfig config = MAVLinkConfig.of('udpin:127.0.0.1:0')) {
+    FleetHarness(MAVLinkConfig config = MAVLinkConfig.of('udpin:127.0.0.1:0'), double speedup = SPEEDUP) {
+        clock = new SystemClock(speedup)
         comms = new MAVLinkCommunications(config, clock)
         comms.start()
     }

@@ -1,6 +1,7 @@
 package dolphin.mavlink
 
 import com.MAVLink.enums.MAV_AUTOPILOT
+import com.MAVLink.enums.MAV_CMD
 import com.MAVLink.enums.MAV_TYPE
 import com.MAVLink.minimal.msg_heartbeat
 import dolphin.core.SystemClock
@@ -13,6 +14,9 @@ import dolphin.sim.VehicleKind
 import spock.lang.Specification
 import spock.lang.Timeout
 import spock.util.concurrent.PollingConditions
+import java.util.concurrent.TimeUnit
+
+import static dolphin.core.VehicleEvent.EventKind.LINK_CHANGED
 
 @Timeout(60)
 class LinkSpec extends Specification {
@@ -154,5 +158,39 @@ class LinkSpec extends Specification {
 
         cleanup:
         h?.close()
+    }
+
+    def "one simulated vehicle relayed to two udpin links is one vehicle, commanded through the first link, then through the second when the first is cut"() {
+        given: 'a copter whose datagrams a relay copies to both links; in real time, so a busy machine cannot stretch a copy past the 2 s and 4 s of telling the links apart'
+        def h = new FleetHarness(MAVLinkConfig.of('udpin:127.0.0.1:0', 'udpin:127.0.0.1:0'), 1)
+        def events = new java.util.concurrent.CopyOnWriteArrayList<dolphin.core.VehicleEvent>()
+        h.comms.addVehicleEventListener { events << it }
+        def relay = new DatagramRelay(h.comms.links().collect { new InetSocketAddress('127.0.0.1', it.localPort()) })
+        def fleet = h.fleet(dolphin.sim.SimFleet.Config.of(1, VehicleKind.COPTER, relay.address()))
+
+        expect: 'one vehicle on both links, with its telemetry'
+        h.eventually {
+            assert h.comms.nodes()*.id == ['1']
+            assert h.node('1').getLinks().toSet() == h.comms.links().toSet()
+            assert h.node('1').state().position() != null
+        }
+        // which link's reader thread queues a datagram first varies: either may discover the vehicle
+        def (first, second) = h.node('1').getLinks()
+        h.node('1').getLink() == first
+        h.comms.command(h.node('1'), MAV_CMD.MAV_CMD_DO_SET_MODE, 1f, 4f).get(10, TimeUnit.SECONDS).accepted()
+        h.eventually { assert h.node('1').duplicatesOn(first) + h.node('1').duplicatesOn(second) > 20 }
+
+        when: 'the first path is cut'
+        relay.cut << first.index()
+
+        then: 'the vehicle goes on through the second, without a silence'
+        h.eventually { assert h.node('1').getLink() == second }
+        events*.kind == [LINK_CHANGED, LINK_CHANGED]
+        h.comms.command(h.node('1'), MAV_CMD.MAV_CMD_DO_SET_MODE, 1f, 0f).get(10, TimeUnit.SECONDS).accepted()
+        h.eventually { assert fleet.vehicle(1).modeName() == 'STABILIZE' }
+
+        cleanup:
+        h?.close()
+        relay?.close()
     }
 }

@@ -26,7 +26,7 @@ class TelemetryBudgetSpec extends Specification {
     @Unroll
     def "#vehicles vehicles on a link of #bytes bytes/s: every stream at its wanted rate"() {
         when:
-        TelemetryBudget.Plan plan = TelemetryBudget.plan(4, vehicles, bytes)
+        TelemetryBudget.StreamRates plan = TelemetryBudget.plan(4, vehicles, bytes)
 
         then:
         !plan.slowed()
@@ -49,7 +49,7 @@ class TelemetryBudgetSpec extends Specification {
 
         expect: 'as vehicles are added to a 57600-baud link, the first stream slowed is the first in the order'
         (5..40).each { n ->
-            TelemetryBudget.Plan plan = TelemetryBudget.plan(4, n, 5760)
+            TelemetryBudget.StreamRates plan = TelemetryBudget.plan(4, n, 5760)
             def slowed = TelemetryBudget.STREAMS.findAll { s -> plan.hz()[s.msgid()] < (s.fast() ? 4d : 1d) }*.name()
             assert slowed == order.take(slowed.size())
             assert TelemetryBudget.STREAMS.every { s -> plan.hz()[s.msgid()] >= s.slowestHz() }

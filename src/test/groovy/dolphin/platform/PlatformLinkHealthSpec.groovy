@@ -35,16 +35,16 @@ class PlatformLinkHealthSpec extends Specification {
         given:
         def hb = new msg_heartbeat(type: MAV_TYPE.MAV_TYPE_QUADROTOR, autopilot: MAV_AUTOPILOT.MAV_AUTOPILOT_ARDUPILOTMEGA)
         hear(udp, 1, 1, hb)
-        hear(radio, 1, 1, hb)
+        hear(radio, 2, 1, hb)
         hear(radio, 51, 68, new msg_radio_status(rssi: 124, remrssi: 118, txbuf: 41))
 
         expect:
-        comms.nodes()*.id == ['1', '1@2']
+        comms.nodes()*.id == ['1', '2']
         platform.linkHealth('1').get().link() == 'udpin:0.0.0.0:14559'
         platform.linkHealth('1').get().radio() == null
-        platform.linkHealth('1@2').get().link() == 'serial:/dev/ttyUSB0:57600'
-        platform.linkHealth('1@2').get().radio().txbuf() == 41
-        platform.linkHealth('1@2').get().bytesIn() > 0
+        platform.linkHealth('2').get().link() == 'serial:/dev/ttyUSB0:57600'
+        platform.linkHealth('2').get().radio().txbuf() == 41
+        platform.linkHealth('2').get().bytesIn() > 0
         platform.linkHealth('51').empty
         comms.linkHealth()*.link() == ['udpin:0.0.0.0:14559', 'serial:/dev/ttyUSB0:57600']
     }
