@@ -20,6 +20,7 @@ import dolphin.mission.model.MissionItem
 import dolphin.mission.model.MissionType
 import dolphin.mission.transfer.MissionFtpFile
 import spock.lang.AutoCleanup
+import dolphin.mission.transfer.StoredItems
 import spock.lang.Specification
 
 /** The vehicle side of the mission protocol, against a bare ground station (ardupilot-behaviour.md §2.4). */
@@ -63,7 +64,7 @@ class MissionProtocolSpec extends Specification {
         def stored = gcs.vehicle().mission()
         stored.drop(1) == items.drop(1)
         def down = gcs.download()
-        down.drop(1) == stored.drop(1).collect { CommandStorage.reported(it, false) }
+        down.drop(1) == stored.drop(1).collect { StoredItems.missionItem(it, false) }
         down[0] == stored[0]
         with(down[0]) {
             seq() == 0

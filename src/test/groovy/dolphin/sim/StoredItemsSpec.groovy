@@ -6,7 +6,10 @@ import com.MAVLink.enums.MAV_FRAME
 import com.MAVLink.enums.MAV_MISSION_RESULT
 import dolphin.mission.model.MissionItem
 import dolphin.mission.model.MissionType
+import dolphin.core.Position
+import dolphin.mavlink.ftp.FileCrc32
 import dolphin.mission.transfer.MissionFtpFile
+import dolphin.mission.transfer.StoredItems
 import spock.lang.Specification
 
 import static dolphin.sim.RecordingConformanceSpec.DIRECTORY
@@ -16,7 +19,7 @@ import static dolphin.sim.RecordingConformanceSpec.DIRECTORY
  * does: the missions ArduCopter SITL read back over FTP in the project's recordings, and the
  * commands whose parameters it keeps in fewer bytes than a float.
  */
-class CommandStorageSpec extends Specification {
+class StoredItemsSpec extends Specification {
 
     static final int NAV = MAV_CMD.MAV_CMD_NAV_WAYPOINT
     static final float NAN = Float.NaN
@@ -36,7 +39,7 @@ class CommandStorageSpec extends Specification {
         }
     }
 
-    def "#recording: the mission ArduCopter read back is the one written as CommandStorage keeps it"() {
+    def "#recording: the mission ArduCopter read back is the one written as StoredItems keeps it"() {
         given:
         def recorded = Recording.read(DIRECTORY.resolve(recording + '.tlog'))
         def written = MissionFtpFile.decode(files(recorded, true)[MissionType.MISSION]).items()
@@ -44,7 +47,7 @@ class CommandStorageSpec extends Specification {
 
         expect: 'item 0 is the vehicle\'s home, set by DO_SET_HOME (SimVehicleSpec)'
         read.size() == count
-        read.drop(1) == written.drop(1).collect { CommandStorage.reported(it, false) }
+        read.drop(1) == written.drop(1).collect { StoredItems.missionItem(it, false) }
 
         and: 'the recording holds what this spec is about'
         written.drop(1).any { Float.isNaN(it.param4()) && it.frame() == MAV_FRAME.MAV_FRAME_GLOBAL_INT }
@@ -56,12 +59,28 @@ class CommandStorageSpec extends Specification {
         'copter-ftp-survey' | 25    || [MAV_CMD.MAV_CMD_NAV_TAKEOFF, NAV, MAV_CMD.MAV_CMD_DO_SET_CAM_TRIGG_DIST, MAV_CMD.MAV_CMD_NAV_LAND]
     }
 
+    def "#recording: the file ArduCopter read back is, byte for byte, the one an upload predicts from what it wrote and the home"() {
+        given: 'the home as HOME_POSITION reports it: degE7 and whole millimetres'
+        def recorded = Recording.read(DIRECTORY.resolve(recording + '.tlog'))
+        byte[] readBack = files(recorded, false)[MissionType.MISSION]
+        def written = MissionFtpFile.decode(files(recorded, true)[MissionType.MISSION]).items()
+        def home = MissionFtpFile.decode(readBack).items()[0]
+        Position reported = Position.fromDegrees(home.x() * 1e-7, home.y() * 1e-7, Math.round(home.z() * 1000) / 1000d)
+
+        expect:
+        StoredItems.file(MissionType.MISSION, written, reported, false) == readBack
+        FileCrc32.of(StoredItems.file(MissionType.MISSION, written, reported, false)) == FileCrc32.of(readBack)
+
+        where:
+        recording << ['copter-ftp-fence', 'copter-ftp-survey']
+    }
+
     def "#command (#params, frame #frame, z #z) comes back as #expected, frame #reported, x y z #xyz on #vehicle"() {
         given:
         def item = new MissionItem(3, command, frame, params[0], params[1], params[2], params[3], 404442336, -73752344, z, false)
 
         when:
-        def back = CommandStorage.reported(item, vehicle == 'plane')
+        def back = StoredItems.missionItem(item, vehicle == 'plane')
 
         then:
         [back.param1(), back.param2(), back.param3(), back.param4()] == expected*.floatValue()
