@@ -2,17 +2,16 @@ package dolphin.sitl
 
 import com.MAVLink.common.msg_file_transfer_protocol
 import com.MAVLink.enums.MAV_CMD
-import com.MAVLink.enums.MAV_FRAME
 import dolphin.core.Position
 import dolphin.mavlink.LinkTimeouts
 import dolphin.mavlink.MAVLinkNode
 import dolphin.mission.model.Fence
-import dolphin.mission.model.FenceRegion
 import dolphin.mission.model.MissionItem
 import dolphin.mission.model.MissionType
 import dolphin.mission.model.RallyPoints
 import dolphin.mission.transfer.MissionTransferConfig
 import dolphin.mission.transfer.MissionTransfers
+import dolphin.mission.transfer.SimMissionTransferSpec
 import dolphin.mission.transfer.MissionVerification
 import dolphin.mission.transfer.TransferPath
 import dolphin.mission.transfer.TransferResult
@@ -99,11 +98,8 @@ class SitlFtpSpec extends Specification {
                 opcodes << (frame.message().payload[3] & 0xff)
             }
         }
-        Fence fence = Fence.of([new FenceRegion.Polygon(true, [home.displace(-300, -300, 0), home.displace(-300, 300, 0),
-                                                               home.displace(300, 300, 0), home.displace(300, -300, 0)]),
-                                new FenceRegion.Circle(false, home.displace(100, 0, 0), 25.5)],
-                home.displace(0, 10, -30), MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT)
-        RallyPoints rally = RallyPoints.at([home.displace(50, 50, -40.3), home.displace(-50, 50, -45)])
+        Fence fence = SimMissionTransferSpec.fenceAround(home)
+        RallyPoints rally = SimMissionTransferSpec.rallyAround(home)
         List<MissionItem> survey = mission(40) + [MissionItem.command(42, MAV_CMD.MAV_CMD_DO_CHANGE_SPEED, 1, 7.5f, -1, 0),
                                                   MissionItem.command(43, MAV_CMD.MAV_CMD_DO_SET_CAM_TRIGG_DIST, 12.5f, 0, 1, 0)]
 

@@ -42,6 +42,19 @@ class SimMissionTransferSpec extends Specification {
         items
     }
 
+    /** A square inclusion fence of 600 m around home, an exclusion circle and a return point. */
+    static Fence fenceAround(Position home) {
+        Fence.of([new FenceRegion.Polygon(true, [home.displace(-300, -300, 0), home.displace(-300, 300, 0),
+                                                 home.displace(300, 300, 0), home.displace(300, -300, 0)]),
+                  new FenceRegion.Circle(false, home.displace(100, 0, 0), 25.5)],
+                home.displace(0, 10, -30), MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT)
+    }
+
+    /** Two rally points near home, one at a height of decimetres. */
+    static RallyPoints rallyAround(Position home) {
+        RallyPoints.at([home.displace(50, 50, -40.3), home.displace(-50, 50, -45)])
+    }
+
     @Unroll
     def "#rounds uploads with #lossPct% loss both ways each complete and verify by download"() {
         given:
@@ -77,11 +90,8 @@ class SimMissionTransferSpec extends Specification {
         def node = h.node('1')
         Position home = node.home
         def mission = missionAround(home, 3, 20)
-        Fence fence = Fence.of([new FenceRegion.Polygon(true, [home.displace(-300, -300, 0), home.displace(-300, 300, 0),
-                                                               home.displace(300, 300, 0), home.displace(300, -300, 0)]),
-                                new FenceRegion.Circle(false, home.displace(100, 0, 0), 25.5)],
-                home.displace(0, 10, -30), MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT)
-        RallyPoints rally = RallyPoints.at([home.displace(50, 50, -40.3), home.displace(-50, 50, -45)])
+        Fence fence = fenceAround(home)
+        RallyPoints rally = rallyAround(home)
 
         when:
         def up = [MissionLayer.uploads(node).upload(mission), MissionLayer.uploads(node).upload(MissionType.FENCE, fence.items()),
@@ -123,11 +133,8 @@ class SimMissionTransferSpec extends Specification {
                 opcodes << (frame.message().payload[3] & 0xff)
             }
         }
-        Fence fence = Fence.of([new FenceRegion.Polygon(true, [home.displace(-300, -300, 0), home.displace(-300, 300, 0),
-                                                               home.displace(300, 300, 0), home.displace(300, -300, 0)]),
-                                new FenceRegion.Circle(false, home.displace(100, 0, 0), 25.5)],
-                home.displace(0, 10, -30), MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT)
-        RallyPoints rally = RallyPoints.at([home.displace(50, 50, -40.3), home.displace(-50, 50, -45)])
+        Fence fence = fenceAround(home)
+        RallyPoints rally = rallyAround(home)
 
         when:
         def up = [MissionLayer.uploads(node).upload(missionAround(home, 8, 30.123)),
