@@ -35,6 +35,8 @@ import math
 import os
 import queue
 import re
+import select
+import socket
 import statistics
 import subprocess
 import sys
@@ -47,6 +49,7 @@ from pymavlink import mavutil  # noqa: E402
 M = mavutil.mavlink
 HOME = (40.444233, -7.375234, 820.0)
 VEHICLE_PORT, MAVPROXY_PORT, RELAY_PORT, OURS_PORT, FRESH_PORT = 14550, 14551, 14552, 14553, 14554
+BRIDGE_TCP_PORT, BRIDGE_UDP_PORT = 14560, 14561
 REFEREE = "tcp:127.0.0.1:5762"
 GCS_IDS = {"mavproxy": (255, 230), "ours": (208, 190)}   # MAVProxy's defaults; MAVLinkConfig's
 TOOLS = ["mavproxy-wp", "mavproxy-ftp", "ours-items", "ours-ftp", "ours-auto", "ours-lost-version"]
@@ -59,7 +62,9 @@ MISSION_TYPES = {"mission": M.MAV_MISSION_TYPE_MISSION, "fence": M.MAV_MISSION_T
 # MAVProxy's module for each list, and the word its "Loaded N ... in X.XXs" line uses for the items
 MAVPROXY_MODULES = {"mission": ("wp", "waypoints"), "fence": ("fence", "fence items"), "rally": ("rally", "rally items")}
 # SERIAL0 as a telemetry port wired to a radio: 57600 baud, and SITL held to it (SIM_BAUDLIMIT_EN;
-# without it a connected SITL port reports 10 Mbit/s to FTP's burst pacing); the referee's SERIAL1 fast
+# without it a connected SITL port reports 10 Mbit/s to FTP's burst pacing and never fills); the
+# referee's SERIAL1 fast. The limit stops a udpclient port altogether (AP_HAL_SITL's UARTDriver packs
+# whole frames of the few bytes a tick allows: none), so SERIAL0 is a tcpclient to a SerialBridge.
 RADIO_PARAMS = "SERIAL0_BAUD 57\nSIM_BAUDLIMIT_EN 1\nSERIAL1_BAUD 921\n"
 
 
@@ -192,6 +197,35 @@ class Referee:
         return None
 
 
+class SerialBridge:
+    """SITL's SERIAL0 as a byte stream (tcpclient, which the baud limit lets through) to the radio model's
+    UDP vehicle port: what SITL writes goes on as datagrams from 127.0.0.1:BRIDGE_UDP_PORT, what the
+    model sends back there goes to SITL. A daemon thread; the radio model sees bytes, not datagrams."""
+
+    def __init__(self):
+        self.server = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+        self.server.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        self.server.bind(("127.0.0.1", BRIDGE_TCP_PORT))
+        self.server.listen(1)
+        self.udp = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        self.udp.bind(("127.0.0.1", BRIDGE_UDP_PORT))
+        threading.Thread(target=self.run, daemon=True).start()
+
+    def run(self):
+        vehicle, _ = self.server.accept()
+        while True:
+            ready, _, _ = select.select([vehicle, self.udp], [], [])
+            if vehicle in ready:
+                data = vehicle.recv(65536)
+                if not data:
+                    return
+                self.udp.sendto(data, ("127.0.0.1", VEHICLE_PORT))
+            if self.udp in ready:
+                data, addr = self.udp.recvfrom(65536)
+                if addr == ("127.0.0.1", VEHICLE_PORT):
+                    vehicle.sendall(data)
+
+
 class Lines:
     """A process's output lines, read by a thread, also written to a log file."""
 
@@ -247,13 +281,15 @@ class Run:
         a = self.a
         sitl_dir = os.path.join(self.out, "sitl")
         os.makedirs(sitl_dir, exist_ok=True)
-        defaults = a.defaults
+        defaults, serial0 = a.defaults, "udpclient:127.0.0.1:%d" % VEHICLE_PORT
         if a.link == "radio":
             defaults += "," + os.path.join(self.out, "radio.parm")
             with open(os.path.join(self.out, "radio.parm"), "w") as f:
                 f.write(RADIO_PARAMS)
+            SerialBridge()
+            serial0 = "tcpclient:127.0.0.1:%d" % BRIDGE_TCP_PORT
         cmd = [a.sitl, "--model", "+", "-I", "0", "--sysid", "1", "--home", "%f,%f,%.2f,0" % HOME,
-               "--speedup", str(a.speedup), "--defaults", defaults, "--serial0", "udpclient:127.0.0.1:%d" % VEHICLE_PORT]
+               "--speedup", str(a.speedup), "--defaults", defaults, "--serial0", serial0]
         self.sitl = subprocess.Popen(cmd, cwd=sitl_dir, stdout=open(os.path.join(self.out, "sitl.log"), "w"),
                                      stderr=subprocess.STDOUT)
         self.procs.append(self.sitl)
