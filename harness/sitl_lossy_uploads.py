@@ -392,9 +392,10 @@ class Run:
         module, word = MAVPROXY_MODULES[kind]
         log = open(os.path.join(self.out, "mavproxy-%s-%s-r%d-%s.log" % (
             tool[9:], kind, rnd, self.condition_label(cond).replace(" %", ""))), "w")
-        # only the list's module (and FTP's): each module fetches its list from the vehicle when it connects
+        # only the list's module (and FTP's, which does nothing until told): each module fetches its list
+        # from the vehicle when it connects
         proc = subprocess.Popen([a.mavproxy, "--master", "udp:127.0.0.1:%d" % MAVPROXY_PORT, "--default-modules",
-                                 module + (",ftp" if tool == "mavproxy-ftp" else ""), "--streamrate", "-1", "--no-state"],
+                                 "wp,ftp" if kind == "mission" else module, "--streamrate", "-1", "--no-state"],
                                 cwd=self.out, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
         lines = Lines(proc, log)
         sample = {"done": False, "time_s": None, "error": None}
