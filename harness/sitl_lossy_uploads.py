@@ -374,9 +374,10 @@ class Run:
                        "link": self.a.link, "profile": None if lossy else cond, "seed": seed if lossy else self.a.seed,
                        "wall_s": round(wall, 3), "verified": why is None, "difference": why, "link_stats": stats[3:],
                        "at": time.strftime("%H:%M:%S"), "load1": round(os.getloadavg()[0], 2)})
-        counts = re.search(r"up (\d+) (\d+) down (\d+) (\d+)", stats)
+        counts = re.search(r"up (\d+) (\d+) down (\d+) (\d+)", stats)   # the relay's datagrams, the radio's air packets
         if counts:
-            sample.update(zip(["datagrams_up", "dropped_up", "datagrams_down", "dropped_down"], map(int, counts.groups())))
+            unit = "datagrams" if lossy else "air_packets"
+            sample.update(zip([unit + "_up", "dropped_up", unit + "_down", "dropped_down"], map(int, counts.groups())))
         self.relay_cmd("mark %s: done=%s verified=%s" % (what, sample["done"], why is None))
         with open(os.path.join(self.out, "samples.jsonl"), "a") as f:
             f.write(json.dumps(sample) + "\n")
