@@ -307,6 +307,11 @@ class Run:
         if any(t in ("ours-items", "ours-ftp", "ours-auto") for t in a.tools):
             self.relay_cmd("gcs %d" % OURS_PORT)
             self.ours, self.ours_lines = self.start_ours(OURS_PORT, "ours.log")
+            # discovery's AUTOPILOT_VERSION (whether AUTO may take FTP) must reach it before the link
+            # turns to another ground station; ours-lost-version measures an upload without it
+            self.ours.stdin.write("capabilities 20\n")
+            self.ours.stdin.flush()
+            print("our tool: %s" % self.ours_lines.wait(lambda l: l.startswith("capabilities"), 30), flush=True)
 
     def start_ours(self, port, logname):
         """Our tool on udpin PORT with every list's file, once it has heard the vehicle."""

@@ -38,8 +38,10 @@ import java.util.stream.Collectors;
  * <pre>SitlUploads LINK WAYPOINTS_FILE...</pre>
  *
  * Prints "ready" once the vehicle is heard, then reads lines
- * "upload ITEMS|FTP|AUTO DEADLINE_S [mission|fence|rally]" (a mission without the last word; "quit"
- * to stop) and answers each with
+ * "upload ITEMS|FTP|AUTO DEADLINE_S [mission|fence|rally]" (a mission without the last word),
+ * "capabilities WAIT_S" (waits up to WAIT_S for the vehicle's AUTOPILOT_VERSION, asked for at
+ * discovery, and answers "capabilities ftp=true|false|unknown": the driver gives discovery's exchange
+ * time to end before it points the link elsewhere), "quit" to stop. It answers each upload with
  * {@code result {"path", "kind", "done", "time_s", "error", "resends", "ignored_acks", "verified", "note", "progress",
  * "ftp_offered"}}: done is what the transfer reported, time_s from the call to that report, ftp_offered
  * what the vehicle's AUTOPILOT_VERSION said when the upload began (null: none had arrived, so AUTO
@@ -83,6 +85,17 @@ public final class SitlUploads {
             BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
             for (String line = in.readLine(); line != null && !line.trim().equals("quit"); line = in.readLine()) {
                 String[] words = line.trim().split("\\s+");
+                if (words.length == 2 && words[0].equals("capabilities")) {
+                    MAVLinkNode node = comms.node("1");
+                    long end = System.nanoTime() + (long) (Double.parseDouble(words[1]) * 1e9);
+                    while (ftpOffered(node) == null && System.nanoTime() < end) {
+                        Thread.sleep(10);
+                    }
+                    Boolean ftp = ftpOffered(node);
+                    System.out.println("capabilities ftp=" + (ftp == null ? "unknown" : ftp));
+                    System.out.flush();
+                    continue;
+                }
                 MissionType type = words.length == 4 ? TYPES.get(words[3].toLowerCase(Locale.ROOT)) : MissionType.MISSION;
                 if (words.length < 3 || words.length > 4 || !words[0].equals("upload") || !lists.containsKey(type)) {
                     System.out.println("error: " + line + " (no such list among the files, or not 'upload PATH DEADLINE_S [KIND]')");
@@ -97,6 +110,12 @@ public final class SitlUploads {
         System.exit(0);
     }
 
+    /** What AUTO chooses from: the FTP bit of the vehicle's AUTOPILOT_VERSION, null until it arrives. */
+    static Boolean ftpOffered(MAVLinkNode node) {
+        return node.capabilities().isPresent()
+                ? (node.capabilities().getAsLong() & MAV_PROTOCOL_CAPABILITY.MAV_PROTOCOL_CAPABILITY_FTP) != 0 : null;
+    }
+
     /** The transfer settings of each path: the defaults, the path forced. */
     static MissionTransferConfig config(TransferPath path) {
         return new MissionTransferConfig(LinkTimeouts.DEFAULT, path);
@@ -107,9 +126,7 @@ public final class SitlUploads {
         MAVLinkNode node = comms.node("1");
         long asked = comms.clock().nanoTime();
         UploadBench.waitFor(() -> node.state().heartbeatNanos() > asked, 30, "a heartbeat of vehicle 1");
-        // What AUTO chose from: the FTP bit of the vehicle's AUTOPILOT_VERSION, unknown (null) until it arrives.
-        Boolean ftpOffered = node.capabilities().isPresent()
-                ? (node.capabilities().getAsLong() & MAV_PROTOCOL_CAPABILITY.MAV_PROTOCOL_CAPABILITY_FTP) != 0 : null;
+        Boolean ftpOffered = ftpOffered(node);
         AtomicReference<TransferStatus> last = new AtomicReference<>();
         long t0 = System.nanoTime();
         TransferResult r;
