@@ -523,8 +523,9 @@ class Run:
                 conditions.append(c)
         rows = [(c, k) for c in conditions for k in kinds]
 
-        def of(row, tool, tag):
-            return [s for s in self.samples if s["tool"] == tool and s.get("tag", "") == tag
+        def of(row, tool, tag=None):
+            """The row's samples of the tool, of every run's tag with None."""
+            return [s for s in self.samples if s["tool"] == tool and tag in (None, s.get("tag", ""))
                     and self.condition_label(s["loss"] if s.get("link", "lossy") == "lossy" else s["profile"]) == row[0]
                     and s.get("kind", "mission") == row[1]]
 
@@ -550,7 +551,7 @@ class Run:
         for t, tag in [c for c in columns if c[0].startswith("ours")]:
             cells = []
             for row in rows:
-                ours, theirs = median(of(row, t, tag)), median(of(row, "mavproxy-wp", ""))
+                ours, theirs = median(of(row, t, tag)), median(of(row, "mavproxy-wp"))
                 cells.append("x%.3f" % (ours / theirs) if ours and theirs else "-")
             ratios.append("| %s%s | " % (LABELS[t], (" (%s)" % tag) if tag else "") + " | ".join(cells) + " |")
         if ratios:
