@@ -54,7 +54,7 @@ What is modelled, and from which file of the SiK firmware (github.com/ArduPilot/
   Gilbert-Elliott channel per vehicle radio: good periods, exponentially distributed with mean
   --mean-good seconds (15 s: bad periods start at 1/15 a second), lose P_good; bad periods of fixed
   length B lose P_bad. Profiles: sik (P_good 1 %, P_bad 50 %, B 1 s: 4.1 % of packets lost on average),
-  worse (3 %, 60 %, 2 s: 10.3 %), clear (no loss). The channel's periods come from one random
+  worse (3 %, 60 %, 2 s: 9.7 %), clear (no loss). The channel's periods come from one random
   generator seeded by --seed, the packet draws from another, so a run repeats up to its timing.
 
 Not modelled: frequency hopping, its sync search and lost sync (the radios are always in step, on
@@ -66,15 +66,18 @@ ground radio (windows G, V1, V2, ...); the ground radio's packets reach every ve
 only the ground radio, and no window is yielded to another radio: a plain SiK pair knows no
 multipoint, so this is a sketch of multipoint firmware, not a model of it.
 
-The log (--log): "drop" lines with the direction ("up" ground station to vehicle, "down" vehicle to
-ground station) and the cause (buffer-full: the 1850-byte buffer; serial-full: the 645-byte one;
-air-loss: an air packet lost), "hold" lines when the 8-bit counter keeps a frame back, "pass" lines
-for mission, FTP and STATUSTEXT messages delivered, and every --stats-interval seconds one "stat" line
-per radio: bytes in from its host, sent over the air, out to its host, and the buffers' fill:
+The log (--log), in lossy_relay.py's form (harness/relay_log_summary.py reads it): "drop" lines with
+the direction ("up" ground station to vehicle, "down" vehicle to ground station), the messages hit and
+the cause in brackets (buffer-full: the 1850-byte buffer; serial-full: the 645-byte one; air-loss: an
+air packet lost); "hold" lines when the 8-bit counter keeps a frame back; "pass" lines for mission,
+FTP and STATUSTEXT messages delivered whole, "cut" lines for those delivered with bytes missing (a bad
+CRC); and every --stats-interval seconds one "stat" line per radio: bytes in from its host, sent over
+the air, out to its host, and the buffers' fill:
 
-  12.345 drop up buffer-full 37/45 bytes MISSION_ITEM_INT seq=17
+  12.345 drop up MISSION_ITEM_INT seq=17 [buffer-full 37 bytes]
   12.351 pass down MISSION_REQUEST_INT seq=18
-  13.000 stat v1 in 5760 air 5811 out 1204 rx 1849/1849 tx 0/645
+  12.400 hold down FILE_TRANSFER_PROTOCOL ... [window-counter: 263 bytes, budget 120]
+  13.000 stat v1 in 5760 air 5811 out 1204 rx 1849/1849 tx 0/644
 
 Commands with --control, one a line, each answered "ok ..." or "error ...":
   radio PROFILE         sik, worse or clear
@@ -97,6 +100,7 @@ import os
 import pty
 import random
 import selectors
+import signal
 import socket
 import sys
 import time
@@ -122,12 +126,16 @@ PROFILES = {"sik": (0.01, 0.5, 1.0, 15.0), "worse": (0.03, 0.6, 2.0, 15.0), "cle
 
 
 class Timing:
-    """tdm_init's figures for an air rate in kbps, in 16 us ticks."""
+    """tdm_init's figures for an air rate in kbps, with or without ECC (golay), in 16 us ticks."""
 
-    def __init__(self, air_rate=64, max_window_ms=131):
+    def __init__(self, air_rate=64, ecc=False, max_window_ms=131):
         self.ticks_per_byte = (8 + 8000000 // (air_rate * 1000)) // 16 + 1
         round_latency = (8 + 10 // 2) * self.ticks_per_byte + 13
         self.max_data = MAX_PACKET_LENGTH - TRAILER
+        if ecc:     # golay doubles the bytes on air and adds four
+            self.max_data = MAX_PACKET_LENGTH // 2 - (6 + TRAILER)
+            self.ticks_per_byte *= 2
+            round_latency += 4 * self.ticks_per_byte
         self.silence = 2 * round_latency
         window = 3 * (round_latency + self.max_data * self.ticks_per_byte)
         self.window = min(window, max_window_ms * (1000 // US_PER_TICK), 0x1FFF)
@@ -136,7 +144,9 @@ class Timing:
         self.mav_max_xmit = min((self.window - self.latency) // self.ticks_per_byte, self.max_data)
 
     def flight(self, length):
-        """Air time of a packet of length bytes, trailer included (flight_time_estimate)."""
+        """Air time of a packet of length bytes, trailer included: the firmware's own estimate
+        (flight_time_estimate), which rounds the bytes up to 9 ticks (144 us) at 64 kbps where the air
+        takes 125 us; the deployed firmware's measured losses (SiK pull request 97) follow it closer."""
         return self.latency + length * self.ticks_per_byte
 
     def max_xmit(self, remaining, fixed_counter):
@@ -363,7 +373,6 @@ class RadioStatus:
     """RADIO_STATUS frames as mavlink.c sends them, built with pymavlink, from system 51 component 68."""
 
     def __init__(self):
-        os.environ.setdefault("MAVLINK20", "1")
         from pymavlink.dialects.v10 import common as v1
         from pymavlink.dialects.v20 import common as v2
         self.dialects = {1: v1, 2: v2}
@@ -399,13 +408,12 @@ class Radio:
         self.framer = Framer()
         self.to_host = None                 # callable(bytes, t_us): each frame (or run of other bytes) for the host
         self.wake = None                    # when the next frame to the host will be whole
-        self.report_due = False
         self.rssi = self.noise = 0          # statistics.average_rssi, average_noise
         self.remote = (0, 0)                # remote_statistics
         self.rx_errors = 0
         self.send_statistics = False
         self.counts = dict.fromkeys(("in", "air", "out", "buffer_full", "serial_full", "air_loss"), 0)
-        self.labels = []                    # (start offset in line_in, length, description) to name drops
+        self.labels = []                    # (offset in all bytes from the host, length, the write): to name drops
         self.in_offset = 0
 
     # ---- serial side
@@ -437,9 +445,12 @@ class Radio:
     def dropped_in(self, n, t_us):
         self.counts["buffer_full"] += n
         done = self.in_offset - len(self.line_in.queue)
-        hit = [data for start, length, data in self.labels if start < done and start + length > done - n]
-        what = " | ".join(describe(m, p) for data in hit for m, p in frames(data)) or "?"
-        self.log(t_us, "drop %s buffer-full %d bytes %s" % (self.direction, n, what))
+        what = []
+        for start, length, data in self.labels:
+            lo, hi = max(0, done - n - start), min(length, done - start)
+            if lo < hi:
+                what.append(cut_frames(data, lo, hi))
+        self.log(t_us, "drop %s %s [buffer-full %d bytes]" % (self.direction, " | ".join(what), n))
 
     def flush_out(self, t_us):
         out = self.line_out.settle(t_us)
@@ -466,8 +477,8 @@ class Radio:
         room = TX_BUFF_MAX - 1 - len(self.line_out.queue)
         if len(data) > room:
             self.counts["serial_full"] += len(data) - room
-            self.log(t_us, "drop %s serial-full %d/%d bytes %s" % (
-                other(self.direction), len(data) - room, len(data), describe_packet(data[room:])))
+            self.log(t_us, "drop %s %s [serial-full %d/%d bytes]" % (
+                other(self.direction), describe_packet(data[room:]), len(data) - room, len(data)))
         if room > 0:
             self.line_out.push(data[:room], t_us)
             self.arm_out()
@@ -495,14 +506,14 @@ class Radio:
         data = self.packetizer.next(self.rx, budget, t_us // US_PER_TICK)
         held = self.packetizer.held
         if held and held[0] <= unwrapped:
-            self.log(t_us, "hold %s window-counter %s (%d bytes, budget %d)" % (
+            self.log(t_us, "hold %s %s [window-counter: %d bytes, budget %d]" % (
                 self.direction, describe_packet(bytes(self.rx[:held[0]])), held[0], held[1]))
         self.counts["air"] += len(data)
         if data:
             self.report(t_us)
         return data
 
-    def heard(self, rssi, t_us):
+    def heard(self, rssi):
         self.rssi = (rssi + 7 * self.rssi) // 8
 
     def sample_noise(self, noise):
@@ -511,6 +522,36 @@ class Radio:
 
 def other(direction):
     return "down" if direction == "up" else "up"
+
+
+def intact(frame):
+    """Whether a frame delivered to a host has its CRC right (bytes lost on the way make it wrong)."""
+    from pymavlink.dialects.v20 import common
+    from pymavlink.generator.mavcrc import x25crc
+    header = 10 if frame[0] == STX2 else 6
+    end = header + frame[1]
+    if len(frame) < end + 2:
+        return False
+    msgid = frame[7] | frame[8] << 8 | frame[9] << 16 if frame[0] == STX2 else frame[5]
+    known = common.mavlink_map.get(msgid)
+    if known is None:
+        return True
+    crc = x25crc(frame[1:end])
+    crc.accumulate([known.crc_extra])
+    return crc.crc == frame[end] | frame[end + 1] << 8
+
+
+def cut_frames(data, lo, hi):
+    """The frames of one write from the host that lost bytes lo to hi (long writes only by size)."""
+    if len(data) > 4096:
+        return "%d bytes of a %d-byte write" % (hi - lo, len(data))
+    cut, i = [], 0
+    framer = Framer()
+    for piece in framer.feed(data) + [bytes(framer.buf)]:
+        if piece and i < hi and i + len(piece) > lo:
+            cut.append(describe_packet(piece))
+        i += len(piece)
+    return " | ".join(cut)
 
 
 def describe_packet(data):
@@ -562,7 +603,6 @@ class Air:
         self.generation = 0                 # windows started: stale polls from an ended window are ignored
         self.packets = {"up": [0, 0], "down": [0, 0]}   # air packets sent, lost
         self.drop_first = set()             # message ids whose next air packet to the ground radio is lost
-        self.stats_at = 0
         self.sched.at(0, self.start_window)
         self.sched.at(LINK_UPDATE_US, self.link_update)
 
@@ -640,9 +680,9 @@ class Air:
             receiver.rx_errors = min(receiver.rx_errors + 1, 0xFFFF)
             receiver.counts["air_loss"] += len(data)
             if data:
-                self.log(t, "drop %s %s %d bytes %s" % (sender.direction, cause, len(data), describe_packet(data)))
+                self.log(t, "drop %s %s [%s %d bytes]" % (sender.direction, describe_packet(data), cause, len(data)))
             return
-        receiver.heard(self.RSSI_BAD if channel.bad(t) else self.RSSI_GOOD, t)
+        receiver.heard(self.RSSI_BAD if channel.bad(t) else self.RSSI_GOOD)
         if kind == "statistics":
             receiver.remote = (sender.rssi, sender.noise)
         elif data:
@@ -659,7 +699,7 @@ class Relay:
         self.start = time.monotonic()
         self.logfile = log
         self.sched = Scheduler()
-        self.timing = Timing(args.air_rate)
+        self.timing = Timing(args.air_rate, args.ecc)
         self.sel = selectors.DefaultSelector()
         self.ground = Radio("g", "up", self.timing, args.serial_baud, self.sched, self.write)
         self.vehicles = [Radio("v%d" % (i + 1), "down", self.timing, args.serial_baud, self.sched, self.write)
@@ -708,16 +748,19 @@ class Relay:
     def follow(self, direction, frame, t_us):
         msgs = list(frames(frame))
         if any(m in FOLLOWED for m, _ in msgs):
-            self.write(t_us, "pass %s %s" % (direction, " | ".join(describe(m, p) for m, p in msgs)))
+            fate = "pass" if intact(frame) else "cut"
+            self.write(t_us, "%s %s %s" % (fate, direction, " | ".join(describe(m, p) for m, p in msgs)))
 
     def sender(self, i):
         def send(frame, t_us):
             self.follow("up", frame, t_us)
-            if self.vehicle_addrs[i] is not None:
-                try:
-                    self.vehicle_socks[i].sendto(frame, self.vehicle_addrs[i])
-                except OSError as e:
-                    self.write(t_us, "unsent up %s" % e)
+            if self.vehicle_addrs[i] is None:
+                self.write(t_us, "unsent up no vehicle has sent to %d yet" % self.vehicle_socks[i].getsockname()[1])
+                return
+            try:
+                self.vehicle_socks[i].sendto(frame, self.vehicle_addrs[i])
+            except OSError as e:
+                self.write(t_us, "unsent up %s" % e)
         return send
 
     def to_gcs(self, frame, t_us):
@@ -732,7 +775,7 @@ class Relay:
         try:
             os.write(self.pty_master, frame)
         except BlockingIOError:
-            self.write(t_us, "drop down pty-full %d bytes" % len(frame))
+            self.write(t_us, "drop down %s [pty-full %d bytes]" % (describe_packet(frame), len(frame)))
 
     def periodic_stats(self):
         t = self.sched.now
@@ -742,6 +785,8 @@ class Relay:
             self.write(t, "stat %s in %d air %d out %d rx %d/%d tx %d/%d" % (
                 radio.name, c["in"], c["air"], c["out"], len(radio.rx), RX_BUFF_MAX - 1,
                 len(radio.line_out.queue), TX_BUFF_MAX - 1))
+        if self.logfile:
+            self.logfile.flush()
         self.sched.at(t + self.stats_interval_us, self.periodic_stats)
 
     def command(self, line):
@@ -826,12 +871,18 @@ class Relay:
                 self.sched.run_until(self.now_us())
                 t = self.sched.now
                 if kind == "vehicle":
-                    data, addr = self.vehicle_socks[i].recvfrom(65536)
+                    try:
+                        data, addr = self.vehicle_socks[i].recvfrom(65536)
+                    except OSError:      # an ICMP port unreachable for an earlier send: no datagram
+                        continue
                     if addr[0] == HOST:
                         self.vehicle_addrs[i] = addr
                         self.vehicles[i].from_host(data, t)
                 elif kind == "gcs":
-                    data, addr = self.gcs_sock.recvfrom(65536)
+                    try:
+                        data, addr = self.gcs_sock.recvfrom(65536)
+                    except OSError:
+                        continue
                     if addr != self.gcs_addr:
                         self.ignored += 1
                         continue
@@ -868,6 +919,7 @@ def main():
     ap.add_argument("--bad-seconds", type=float, help="length of a bad period")
     ap.add_argument("--mean-good", type=float, help="mean length of a good period, in seconds")
     ap.add_argument("--air-rate", type=int, default=64, help="air data rate in kbps (AIR_SPEED, default 64)")
+    ap.add_argument("--ecc", action="store_true", help="golay error correction on (ECC 1; off by default)")
     ap.add_argument("--serial-baud", type=int, default=57600, help="host <-> radio baud (SERIAL_SPEED, default 57600)")
     ap.add_argument("--fixed-window-counter", action="store_true", help="model SiK with pull request 97's fix")
     ap.add_argument("--seed", type=int, default=1)
@@ -881,6 +933,7 @@ def main():
     profile = tuple(d if g is None else g for g, d in zip(given, PROFILES[a.profile]))
     log = open(a.log, "a", buffering=1 << 16) if a.log else None
     relay = Relay(a, profile, log)
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(0))   # stop as on quit: the log flushed, the pty link removed
     if a.gcs_pty:
         print("ready vehicle %s pty %s" % (",".join(map(str, a.vehicle_port)), a.gcs_pty), flush=True)
     else:
