@@ -35,6 +35,8 @@ With --control the relay reads commands on stdin, one a line, and answers each o
   inject HEX              send these bytes (a MAVLink frame) to the vehicle, never dropped
   outage S                drop every datagram both ways for S seconds from now (a link lost mid-flight),
                           then the loss probabilities again; logged as "mark outage ..." lines
+  drop-first NAME         drop the next datagram to the ground station that carries the message NAME
+                          (e.g. AUTOPILOT_VERSION: a reply to discovery lost), then forward as before
   stats                   datagrams and drops per direction since the last stats
   quit                    stop
 """
@@ -143,6 +145,7 @@ class Relay:
         self.start = time.monotonic()
         self.stats = {"up": [0, 0], "down": [0, 0], "ignored": 0}
         self.outage_until = None   # time.monotonic() until which everything is dropped
+        self.drop_first = set()    # message ids whose next downlink datagram is dropped
 
     def reseed(self, seed):
         self.rng = {"up": random.Random(2 * seed), "down": random.Random(2 * seed + 1)}
@@ -162,6 +165,11 @@ class Relay:
                 self.write("mark outage over")
                 self.outage_until = None
         msgs = [(m, p) for m, p in frames(data)]
+        if direction == "down" and self.drop_first:
+            first = self.drop_first.intersection(m for m, _ in msgs)
+            if first:
+                self.drop_first -= first
+                dropped = True
         if dropped:
             count[1] += 1
             self.write("drop %s %s" % (direction, " | ".join(describe(m, p) for m, p in msgs)))
@@ -208,6 +216,13 @@ class Relay:
             self.outage_until = time.monotonic() + float(args[0])
             self.write("mark outage %g s" % float(args[0]))
             return "ok outage %g" % float(args[0])
+        if cmd == "drop-first" and len(args) == 1:
+            ids = [i for i, name in NAMES.items() if name == args[0].upper()]
+            if not ids:
+                return "error unknown message %s (known: %s)" % (args[0], ", ".join(sorted(set(NAMES.values()))))
+            self.drop_first.update(ids)
+            self.write("mark drop-first %s" % args[0].upper())
+            return "ok drop-first %s" % args[0].upper()
         if cmd == "stats":
             s = self.stats
             answer = "ok up %d %d down %d %d ignored %d" % (s["up"][0], s["up"][1], s["down"][0], s["down"][1], s["ignored"])

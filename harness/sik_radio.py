@@ -88,6 +88,8 @@ Commands with --control, one a line, each answered "ok ..." or "error ...":
   inject HEX            put these bytes (a MAVLink frame) in the first vehicle radio's output to its
                         vehicle, as if they had come over the air
   outage S              lose every air packet for S seconds from now
+  drop-first NAME       lose the next air packet to the ground radio that carries the message NAME
+                        (e.g. AUTOPILOT_VERSION: the reply to a ground station's discovery lost)
   stats                 bytes and drops per direction since the last stats
   quit                  stop
 """
@@ -106,7 +108,7 @@ import tty
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from lossy_relay import FOLLOWED, describe, frames  # noqa: E402
+from lossy_relay import FOLLOWED, NAMES, describe, frames  # noqa: E402
 
 HOST = "127.0.0.1"
 STX1, STX2 = 0xFE, 0xFD
@@ -600,6 +602,7 @@ class Air:
         self.turn = -1
         self.generation = 0                 # windows started: stale polls from an ended window are ignored
         self.packets = {"up": [0, 0], "down": [0, 0]}   # air packets sent, lost
+        self.drop_first = set()             # message ids whose next air packet to the ground radio is lost
         self.sched.at(0, self.start_window)
         self.sched.at(LINK_UPDATE_US, self.link_update)
 
@@ -667,12 +670,17 @@ class Air:
         channel = self.channel(sender, receiver)
         counts = self.packets[sender.direction]
         counts[0] += 1
-        if channel.lost(t):
+        lost, cause = channel.lost(t), "air-loss"
+        first = self.drop_first.intersection(m for m, _ in frames(data)) if data and receiver is self.ground else None
+        if first:
+            self.drop_first -= first
+            lost, cause = True, "drop-first"
+        if lost:
             counts[1] += 1
             receiver.rx_errors = min(receiver.rx_errors + 1, 0xFFFF)
             receiver.counts["air_loss"] += len(data)
             if data:
-                self.log(t, "drop %s %s [air-loss %d bytes]" % (sender.direction, describe_packet(data), len(data)))
+                self.log(t, "drop %s %s [%s %d bytes]" % (sender.direction, describe_packet(data), cause, len(data)))
             return
         receiver.heard(self.RSSI_BAD if channel.bad(t) else self.RSSI_GOOD)
         if kind == "statistics":
@@ -833,6 +841,13 @@ class Relay:
                 ch.outage_until = t + int(float(args[0]) * 1e6)
             self.write(t, "mark outage %g s" % float(args[0]))
             return "ok outage %g" % float(args[0])
+        if cmd == "drop-first" and len(args) == 1:
+            ids = [i for i, name in NAMES.items() if name == args[0].upper()]
+            if not ids:
+                return "error unknown message %s (known: %s)" % (args[0], ", ".join(sorted(set(NAMES.values()))))
+            self.air.drop_first.update(ids)
+            self.write(t, "mark drop-first %s" % args[0].upper())
+            return "ok drop-first %s" % args[0].upper()
         if cmd == "stats":
             now = {d: list(self.air.packets[d]) for d in ("up", "down")}
             answer = "ok up %d %d down %d %d ignored %d" % (

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Mission uploads to ArduCopter SITL through a seeded lossy relay on loopback: MAVProxy's `wp load`
-# and `wp ftpload` against ours (item protocol and FTP), each verified by a lossless download.
+# and `wp ftpload` against ours (item protocol and FTP), each verified by a lossless download. With
+# --link radio, through the SiK radio model instead (bench/radio.sh runs it so, with fences and rally
+# points too).
 # Runs SITL, never builds it; everything inside a network namespace of its own (SITL listens on every
 # interface), so nothing is reachable from outside. Needs root (unshare -n).
 #

@@ -415,6 +415,19 @@ class ChannelTest(unittest.TestCase):
         self.assertGreater(pair.ground.rx_errors, 0)
         self.assertTrue([line for line in pair.lines("drop down") if "[air-loss" in line])
 
+    def test_drop_first_loses_the_first_packet_carrying_the_message_and_no_other(self):
+        pair = Pair()
+        pair.air.drop_first.add(148)
+        pair.ground.from_host(frame(40, msgid=148), 0)   # uplink: never dropped
+        pair.vehicle.from_host(frame(40, seq=1, msgid=148), 0)
+        pair.run(1)
+        pair.vehicle.from_host(frame(40, seq=2, msgid=148) + frame(40, seq=3), pair.sched.now)
+        pair.run(1)
+        self.assertEqual([148], [f[7] for _, f in pair.at_vehicle])
+        self.assertEqual([2, 3], [f[4] for _, f in pair.at_gcs])
+        self.assertEqual(1, len([line for line in pair.lines("drop down") if "[drop-first" in line]))
+        self.assertFalse(pair.air.drop_first)
+
 
 if __name__ == "__main__":
     unittest.main()
