@@ -118,6 +118,7 @@ public final class MissionUploadProtocol {
         private int ahead = -1;         // the item sent before its request by the recovery, until answered
         private MissionDownloadProtocol.Download readBack;  // settles a lost final ACK
         private String unsettled;       // the error the read-back settles
+        private boolean earlyErrorIgnored;  // a MAV_MISSION_ERROR before any request was taken for a late one
 
         Upload(VehicleChannel vehicle, ProtocolTimers timers, MissionTransferConfig config, TransferProgress progress,
                MissionType type, List<MissionItem> items) {
@@ -269,6 +270,11 @@ public final class MissionUploadProtocol {
                 }
             } else if (result == MAV_MISSION_RESULT.MAV_MISSION_INVALID_SEQUENCE) {
                 ignoredAcks++;          // an item it already had (a duplicate, or the recovery's item k): it keeps going
+            } else if (result == MAV_MISSION_RESULT.MAV_MISSION_ERROR && highest < 0 && !earlyErrorIgnored) {
+                // before any request, the first may answer an item of the previous upload still crossing a
+                // slow link (ArduPilot's answer to an item when no upload is in progress); a second one is ours
+                earlyErrorIgnored = true;
+                ignoredAcks++;
             } else if (result == MAV_MISSION_RESULT.MAV_MISSION_ERROR && last >= 0 && sends[last] > 0) {
                 // ArduPilot's answer to an item when no upload is in progress: the last item repeated after a lost
                 // final ACK, or a refused last item; reading the list back tells which

@@ -541,8 +541,40 @@ class MissionTransferSpec extends Specification {
         result                                  | error
         MAV_MISSION_RESULT.MAV_MISSION_DENIED   | 'upload to vehicle 2 failed: MAV_MISSION_DENIED (the vehicle accepts no mission transfer from us now; is another ground station uploading?)'
         MAV_MISSION_RESULT.MAV_MISSION_NO_SPACE | 'upload to vehicle 2 failed: MAV_MISSION_NO_SPACE (the vehicle has no room for 5 items)'
-        MAV_MISSION_RESULT.MAV_MISSION_ERROR    | 'upload to vehicle 2 failed: MAV_MISSION_ERROR (answering MISSION_COUNT 5)'
         name = MissionUploadProtocol.resultName(result) - 'MAV_MISSION_'
+    }
+
+    def "a MAV_MISSION_ERROR before any request may answer the previous upload's last item, still on the link: the first is ignored, a second fails"() {
+        given:
+        def up = timed(transfers.upload().upload(intended()))
+
+        when: 'it arrives 30 ms after MISSION_COUNT, before MISSION_COUNT could reach the vehicle over a radio'
+        clock.advance(Duration.ofMillis(30))
+        channel.receive(ack(MAV_MISSION_RESULT.MAV_MISSION_ERROR))
+
+        then:
+        !up.done
+
+        when: 'a vehicle that refuses MISSION_COUNT with MAV_MISSION_ERROR answers the resent one so too'
+        channel.receive(ack(MAV_MISSION_RESULT.MAV_MISSION_ERROR))
+
+        then:
+        up.get().error() == 'upload to vehicle 2 failed: MAV_MISSION_ERROR (answering MISSION_COUNT 5)'
+        up.get().ignoredAcks() == 1
+    }
+
+    def "after a stale MAV_MISSION_ERROR the upload goes on as usual"() {
+        given:
+        def up = transfers.upload().upload(intended().take(3))
+
+        when:
+        channel.receive(ack(MAV_MISSION_RESULT.MAV_MISSION_ERROR))
+        (0..2).each { channel.receive(request(it)) }
+        channel.receive(ack(ACCEPTED))
+
+        then:
+        up.get().success()
+        up.get().ignoredAcks() == 1
     }
 
     def "an ACCEPTED before any request is a late ACK of an earlier transfer, ignored; one before the last item was requested fails the upload"() {
