@@ -67,6 +67,7 @@ public final class MissionTransfers {
     private Transfer active;
     private boolean ftpUnanswered;
     private long waitingSince = -1;     // since when the next transfer waits to hear whether the vehicle offers FTP
+    private boolean polling;            // a look at the answer is scheduled
 
     /** @param config the timeouts and path of transfers started from now on (a command line may change them) */
     public MissionTransfers(VehicleChannel vehicle, ProtocolTimers timers, Supplier<MissionTransferConfig> config) {
@@ -203,7 +204,13 @@ public final class MissionTransfers {
             vehicle.askWhatItOffers();
         }
         if (now - waitingSince < CAPABILITY_WAIT.toNanos() && vehicle.unansweredAsks() <= PATIENT_ASKS) {
-            timers.schedule(CAPABILITY_POLL, this::pump);
+            if (!polling) {
+                polling = true;
+                timers.schedule(CAPABILITY_POLL, () -> {
+                    polling = false;
+                    pump();
+                });
+            }
             return null;
         }
         waitingSince = -1;
