@@ -9,14 +9,6 @@ import dolphin.mavlink.RoundTrip;
  */
 public interface FtpChannel {
 
-    /**
-     * The file bytes per request through a SiK telemetry radio: its deployed firmware carries
-     * frames of about 200 bytes and more badly (they wait for a window of their own, or are lost),
-     * so a frame stays at 187 bytes; as large as that allows, since the few requests in flight
-     * (ArduPilot queues five) bound what a round trip can carry.
-     */
-    int RADIO_DATA_BYTES = 160;
-
     /** Sends a message to the vehicle. */
     void send(MAVLinkMessage message);
 
@@ -32,12 +24,9 @@ public interface FtpChannel {
     /** The measured round trip of the vehicle's link. */
     RoundTrip roundTrip();
 
-    /**
-     * The most file bytes one request or reply carries: the protocol's 239, or fewer on a link that
-     * carries large frames badly (a SiK radio: docs/radios.md). Read when a transfer starts.
-     */
-    default int dataBytes() {
-        return FtpPayload.DATA_BYTES;
+    /** How transfers load the link: a network's, or a radio's (docs/radios.md). Read when a transfer starts. */
+    default FtpPacing pacing() {
+        return FtpPacing.NETWORK;
     }
 
     /**

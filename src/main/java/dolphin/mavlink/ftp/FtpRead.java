@@ -7,7 +7,7 @@ import java.util.function.ToIntFunction;
 
 /**
  * Reads a whole file over one session: OpenFileRO, one BurstReadFile of 239-byte packets (fewer
- * bytes on a radio, {@link FtpChannel#dataBytes}), then
+ * bytes on a radio, {@link FtpChannel#pacing}), then
  * ReadFile for every packet the burst lost. The file ends at a short packet, at EOF, or at the
  * length the caller learns from its first bytes (an @MISSION file reports a fake size of 1 MiB).
  */

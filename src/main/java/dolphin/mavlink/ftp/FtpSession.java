@@ -4,13 +4,14 @@ import dolphin.mavlink.LinkTimeouts;
 import dolphin.mavlink.ProtocolTimers;
 import dolphin.mavlink.RoundTrip;
 import java.nio.charset.StandardCharsets;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.BooleanSupplier;
 
 /**
  * One session with the vehicle's FTP server, on the protocol's thread: its requests numbered,
- * at most {@link #WINDOW} outstanding (fewer while our radio's buffer fills), each sent again on its own timeout (the link's RTO, backed
+ * at most its {@link FtpPacing}'s window outstanding (fewer while our radio's buffer fills), each sent again on its own timeout (the link's RTO, backed
  * off per timeout in a row, twice at most), and matched with their replies by session, req_opcode and seq (a
  * reply's seq is its request's plus one); a session that makes no progress for the give-up time
  * fails. A request sent again keeps its seq, so ArduPilot repeats its remembered reply instead of
@@ -19,8 +20,6 @@ import java.util.function.BooleanSupplier;
  */
 final class FtpSession {
 
-    /** Requests outstanding at most: ArduPilot queues 5 and drops the rest silently. */
-    static final int WINDOW = 4;
     /** A burst answers with up to 2000 packets and an EOF NAK, numbered on from its seq. */
     static final int BURST_REPLIES = 2001;
 
@@ -52,6 +51,7 @@ final class FtpSession {
     private final int id;
     private final String path;
     private final Runnable onEnd;
+    private final FtpPacing pacing;
     private final BooleanSupplier heard;
     private final List<OutstandingRequest> pending = new ArrayList<>();
     private Owner owner;
@@ -74,6 +74,7 @@ final class FtpSession {
         this.path = path;
         this.onEnd = onEnd;
         this.heard = heard;
+        this.pacing = channel.pacing();
         this.lastProgress = timers.nanoTime();
     }
 
@@ -99,7 +100,7 @@ final class FtpSession {
 
     /** The file bytes per request or reply on this link, 1 to 239. */
     int dataBytes() {
-        return Math.max(1, Math.min(FtpPayload.DATA_BYTES, channel.dataBytes()));
+        return pacing.dataBytes();
     }
 
     ProtocolTimers timers() {
@@ -116,16 +117,16 @@ final class FtpSession {
 
     /** Requests that may still be sent now. */
     int free() {
-        return ended ? 0 : window(channel.radioBufferFree()) - pending.size();
+        return ended ? 0 : window(pacing.window(), channel.radioBufferFree()) - pending.size();
     }
 
     /**
-     * Requests outstanding at most, given how much of our radio's buffer is free: all of
-     * {@link #WINDOW} from half free up (or without a radio), two from a fifth, one below: the
+     * Requests outstanding at most, given how much of our radio's buffer is free: the whole
+     * {@code window} from half free up (or without a radio), two from a fifth, one below: the
      * thresholds at which ArduPilot slows its own streams by its radio's report.
      */
-    static int window(int radioBufferFree) {
-        return radioBufferFree < 0 || radioBufferFree >= 50 ? WINDOW : radioBufferFree >= 20 ? 2 : 1;
+    static int window(int window, int radioBufferFree) {
+        return radioBufferFree < 0 || radioBufferFree >= 50 ? window : Math.min(window, radioBufferFree >= 20 ? 2 : 1);
     }
 
     /** Sends a request naming the session's file (OpenFileRO, CreateFile). */
@@ -151,7 +152,8 @@ final class FtpSession {
         p.sentAt = timers.nanoTime();
         int sends = p.sends;
         channel.send(p.request.toMessage(channel.system(), channel.component()));
-        timers.schedule(timeouts.timeout(channel.roundTrip(), timeoutsInARow), () -> {
+        Duration timeout = timeouts.timeout(channel.roundTrip(), timeoutsInARow);
+        timers.schedule(timeout.compareTo(pacing.shortestTimeout()) < 0 ? pacing.shortestTimeout() : timeout, () -> {
             if (!ended && p.sends == sends && pending.contains(p)) {
                 timedOut(p);
             }

@@ -6,8 +6,8 @@ import java.util.concurrent.CompletableFuture;
 
 /**
  * Writes a whole file over one session: CreateFile, WriteFile of up to 239 bytes (fewer on a radio,
- * {@link FtpChannel#dataBytes}) with at most
- * {@link FtpSession#WINDOW} outstanding (each sent again on its own timeout), then TerminateSession,
+ * {@link FtpChannel#pacing}) with at most
+ * the session's window outstanding (each sent again on its own timeout), then TerminateSession,
  * whose answer is the vehicle's verdict on the file (ArduPilot parses an @MISSION file when it is
  * closed).
  */

@@ -1,6 +1,8 @@
 package dolphin.mission.flight;
 
 import com.MAVLink.Messages.MAVLinkMessage;
+import com.MAVLink.common.msg_home_position;
+import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_PROTOCOL_CAPABILITY;
 import dolphin.core.Position;
 import dolphin.core.VehicleEvent;
@@ -179,6 +181,11 @@ public final class VehicleMissions implements MissionVehicle {
     @Override
     public Position home() {
         return node.getHome();
+    }
+
+    @Override
+    public void askHome() {
+        node.communications().command(node, MAV_CMD.MAV_CMD_REQUEST_MESSAGE, msg_home_position.MAVLINK_MSG_ID_HOME_POSITION);
     }
 
     @Override

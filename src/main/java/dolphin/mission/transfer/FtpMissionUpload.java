@@ -7,6 +7,7 @@ import dolphin.mavlink.ftp.FileCrc32;
 import dolphin.mavlink.ftp.FtpClient;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
+import java.time.Duration;
 import java.util.List;
 import java.util.Optional;
 
@@ -20,7 +21,12 @@ import java.util.Optional;
  */
 final class FtpMissionUpload extends FtpMissionTransfer {
 
+    /** How long the check waits for the vehicle's home, when it has not reported it: 2 s, in looks 50 ms apart. */
+    private static final Duration HOME_LOOK = Duration.ofMillis(50);
+    private static final int HOME_LOOKS = 40;
+
     private final List<MissionItem> items;
+    private int homeAsked;
 
     FtpMissionUpload(VehicleChannel vehicle, ProtocolTimers timers, MissionTransferConfig config, TransferProgress progress,
                      MissionType type, List<MissionItem> items, FtpClient ftp) {
@@ -57,13 +63,21 @@ final class FtpMissionUpload extends FtpMissionTransfer {
     /**
      * Compares the vehicle's CRC32 of the file it reads back with that of the file predicted from
      * what was sent ({@link StoredItems}): equal, the list is verified at the cost of one round trip;
-     * otherwise (no home known, a prediction that misses, a vehicle without CalcFileCRC32) the whole
-     * file is read back and compared item by item.
+     * otherwise (no home known 2 s after asking for it, a prediction that misses, a vehicle without
+     * CalcFileCRC32) the whole file is read back and compared item by item.
      */
     private void verify(long written, long total) {
         Position home = vehicle.home();
         if (type == MissionType.MISSION && home == null) {
-            readBack(written, total);
+            // a vehicle just heard may not have sent its home yet: asked for, it comes in a round trip
+            if (homeAsked == 0) {
+                vehicle.askHome();
+            }
+            if (homeAsked++ < HOME_LOOKS) {
+                timers.schedule(HOME_LOOK, () -> verify(written, total));
+            } else {
+                readBack(written, total);
+            }
             return;
         }
         long expected = FileCrc32.of(StoredItems.file(type, items, home, vehicle.family() == VehicleFamily.PLANE));

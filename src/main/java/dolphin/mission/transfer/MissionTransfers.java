@@ -4,6 +4,7 @@ import dolphin.mavlink.ProtocolTimers;
 import dolphin.mavlink.RoundTrip;
 import dolphin.mavlink.ftp.FtpChannel;
 import dolphin.mavlink.ftp.FtpClient;
+import dolphin.mavlink.ftp.FtpPacing;
 import dolphin.mission.model.MissionItem;
 import com.MAVLink.Messages.MAVLinkMessage;
 import com.MAVLink.common.msg_file_transfer_protocol;
@@ -108,8 +109,8 @@ public final class MissionTransfers {
             }
 
             @Override
-            public int dataBytes() {
-                return vehicle.throughRadio() ? RADIO_DATA_BYTES : FtpChannel.super.dataBytes();
+            public FtpPacing pacing() {
+                return vehicle.throughRadio() ? FtpPacing.RADIO : FtpPacing.NETWORK;
             }
         }, timers);
     }

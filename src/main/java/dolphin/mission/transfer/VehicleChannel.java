@@ -55,6 +55,9 @@ public interface VehicleChannel {
     /** The vehicle's home as it last reported it (HOME_POSITION), or null while it has not. */
     Position home();
 
+    /** Asks the vehicle for its home now (MAV_CMD_REQUEST_MESSAGE HOME_POSITION), not waiting for its stream. */
+    void askHome();
+
     /** The vehicle's firmware family: what it keeps of an item depends on it ({@link StoredItems}). */
     VehicleFamily family();
 

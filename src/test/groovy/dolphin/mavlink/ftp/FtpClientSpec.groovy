@@ -96,7 +96,7 @@ class FtpClientSpec extends Specification {
         then:
         f.bytes() == file
         server.requests.ReadFile == 6
-        server.mostQueued <= FtpSession.WINDOW
+        server.mostQueued <= FtpPacing.NETWORK.window()
         server.dropped == 0
     }
 
@@ -141,7 +141,7 @@ class FtpClientSpec extends Specification {
         f.resends() == 2
         server.requests.WriteFile == 9 + 1     // 9 blocks, one sent again after its ACK was lost
         server.requests.TerminateSession == 1
-        server.mostQueued <= FtpSession.WINDOW
+        server.mostQueued <= FtpPacing.NETWORK.window()
         progress.last() == [2000L, 2000L, 2L]
     }
 
@@ -159,9 +159,9 @@ class FtpClientSpec extends Specification {
 
         where:
         free | most
-        -1   | FtpSession.WINDOW
-        80   | FtpSession.WINDOW
-        50   | FtpSession.WINDOW
+        -1   | FtpPacing.NETWORK.window()
+        80   | FtpPacing.NETWORK.window()
+        50   | FtpPacing.NETWORK.window()
         35   | 2
         20   | 2
         10   | 1

@@ -168,6 +168,9 @@ class FakeFlightVehicle implements MissionVehicle {
     dolphin.core.Position home() { state.home() }
 
     @Override
+    void askHome() { }
+
+    @Override
     VehicleFamily family() { family }
 
     @Override

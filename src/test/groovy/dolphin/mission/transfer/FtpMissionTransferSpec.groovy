@@ -359,6 +359,22 @@ class FtpMissionTransferSpec extends Specification {
         statuses.last().done() == statuses.last().total()
     }
 
+    def "a vehicle that has not reported its home is asked for it: the CRC check waits for the answer"() {
+        given:
+        vehicleStoresAsArduPilot()
+        channel.home = null
+        channel.answerHome = { clock.schedule(Duration.ofMillis(300)) { channel.home = MissionTransferSpec.HOME } }
+
+        when:
+        TransferResult r = settle(upload(TransferPath.FTP))
+
+        then:
+        r.verified()
+        channel.homeAsks == 1
+        server.requests['CalcFileCRC32'] == 1
+        server.requests['OpenFileRO'] == 0
+    }
+
     @Unroll
     def "#when: the file is read back and compared item by item"() {
         given:
@@ -375,7 +391,7 @@ class FtpMissionTransferSpec extends Specification {
 
         where:
         when                                                     | crcAsked | setUp
-        'the vehicle has not reported its home'                  | false    | { it.channel.home = null }
+        'the vehicle does not report its home within 2 s'        | false    | { it.channel.home = null }
         'the vehicle keeps a param2 not foreseen (CRC differs)'  | true     | { spec ->
             Closure stored = spec.server.keep
             spec.server.keep = { String path, byte[] b ->
@@ -418,7 +434,7 @@ class FtpMissionTransferSpec extends Specification {
 
         where:
         link                 | radio | most
-        'a radio'            | true  | 160
+        'a radio'            | true  | 96
         'a link without one' | false | 239
     }
 

@@ -85,6 +85,16 @@ class RecordingChannel implements VehicleChannel {
     @Override
     dolphin.core.Position home() { home }
 
+    /** Times a transfer asked for the vehicle's home; the vehicle side's answer, if any. */
+    int homeAsks
+    Closure answerHome
+
+    @Override
+    void askHome() {
+        homeAsks++
+        answerHome?.call()
+    }
+
     @Override
     dolphin.mavlink.VehicleFamily family() { family }
 
