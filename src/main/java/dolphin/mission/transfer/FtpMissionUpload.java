@@ -21,12 +21,12 @@ import java.util.Optional;
  */
 final class FtpMissionUpload extends FtpMissionTransfer {
 
-    /** How long the check waits for the vehicle's home, when it has not reported it: 2 s, in looks 50 ms apart. */
+    /** How long the check waits for the vehicle's home, when it has not reported it: 1 s, in looks 50 ms apart. */
     private static final Duration HOME_LOOK = Duration.ofMillis(50);
-    private static final int HOME_LOOKS = 40;
+    private static final int HOME_LOOKS = 20;
 
     private final List<MissionItem> items;
-    private int homeAsked;
+    private int homeLooks;
 
     FtpMissionUpload(VehicleChannel vehicle, ProtocolTimers timers, MissionTransferConfig config, TransferProgress progress,
                      MissionType type, List<MissionItem> items, FtpClient ftp) {
@@ -63,23 +63,21 @@ final class FtpMissionUpload extends FtpMissionTransfer {
     /**
      * Compares the vehicle's CRC32 of the file it reads back with that of the file predicted from
      * what was sent ({@link StoredItems}): equal, the list is verified at the cost of one round trip;
-     * otherwise (no home known 2 s after asking for it, a prediction that misses, a vehicle without
-     * CalcFileCRC32) the whole file is read back and compared item by item.
+     * otherwise (a prediction that misses, a vehicle without CalcFileCRC32) the whole file is read
+     * back and compared item by item. A vehicle that has not reported its home is asked for it, and
+     * predicted without one (item 0 all zeros, as ArduPilot reads it) if it does not answer in 1 s.
      */
     private void verify(long written, long total) {
         Position home = vehicle.home();
-        if (type == MissionType.MISSION && home == null) {
+        if (type == MissionType.MISSION && home == null && homeLooks < HOME_LOOKS) {
             // a vehicle just heard may not have sent its home yet: asked for, it comes in a round trip
-            if (homeAsked == 0) {
+            if (homeLooks++ == 0) {
                 vehicle.askHome();
             }
-            if (homeAsked++ < HOME_LOOKS) {
-                timers.schedule(HOME_LOOK, () -> verify(written, total));
-            } else {
-                readBack(written, total);
-            }
+            timers.schedule(HOME_LOOK, () -> verify(written, total));
             return;
         }
+        // still none: ArduPilot sends no HOME_POSITION before its home is set, and reads item 0 as zeros
         long expected = FileCrc32.of(StoredItems.file(type, items, home, vehicle.family() == VehicleFamily.PLANE));
         ftp.crc32(path, config.timeouts()).whenComplete((crc, e) -> {
             if (e == null && crc == expected) {

@@ -35,6 +35,10 @@ public final class StoredItems {
             MAV_CMD.MAV_CMD_NAV_SPLINE_WAYPOINT, MAV_CMD.MAV_CMD_DO_SET_HOME, MAV_CMD.MAV_CMD_DO_SET_ROI,
             MAV_CMD.MAV_CMD_DO_LAND_START);
 
+    /** Item 0 of a vehicle whose home is not set. */
+    private static final MissionItem UNSET_HOME = new MissionItem(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_FRAME.MAV_FRAME_GLOBAL,
+            0, 0, 0, 0, 0, 0, 0, true);
+
     private StoredItems() {
     }
 
@@ -42,13 +46,14 @@ public final class StoredItems {
      * The file a vehicle holding {@code sent} reads back over FTP ({@link MissionFtpFile}): each item
      * as it keeps it, and for a mission its home in place of item 0.
      *
-     * @param home the vehicle's home, for a mission; null for a fence or rally points
+     * @param home the vehicle's home, for a mission: null for a vehicle whose home is not set (its
+     *             item 0 all zeros, AP_AHRS's home before it is set); unused for a fence or rally points
      */
     public static byte[] file(MissionType type, List<MissionItem> sent, Position home, boolean plane) {
         List<MissionItem> held = new ArrayList<>(sent.size());
         for (MissionItem i : sent) {
             held.add(switch (type) {
-                case MISSION -> i.seq() == 0 ? home(home) : missionItem(i, plane);
+                case MISSION -> i.seq() != 0 ? missionItem(i, plane) : home == null ? UNSET_HOME : home(home);
                 case FENCE -> fenceItem(i);
                 case RALLY -> rallyItem(i);
             });

@@ -375,6 +375,24 @@ class FtpMissionTransferSpec extends Specification {
         server.requests['OpenFileRO'] == 0
     }
 
+    def "a vehicle whose home is not set sends none: after 1 s the CRC is predicted with item 0 all zeros, as ArduPilot reads it"() {
+        given:
+        server.keep = { String path, byte[] bytes ->
+            MissionFtpFile.Contents c = MissionFtpFile.decode(bytes)
+            StoredItems.file(c.type(), c.items(), null, false)
+        }
+
+        when:
+        TransferResult r = settle(upload(TransferPath.FTP))
+
+        then:
+        r.verified()
+        channel.homeAsks == 1
+        server.requests['CalcFileCRC32'] == 1
+        server.requests['OpenFileRO'] == 0
+        MissionFtpFile.decode(server.files[MISSION]).items()[0].x() == 0
+    }
+
     @Unroll
     def "#when: the file is read back and compared item by item"() {
         given:
@@ -391,7 +409,7 @@ class FtpMissionTransferSpec extends Specification {
 
         where:
         when                                                     | crcAsked | setUp
-        'the vehicle does not report its home within 2 s'        | false    | { it.channel.home = null }
+        'no home reported in 1 s, and the vehicle has one'       | true     | { it.channel.home = null }
         'the vehicle keeps a param2 not foreseen (CRC differs)'  | true     | { spec ->
             Closure stored = spec.server.keep
             spec.server.keep = { String path, byte[] b ->
