@@ -82,6 +82,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
     private final Map<Link, FrameWriter> writers = new HashMap<>();
     private final Map<Link, Set<SocketAddress>> peers = new HashMap<>();
     private final Map<Link, LinkTraffic> traffic = new ConcurrentHashMap<>();
+    private final Map<Link, LinkRequests> requestsInFlight = new ConcurrentHashMap<>();
     private final Map<String, MAVLinkNode> nodesByKey = new ConcurrentHashMap<>();
     private final Map<String, MAVLinkNode> nodesById = new ConcurrentHashMap<>();
     /** By LINK/SYSID: system ids heard on a link while known on another, not yet told apart. */
@@ -202,6 +203,11 @@ public final class MAVLinkCommunications implements AutoCloseable {
     public List<LinkHealth> linkHealth() {
         long now = clock.nanoTime();
         return links().stream().map(l -> traffic.get(l).health(now)).toList();
+    }
+
+    /** The requests in flight on one link (a link of none: a count of its own). */
+    LinkRequests linkRequests(Link link) {
+        return link == null ? new LinkRequests() : requestsInFlight.computeIfAbsent(link, l -> new LinkRequests());
     }
 
     /** The health of one link now; a link these communications do not run has nothing counted. */

@@ -124,6 +124,11 @@ public final class MAVLinkNode extends AbstractNode {
         return link != null && (link.url().kind() == LinkUrl.Transport.SERIAL || linkHealth().radio() != null);
     }
 
+    /** The requests in flight on the link the vehicle is reached through, shared with the other vehicles on it. */
+    public LinkRequests linkRequests() {
+        return comms.linkRequests(getLink());
+    }
+
     /**
      * The health of the link the vehicle is reached through, now: its traffic each way and the latest
      * report of a telemetry radio on it (docs/embedding.md, "Link health"). From any thread.

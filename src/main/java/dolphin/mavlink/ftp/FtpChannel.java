@@ -1,6 +1,7 @@
 package dolphin.mavlink.ftp;
 
 import com.MAVLink.Messages.MAVLinkMessage;
+import dolphin.mavlink.LinkRequests;
 import dolphin.mavlink.RoundTrip;
 
 /**
@@ -27,6 +28,11 @@ public interface FtpChannel {
     /** How transfers load the link: a network's, or a radio's (docs/radios.md). Read when a transfer starts. */
     default FtpPacing pacing() {
         return FtpPacing.NETWORK;
+    }
+
+    /** The requests in flight on the vehicle's link, shared with the other vehicles' transfers on it; read when a transfer starts. */
+    default LinkRequests linkRequests() {
+        return new LinkRequests();
     }
 
     /**

@@ -1,5 +1,6 @@
 package dolphin.mavlink.ftp;
 
+import dolphin.mavlink.LinkRequests;
 import dolphin.mavlink.LinkTimeouts;
 import dolphin.mavlink.ProtocolTimers;
 import dolphin.mavlink.RoundTrip;
@@ -52,6 +53,7 @@ final class FtpSession {
     private final String path;
     private final Runnable onEnd;
     private final FtpPacing pacing;
+    private final LinkRequests onTheLink;
     private final BooleanSupplier heard;
     private final List<OutstandingRequest> pending = new ArrayList<>();
     private Owner owner;
@@ -75,6 +77,7 @@ final class FtpSession {
         this.onEnd = onEnd;
         this.heard = heard;
         this.pacing = channel.pacing();
+        this.onTheLink = channel.linkRequests();
         this.lastProgress = timers.nanoTime();
     }
 
@@ -117,7 +120,13 @@ final class FtpSession {
 
     /** Requests that may still be sent now. */
     int free() {
-        return ended ? 0 : window(pacing.window(), channel.radioBufferFree()) - pending.size();
+        if (ended) {
+            return 0;
+        }
+        int own = window(pacing.window(), channel.radioBufferFree()) - pending.size();
+        int onLink = pacing.linkWindow() == Integer.MAX_VALUE ? own : pacing.linkWindow() - onTheLink.inFlight();
+        // each transfer may always have one in flight, or it could wait for ever on the others
+        return Math.max(Math.min(own, onLink), pending.isEmpty() ? 1 : 0);
     }
 
     /**
@@ -143,6 +152,7 @@ final class FtpSession {
         nextSeq = (nextSeq + (opcode == FtpPayload.BURST_READ_FILE ? BURST_REPLIES + 1 : 1)) & 0xffff;
         OutstandingRequest p = new OutstandingRequest(request);
         pending.add(p);
+        onTheLink.add(1);
         transmit(p);
         return request;
     }
@@ -187,6 +197,7 @@ final class FtpSession {
             return;
         }
         pending.remove(p);
+        onTheLink.add(-1);
         if (p.sends == 1 && ((reply.seq() - p.request.seq()) & 0xffff) == 1) {
             channel.roundTrip().sample(timers.nanoTime() - p.sentAt);
         }
@@ -217,6 +228,7 @@ final class FtpSession {
     void finish() {
         if (!ended) {
             ended = true;
+            onTheLink.add(-pending.size());
             pending.clear();
             onEnd.run();
         }

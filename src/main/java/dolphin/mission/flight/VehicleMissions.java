@@ -9,6 +9,7 @@ import dolphin.core.VehicleEvent;
 import dolphin.core.VehicleEvent.EventKind;
 import dolphin.mavlink.CommandResult;
 import dolphin.mavlink.LinkHealth;
+import dolphin.mavlink.LinkRequests;
 import dolphin.mavlink.MAVLinkNode;
 import dolphin.mavlink.RoundTrip;
 import dolphin.mavlink.VehicleFamily;
@@ -170,6 +171,11 @@ public final class VehicleMissions implements MissionVehicle {
     @Override
     public boolean throughRadio() {
         return node.throughRadio();
+    }
+
+    @Override
+    public LinkRequests linkRequests() {
+        return node.linkRequests();
     }
 
     @Override

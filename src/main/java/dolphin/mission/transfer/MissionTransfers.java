@@ -1,5 +1,6 @@
 package dolphin.mission.transfer;
 
+import dolphin.mavlink.LinkRequests;
 import dolphin.mavlink.ProtocolTimers;
 import dolphin.mavlink.RoundTrip;
 import dolphin.mavlink.ftp.FtpChannel;
@@ -106,6 +107,11 @@ public final class MissionTransfers {
             @Override
             public int radioBufferFree() {
                 return vehicle.radioBufferFree();
+            }
+
+            @Override
+            public LinkRequests linkRequests() {
+                return vehicle.linkRequests();
             }
 
             @Override

@@ -2,6 +2,7 @@ package dolphin.mission.transfer;
 
 import com.MAVLink.Messages.MAVLinkMessage;
 import dolphin.core.Position;
+import dolphin.mavlink.LinkRequests;
 import dolphin.mavlink.RoundTrip;
 import dolphin.mavlink.VehicleFamily;
 import java.util.Optional;
@@ -48,6 +49,9 @@ public interface VehicleChannel {
      * is a serial port): transfers then send frames the radio carries well (docs/radios.md).
      */
     boolean throughRadio();
+
+    /** The requests in flight on the vehicle's link, which its transfers share with the other vehicles' on it. */
+    LinkRequests linkRequests();
 
     /** The percentage free of our radio's buffer towards the vehicle (its txbuf), or -1 without a current report. */
     int radioBufferFree();

@@ -167,6 +167,42 @@ class FtpClientSpec extends Specification {
         10   | 1
     }
 
+    def "two vehicles behind one radio share its window: eight requests in flight at most, both, and both files written"() {
+        given:
+        FtpLink other = new FtpLink(clock, { FtpChannel c -> new FtpClient(c, new ClockTimers(clock)) })
+        [link, other].each { it.pacing = FtpPacing.RADIO; it.linkRequests = link.linkRequests }
+        int most = 0
+
+        when:
+        def one = link.client.write('/a', bytes(2000), timeouts, null)
+        def two = other.client.write('/b', bytes(1500), timeouts, null)
+        for (int i = 0; i < 6000 && !(one.done && two.done); i++) {
+            clock.advance(Duration.ofMillis(10))
+            most = Math.max(most, link.linkRequests.inFlight())
+        }
+
+        then:
+        one.get().bytes() == bytes(2000)
+        two.get().bytes() == bytes(1500)
+        link.server.files['/a'] == bytes(2000)
+        other.server.files['/b'] == bytes(1500)
+        most == FtpPacing.RADIO.linkWindow()
+        link.linkRequests.inFlight() == 0
+    }
+
+    def "a transfer always has one request in flight, though the others fill the radio's window"() {
+        given:
+        link.pacing = FtpPacing.RADIO
+        link.linkRequests.add(FtpPacing.RADIO.linkWindow())
+
+        when:
+        FtpFile f = settle(client.write('/b', bytes(500), timeouts, recorder()))
+
+        then:
+        f.bytes() == bytes(500)
+        server.mostQueued == 1
+    }
+
     def "a missing file: the NAK names the file, the operation and the error"() {
         when:
         Throwable e = failure(client.read('/nothing.txt', null, timeouts, null))

@@ -3,6 +3,7 @@ package dolphin.mavlink.ftp
 import com.MAVLink.Messages.MAVLinkMessage
 import com.MAVLink.common.msg_file_transfer_protocol
 import dolphin.core.ManualClock
+import dolphin.mavlink.LinkRequests
 import dolphin.mavlink.RoundTrip
 
 /** Both ends of an FTP link with no socket: the client's channel, whose requests reach a {@link FakeFtpServer}, and back. */
@@ -14,6 +15,9 @@ class FtpLink implements FtpChannel {
     int sent
     /** Our radio's free buffer in percent; -1: no radio. */
     int radioBufferFree = -1
+    FtpPacing pacing = FtpPacing.NETWORK
+    /** The requests in flight on the link, which a spec may share between two links' clients (one radio). */
+    LinkRequests linkRequests = new LinkRequests()
 
     FtpLink(ManualClock clock, Closure<FtpClient> client) {
         this.server = new FakeFtpServer(clock, { msg_file_transfer_protocol m -> this.client.handle(m) })
@@ -40,4 +44,10 @@ class FtpLink implements FtpChannel {
 
     @Override
     int radioBufferFree() { radioBufferFree }
+
+    @Override
+    FtpPacing pacing() { pacing }
+
+    @Override
+    LinkRequests linkRequests() { linkRequests }
 }

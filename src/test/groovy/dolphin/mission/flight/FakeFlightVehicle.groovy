@@ -165,6 +165,9 @@ class FakeFlightVehicle implements MissionVehicle {
     int radioBufferFree() { -1 }
 
     @Override
+    dolphin.mavlink.LinkRequests linkRequests() { new dolphin.mavlink.LinkRequests() }
+
+    @Override
     dolphin.core.Position home() { state.home() }
 
     @Override

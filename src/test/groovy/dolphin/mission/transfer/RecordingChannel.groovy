@@ -82,6 +82,12 @@ class RecordingChannel implements VehicleChannel {
     @Override
     int radioBufferFree() { radioBufferFree }
 
+    /** The requests in flight on the link, which a spec may share between channels. */
+    dolphin.mavlink.LinkRequests linkRequests = new dolphin.mavlink.LinkRequests()
+
+    @Override
+    dolphin.mavlink.LinkRequests linkRequests() { linkRequests }
+
     @Override
     dolphin.core.Position home() { home }
 
