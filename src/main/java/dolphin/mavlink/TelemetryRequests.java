@@ -63,7 +63,7 @@ final class TelemetryRequests {
     private final double hz;
     private final Map<MAVLinkNode, Vehicle> vehicles = new LinkedHashMap<>();
     private final Map<Link, PlanInputs> planned = new HashMap<>();
-    private final Map<Link, TelemetryBudget.StreamRates> plans = new ConcurrentHashMap<>();
+    private final Map<Link, TelemetryBudget.StreamRates> plans = new HashMap<>();
     private final Map<String, AtomicInteger> rerequests = new ConcurrentHashMap<>();
 
     TelemetryRequests(MAVLinkCommunications comms, double hz) {
@@ -81,11 +81,6 @@ final class TelemetryRequests {
             v.streams.put(s.msgid(), new Stream(interval(plan, s.msgid()), s.optional()));
         }
         v.streams.forEach((id, s) -> request(node, v, id, s, now));
-    }
-
-    /** The plan of the streams asked of each vehicle on {@code link}, or null before a vehicle was heard there. */
-    TelemetryBudget.StreamRates plan(Link link) {
-        return plans.get(link);
     }
 
     /**
