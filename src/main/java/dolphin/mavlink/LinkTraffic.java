@@ -40,6 +40,11 @@ final class LinkTraffic {
         radio = report;
     }
 
+    /** Whether a radio ever reported on the link, without the rates a whole snapshot computes. */
+    synchronized boolean radioHeard() {
+        return radio != null;
+    }
+
     synchronized LinkHealth health(long nowNanos) {
         return new LinkHealth(link, in.perSecond(nowNanos), out.perSecond(nowNanos), in.total(), out.total(), gaps.lost(),
                 drops.get(DropCounters.Reason.BAD_CRC), drops.frames(), radio, radio == null ? null : radio.age(nowNanos));

@@ -205,6 +205,12 @@ public final class MAVLinkCommunications implements AutoCloseable {
         return links().stream().map(l -> traffic.get(l).health(now)).toList();
     }
 
+    /** Whether a telemetry radio ever reported on the link. */
+    boolean radioHeard(Link link) {
+        LinkTraffic t = link == null ? null : traffic.get(link);
+        return t != null && t.radioHeard();
+    }
+
     /** The requests in flight on one link (a link of none: a count of its own). */
     LinkRequests linkRequests(Link link) {
         return link == null ? new LinkRequests() : requestsInFlight.computeIfAbsent(link, l -> new LinkRequests());

@@ -74,7 +74,9 @@ final class TelemetryRequests {
     void discovered(MAVLinkNode node, long now) {
         Vehicle v = new Vehicle();
         vehicles.put(node, v);
-        TelemetryBudget.StreamRates plan = replan(node.getLink(), now, node);
+        Link link = node.getLink();
+        int onLink = (int) vehicles.keySet().stream().filter(n -> n.getLink() == link).count();
+        TelemetryBudget.StreamRates plan = replan(link, onLink, now, node);
         // asked for one at a time (a vehicle's commands of a kind queue up): what matters most first
         for (int i = TelemetryBudget.STREAMS.size() - 1; i >= 0; i--) {
             TelemetryBudget.AskedStream s = TelemetryBudget.STREAMS.get(i);
@@ -89,8 +91,7 @@ final class TelemetryRequests {
      * radio's host side runs at 57600 baud). The vehicles already asked, but {@code fresh}, are
      * asked again at their new rates.
      */
-    private TelemetryBudget.StreamRates replan(Link link, long now, MAVLinkNode fresh) {
-        int count = (int) vehicles.keySet().stream().filter(n -> n.getLink() == link).count();
+    private TelemetryBudget.StreamRates replan(Link link, int count, long now, MAVLinkNode fresh) {
         PlanInputs inputs = new PlanInputs(count, bytesPerSecond(link));
         TelemetryBudget.StreamRates plan = plans.get(link);
         if (inputs.equals(planned.get(link))) {
@@ -128,7 +129,7 @@ final class TelemetryRequests {
         if (stated.isPresent()) {
             return stated.getAsDouble();
         }
-        return comms.linkHealth(link).radio() != null ? SIK_SERIAL_BYTES_PER_SECOND : Double.NaN;
+        return comms.radioHeard(link) ? SIK_SERIAL_BYTES_PER_SECOND : Double.NaN;
     }
 
     private static long interval(TelemetryBudget.StreamRates plan, int msgid) {
@@ -149,7 +150,10 @@ final class TelemetryRequests {
      * the streams to a link whose bandwidth became known.
      */
     void check(long now) {
-        vehicles.keySet().stream().map(MAVLinkNode::getLink).distinct().toList().forEach(link -> replan(link, now, null));
+        // one pass over the vehicles: a fleet of a thousand is checked four times a second
+        Map<Link, Integer> onEachLink = new HashMap<>();
+        vehicles.keySet().forEach(n -> onEachLink.merge(n.getLink(), 1, Integer::sum));
+        onEachLink.forEach((link, count) -> replan(link, count, now, null));
         vehicles.forEach((node, v) -> {
             if (!node.isConnected()) {
                 return;
