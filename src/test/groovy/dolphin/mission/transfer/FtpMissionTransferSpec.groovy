@@ -4,6 +4,7 @@ import com.MAVLink.Messages.MAVLinkMessage
 import com.MAVLink.common.msg_file_transfer_protocol
 import com.MAVLink.enums.MAV_MISSION_RESULT
 import dolphin.core.ManualClock
+import dolphin.core.Position
 import dolphin.mavlink.LinkTimeouts
 import dolphin.mavlink.ftp.FakeFtpServer
 import dolphin.mission.model.MissionItem
@@ -336,12 +337,15 @@ class FtpMissionTransferSpec extends Specification {
         channel.asks == 0
     }
 
-    /** ArduPilot's storage of a list written: what StoredItems says it keeps, home as item 0. */
-    void vehicleStoresAsArduPilot() {
-        channel.home = MissionTransferSpec.HOME
+    /**
+     * ArduPilot's storage of a list written: what StoredItems says it keeps, {@code home} as item 0
+     * (null: a vehicle whose home is not set); the vehicle reports that home.
+     */
+    void vehicleStoresAsArduPilot(Position home = MissionTransferSpec.HOME) {
+        channel.home = home
         server.keep = { String path, byte[] bytes ->
             MissionFtpFile.Contents c = MissionFtpFile.decode(bytes)
-            StoredItems.file(c.type(), c.items(), MissionTransferSpec.HOME, false)
+            StoredItems.file(c.type(), c.items(), home, false)
         }
     }
 
@@ -380,10 +384,7 @@ class FtpMissionTransferSpec extends Specification {
 
     def "a vehicle whose home is not set sends none: after 1 s the CRC is predicted with item 0 all zeros, as ArduPilot reads it"() {
         given:
-        server.keep = { String path, byte[] bytes ->
-            MissionFtpFile.Contents c = MissionFtpFile.decode(bytes)
-            StoredItems.file(c.type(), c.items(), null, false)
-        }
+        vehicleStoresAsArduPilot(null)
 
         when:
         TransferResult r = settle(upload(TransferPath.FTP))
