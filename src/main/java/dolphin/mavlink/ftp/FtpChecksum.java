@@ -22,6 +22,11 @@ final class FtpChecksum implements FtpSession.Owner {
         return result;
     }
 
+    /** Stops asking: the answer is no longer wanted. */
+    void cancel() {
+        session.finish();
+    }
+
     @Override
     public void answered(FtpPayload request, FtpPayload reply) {
         session.finish();

@@ -3,6 +3,7 @@ package dolphin.mavlink.ftp;
 import com.MAVLink.common.msg_file_transfer_protocol;
 import dolphin.mavlink.LinkTimeouts;
 import dolphin.mavlink.ProtocolTimers;
+import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
@@ -50,13 +51,31 @@ public final class FtpClient {
     /** Writes a whole file, replacing what the vehicle had; from any thread. */
     public CompletableFuture<FtpFile> write(String path, byte[] bytes, LinkTimeouts timeouts, FtpProgress progress) {
         CompletableFuture<FtpFile> result = new CompletableFuture<>();
-        timers.execute(() -> new FtpWrite(open(path, timeouts), bytes, orNone(progress)).start().whenComplete((f, e) -> {
+        timers.execute(() -> new FtpWrite(open(path, timeouts), bytes, orNone(progress), () -> { }).start().whenComplete((f, e) -> {
             if (e == null) {
                 result.complete(f);
             } else {
                 result.completeExceptionally(e);
             }
         }));
+        return result;
+    }
+
+    /**
+     * Writes a whole file, replacing what the vehicle had, and has the vehicle compute the CRC32 of
+     * what it holds once the file is closed ({@link FtpCheckedWrite}): a check of the write that
+     * costs no round trip of its own; from any thread.
+     */
+    public CompletableFuture<CheckedFile> writeChecked(String path, byte[] bytes, LinkTimeouts timeouts, FtpProgress progress) {
+        CompletableFuture<CheckedFile> result = new CompletableFuture<>();
+        timers.execute(() -> new FtpCheckedWrite(open(path, timeouts), bytes, orNone(progress), () -> open(path, timeouts))
+                .start().whenComplete((f, e) -> {
+                    if (e == null) {
+                        result.complete(f);
+                    } else {
+                        result.completeExceptionally(e);
+                    }
+                }));
         return result;
     }
 
@@ -74,6 +93,19 @@ public final class FtpClient {
             }
         }));
         return result;
+    }
+
+    /** Whether the vehicle ever answered over FTP: it has MAVLink FTP, whatever else it said. */
+    public boolean heard() {
+        return heard;
+    }
+
+    /**
+     * Gives up every transfer under way, closing its file (a TerminateSession each): the vehicle
+     * is not waited for any longer. Their futures fail with {@code why}; on the protocol's thread.
+     */
+    public void abandon(String why) {
+        new ArrayList<>(sessions.values()).forEach(s -> s.fail(FtpException.abandoned(s.path(), why, heard)));
     }
 
     private static FtpProgress orNone(FtpProgress p) {

@@ -44,6 +44,11 @@ public final class FtpException extends RuntimeException {
                 + (sends == 1 ? " time" : " times") + ", nothing new for " + s + " s)", path, -1, -1, request.opcode(), answered);
     }
 
+    /** The transfer was given up before its end, for {@code why}. */
+    static FtpException abandoned(String path, String why, boolean answered) {
+        return new FtpException(why, path, -1, -1, -1, answered);
+    }
+
     /** The vehicle's file was not what was expected ("read 12 bytes, expected at least 10"). */
     static FtpException bad(String path, String what) {
         return new FtpException("the vehicle's " + path + " " + what, path, -1, -1, -1, true);

@@ -205,6 +205,16 @@ final class FtpSession {
         owner.answered(p.request, reply);
     }
 
+    /**
+     * Stops waiting for the outstanding requests of one opcode: they are not sent again, and their
+     * replies, should they come, answer nothing.
+     */
+    void withdraw(int opcode) {
+        int before = pending.size();
+        pending.removeIf(p -> p.request.opcode() == opcode);
+        onTheLink.add(pending.size() - before);
+    }
+
     private OutstandingRequest match(FtpPayload reply) {
         for (OutstandingRequest p : pending) {
             FtpPayload q = p.request;

@@ -21,6 +21,7 @@ abstract class FtpMissionTransfer extends Transfer {
     final FtpClient ftp;
     final String path;
     private boolean unanswered;
+    private String itemsNote;       // why the items go instead, when FTP was given up on what the vehicle said
 
     FtpMissionTransfer(VehicleChannel vehicle, ProtocolTimers timers, MissionTransferConfig config, TransferProgress progress,
                        MissionType type, FtpClient ftp) {
@@ -50,7 +51,25 @@ abstract class FtpMissionTransfer extends Transfer {
 
     /** Whether the vehicle never answered over FTP (or says it has no FTP): later AUTO transfers go item by item. */
     final boolean unanswered() {
-        return unanswered;
+        return unanswered && itemsNote == null;
+    }
+
+    /**
+     * Gives FTP up before the vehicle answered it (it says it has none, or says nothing): the
+     * transfer fails and AUTO goes item by item, saying {@code note} first. Not remembered: the
+     * vehicle may answer the next transfer.
+     */
+    final void abandon(String note) {
+        itemsNote = note;
+        ftp.abandon(note);
+        if (!done()) {
+            failOverFtp(note);
+        }
+    }
+
+    /** Why the items go instead of this transfer: the note it was given up with, or its failure. */
+    final String itemsNote() {
+        return itemsNote != null ? itemsNote : "item by item, as FTP failed (" + why() + ")";
     }
 
     /** Fails with the FTP client's reason. */

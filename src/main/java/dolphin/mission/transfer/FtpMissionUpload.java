@@ -10,12 +10,14 @@ import dolphin.mission.model.MissionType;
 import java.time.Duration;
 import java.util.List;
 import java.util.Optional;
+import java.util.OptionalLong;
 
 /**
  * Uploads a list as one file ({@link MissionFtpFile}), then has it read back: ArduPilot ACKs a
  * TerminateSession repeated after its refusal was lost, so only the read-back proves the vehicle
- * holds the list. The vehicle reads it itself and answers with its CRC32, compared with that of the
- * file predicted from what was sent; when they differ, the file is read back over the link and
+ * holds the list. The vehicle reads it itself and answers with its CRC32 (asked right behind the
+ * TerminateSession, {@link FtpClient#writeChecked}), compared with that of the file predicted from
+ * what was sent; when they differ, the file is read back over the link and
  * compared item by item ({@link MissionVerification}). Progress counts the bytes written and read
  * back, twice the file's length in all.
  */
@@ -47,46 +49,44 @@ final class FtpMissionUpload extends FtpMissionTransfer {
                 return;
             }
         }
+        if (type == MissionType.MISSION && vehicle.home() == null) {
+            // a vehicle just heard may not have sent its home yet: asked now, it is there for the check
+            vehicle.askHome();
+        }
         byte[] file = MissionFtpFile.encode(type, items);
         long total = 2L * file.length;
-        ftp.write(path, file, config.timeouts(), (done, length, resent) -> reportBytes(true, done, total, resent))
+        ftp.writeChecked(path, file, config.timeouts(), (done, length, resent) -> reportBytes(true, done, total, resent))
                 .whenComplete((written, e) -> {
                     if (e != null) {
                         failed(e);
                     } else {
-                        resends = written.resends();
-                        verify(file.length, total);
+                        resends = written.file().resends();
+                        verify(written.vehicleCrc(), file.length, total);
                     }
                 });
     }
 
     /**
-     * Compares the vehicle's CRC32 of the file it reads back with that of the file predicted from
-     * what was sent ({@link StoredItems}): equal, the list is verified at the cost of one round trip;
-     * otherwise (a prediction that misses, a vehicle without CalcFileCRC32) the whole file is read
-     * back and compared item by item. A vehicle that has not reported its home is asked for it, and
-     * predicted without one (item 0 all zeros, as ArduPilot reads it) if it does not answer in 1 s.
+     * Compares the vehicle's CRC32 of the file it holds with that of the file predicted from what
+     * was sent ({@link StoredItems}): equal, the list is verified at no cost; otherwise (a
+     * prediction that misses, a vehicle without CalcFileCRC32) the whole file is read back and
+     * compared item by item. The prediction of a mission needs the vehicle's home, asked for when
+     * the upload began; without it after another second, item 0 is predicted all zeros, as ArduPilot
+     * reads it when its home is not set (it then sends no HOME_POSITION).
      */
-    private void verify(long written, long total) {
+    private void verify(OptionalLong vehicleCrc, long written, long total) {
         Position home = vehicle.home();
-        if (type == MissionType.MISSION && home == null && homeLooks < HOME_LOOKS) {
-            // a vehicle just heard may not have sent its home yet: asked for, it comes in a round trip
-            if (homeLooks++ == 0) {
-                vehicle.askHome();
-            }
-            timers.schedule(HOME_LOOK, () -> verify(written, total));
+        if (type == MissionType.MISSION && home == null && homeLooks++ < HOME_LOOKS) {
+            timers.schedule(HOME_LOOK, () -> verify(vehicleCrc, written, total));
             return;
         }
-        // still none: ArduPilot sends no HOME_POSITION before its home is set, and reads item 0 as zeros
         long expected = FileCrc32.of(StoredItems.file(type, items, home, vehicle.family() == VehicleFamily.PLANE));
-        ftp.crc32(path, config.timeouts()).whenComplete((crc, e) -> {
-            if (e == null && crc == expected) {
-                reportBytes(true, total, total, resends);
-                succeed(items);
-            } else {
-                readBack(written, total);
-            }
-        });
+        if (vehicleCrc.isPresent() && vehicleCrc.getAsLong() == expected) {
+            reportBytes(true, total, total, resends);
+            succeed(items);
+        } else {
+            readBack(written, total);
+        }
     }
 
     private void readBack(long written, long total) {

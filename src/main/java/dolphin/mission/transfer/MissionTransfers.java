@@ -35,8 +35,9 @@ import java.util.function.Supplier;
  * no FTP; AUTO FTP when the vehicle's AUTOPILOT_VERSION offers it, else items, and items again for
  * that transfer when FTP fails. A vehicle that never answered FTP is remembered: its later AUTO
  * transfers go item by item at once, until an FTP transfer (forced with the FTP path) succeeds. An
- * AUTO transfer whose vehicle has not yet said what it offers asks it again and waits up to
- * {@link #CAPABILITY_WAIT} for the answer (docs/radios.md, "What the vehicle offers"). An AUTO
+ * AUTO transfer whose vehicle has not yet said what it offers asks it again and tries FTP
+ * meanwhile: an FTP answer proves FTP, as the vehicle's "no FTP" or {@link #CAPABILITY_WAIT}
+ * without either answer sends it item by item (docs/radios.md, "What the vehicle offers"). An AUTO
  * transfer that goes item by item says why first in its result's note.
  */
 public final class MissionTransfers {
@@ -47,13 +48,15 @@ public final class MissionTransfers {
             msg_mission_item.class, msg_file_transfer_protocol.class);
 
     /**
-     * How long an AUTO transfer waits for the vehicle to say whether it offers FTP, when it has not
-     * yet: a round trip or two on a radio, with an ask lost on the way.
+     * How long an AUTO transfer tries FTP on a vehicle that has not said whether it offers it, before
+     * it goes item by item when neither that answer nor an FTP one came: a round trip or two on a
+     * radio, with an ask lost on the way.
      */
     static final Duration CAPABILITY_WAIT = Duration.ofSeconds(3);
     /** A vehicle asked more often than this in vain has nothing to say: transfers no longer wait for it. */
     static final int PATIENT_ASKS = 3;
     private static final Duration CAPABILITY_POLL = Duration.ofMillis(50);
+    private static final String NO_FTP = "item by item: the vehicle offers no MAVLink FTP";
 
     /** A transfer waiting its turn: an item transfer, the items of an upload (null for a download), or items only. */
     private record Queued(Transfer transfer, List<MissionItem> upload, boolean itemsOnly) {
@@ -68,8 +71,6 @@ public final class MissionTransfers {
     private final Deque<Queued> waiting = new ArrayDeque<>();
     private Transfer active;
     private boolean ftpUnanswered;
-    private long waitingSince = -1;     // since when the next transfer waits to hear whether the vehicle offers FTP
-    private boolean polling;            // a look at the answer is scheduled
 
     /** @param config the timeouts and path of transfers started from now on (a command line may change them) */
     public MissionTransfers(VehicleChannel vehicle, ProtocolTimers timers, Supplier<MissionTransferConfig> config) {
@@ -164,12 +165,8 @@ public final class MissionTransfers {
         if (active != null || waiting.isEmpty()) {
             return;
         }
-        Queued q = waiting.peek();
+        Queued q = waiting.poll();
         PathChoice choice = q.itemsOnly() ? PathChoice.ITEMS_ONLY : choose(q.transfer().config.path());
-        if (choice == null) {
-            return;
-        }
-        waiting.poll();
         Transfer t = choice.ftp() ? overFtp(q) : q.transfer();
         if (!choice.ftp() && !choice.why().isEmpty()) {
             t.pathNote(choice.why());
@@ -181,49 +178,67 @@ public final class MissionTransfers {
                 timers.execute(this::pump);
             }
         });
-    }
-
-    /** The path a transfer takes and why, when a user may want to know. */
-    private record PathChoice(boolean ftp, String why) {
-        static final PathChoice ITEMS_ONLY = new PathChoice(false, "");
+        if (choice.untilTold() && t instanceof FtpMissionTransfer f) {
+            watch(f, timers.nanoTime());
+        }
     }
 
     /**
-     * The path for a transfer's turn, or null while the vehicle has not said what it offers and the
-     * transfer waits for its answer (asked again at once; {@link #pump} runs again when the wait
-     * ends).
+     * The path a transfer takes and why, when a user may want to know; {@code untilTold}: FTP tried
+     * on a vehicle that has not said whether it offers it, until it answers either.
      */
+    private record PathChoice(boolean ftp, String why, boolean untilTold) {
+        static final PathChoice ITEMS_ONLY = items("");
+
+        static PathChoice items(String why) {
+            return new PathChoice(false, why, false);
+        }
+    }
+
     private PathChoice choose(TransferPath path) {
         if (path != TransferPath.AUTO) {
-            return new PathChoice(path == TransferPath.FTP, "");
+            return new PathChoice(path == TransferPath.FTP, "", false);
         }
         if (ftpUnanswered) {
-            return new PathChoice(false, "item by item, as MAVLink FTP went unanswered before");
+            return PathChoice.items("item by item, as MAVLink FTP went unanswered before");
         }
         Optional<Boolean> offers = vehicle.offersFtp();
         if (offers.isPresent()) {
-            waitingSince = -1;
-            return offers.get() ? new PathChoice(true, "") : new PathChoice(false, "item by item: the vehicle offers no MAVLink FTP");
+            return offers.get() ? new PathChoice(true, "", false) : PathChoice.items(NO_FTP);
         }
-        long now = timers.nanoTime();
-        if (waitingSince < 0) {
-            waitingSince = now;
-            vehicle.askWhatItOffers();
+        if (vehicle.unansweredAsks() > PATIENT_ASKS) {
+            return PathChoice.items(notTold());
         }
-        if (now - waitingSince < CAPABILITY_WAIT.toNanos() && vehicle.unansweredAsks() <= PATIENT_ASKS) {
-            if (!polling) {
-                polling = true;
-                timers.schedule(CAPABILITY_POLL, () -> {
-                    polling = false;
-                    pump();
-                });
+        vehicle.askWhatItOffers();
+        return new PathChoice(true, "", true);
+    }
+
+    /**
+     * Looks every {@link #CAPABILITY_POLL} at an FTP transfer tried on a vehicle that has not said
+     * whether it offers FTP: once the vehicle answers over FTP or says it offers it, the transfer
+     * goes on; said it does not, or {@link #CAPABILITY_WAIT} passed without either answer, it is
+     * given up and the list goes item by item.
+     */
+    private void watch(FtpMissionTransfer f, long since) {
+        timers.schedule(CAPABILITY_POLL, () -> {
+            Optional<Boolean> offers = vehicle.offersFtp();
+            if (f.done() || ftp.heard() || offers.equals(Optional.of(true))) {
+                return;
             }
-            return null;
-        }
-        waitingSince = -1;
+            if (offers.isPresent()) {
+                f.abandon(NO_FTP);
+            } else if (timers.nanoTime() - since >= CAPABILITY_WAIT.toNanos()) {
+                f.abandon(notTold());
+            } else {
+                watch(f, since);
+            }
+        });
+    }
+
+    private String notTold() {
         int asks = vehicle.unansweredAsks();
-        return new PathChoice(false, "item by item: the vehicle has not said whether it offers MAVLink FTP (AUTOPILOT_VERSION asked "
-                + asks + (asks == 1 ? " time)" : " times)"));
+        return "item by item: the vehicle has not said whether it offers MAVLink FTP (AUTOPILOT_VERSION asked "
+                + asks + (asks == 1 ? " time)" : " times)");
     }
 
     /** The FTP transfer standing for an item transfer; its result goes to the item transfer's caller. */
@@ -240,7 +255,7 @@ public final class MissionTransfers {
             } else if (items.config.path() == TransferPath.AUTO) {
                 // item by item, right after: its errors name the item the vehicle refuses
                 ftpUnanswered |= f.unanswered();
-                items.pathNote("item by item, as FTP failed (" + f.why() + ")");
+                items.pathNote(f.itemsNote());
                 waiting.addFirst(new Queued(items, null, true));
             } else {
                 items.result.complete(r);

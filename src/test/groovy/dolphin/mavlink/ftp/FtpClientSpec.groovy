@@ -145,6 +145,107 @@ class FtpClientSpec extends Specification {
         progress.last() == [2000L, 2000L, 2L]
     }
 
+    def "the first writes follow the CreateFile at once, not a round trip later"() {
+        when:
+        FtpFile f = settle(client.write('/b', bytes(2000), timeouts, null))
+
+        then:
+        f.bytes() == bytes(2000)
+        server.log.findAll { it.startsWith('0.000 > ') }*.split(' ')*.getAt(2) == ['CreateFile'] + ['WriteFile'] * 3
+        server.requests.CreateFile == 1
+    }
+
+    def "the CreateFile lost: the writes it left without a file are written again once it is open"() {
+        given:
+        server.dropRequest = { FtpPayload p, int n -> p.opcode() == FtpPayload.CREATE_FILE && n == 0 }
+
+        when:
+        FtpFile f = settle(client.write('/b', bytes(2000), timeouts, recorder()))
+
+        then:
+        server.files['/b'] == bytes(2000)
+        f.bytes() == bytes(2000)
+        server.requests.CreateFile == 1
+        server.log.count { it.contains('< NAK to WriteFile FileNotFound') } == 3
+        server.requests.WriteFile == 9 + 3
+        progress.last()[0..1] == [2000L, 2000L]
+    }
+
+    def "the CreateFile's ACK lost: a write's ACK proves the file open, and the CreateFile is not sent again (ArduPilot would refuse it)"() {
+        given:
+        server.dropReply = { FtpPayload p, int n -> p.reqOpcode() == FtpPayload.CREATE_FILE && n == 0 }
+
+        when:
+        FtpFile f = settle(client.write('/b', bytes(2000), timeouts, null))
+        clock.advance(Duration.ofSeconds(5))
+
+        then:
+        server.files['/b'] == bytes(2000)
+        f.resends() == 0
+        server.requests.CreateFile == 1
+        !server.log.any { it.contains('NAK') }
+    }
+
+    def "a checked write asks for the CRC right behind the TerminateSession: the vehicle's CRC of the closed file, no round trip of its own"() {
+        when:
+        CheckedFile f = settle(client.writeChecked('/b', bytes(2000), timeouts, null))
+
+        then:
+        f.file().bytes() == bytes(2000)
+        f.vehicleCrc().asLong == FileCrc32.of(bytes(2000))
+        def sent = server.log.findAll { it.contains(' > ') }
+        sent[-2].contains('TerminateSession') && sent[-1].contains('CalcFileCRC32')
+        sent[-2].split(' ')[0] == sent[-1].split(' ')[0]
+        server.requests.CalcFileCRC32 == 1
+    }
+
+    @Unroll
+    def "a checked write whose #lost was lost: the CRC that came before the close is not taken, and is asked again after it"() {
+        given: 'the vehicle held another file there before'
+        server.files['/b'] = bytes(500, 3)
+        server.dropRequest = { FtpPayload p, int n -> lost == 'TerminateSession' && p.opcode() == FtpPayload.TERMINATE_SESSION && n == 0 }
+        server.dropReply = { FtpPayload p, int n -> lost == "TerminateSession's ACK" && p.reqOpcode() == FtpPayload.TERMINATE_SESSION && n == 0 }
+
+        when:
+        CheckedFile f = settle(client.writeChecked('/b', bytes(2000), timeouts, null))
+
+        then:
+        server.files['/b'] == bytes(2000)
+        f.vehicleCrc().asLong == FileCrc32.of(bytes(2000))
+        server.requests.CalcFileCRC32 == 2
+        server.requests.TerminateSession == (lost == 'TerminateSession' ? 1 : 2)
+
+        where:
+        lost << ['TerminateSession', "TerminateSession's ACK"]
+    }
+
+    def "a checked write refused when closed fails with the vehicle's verdict; the CRC is asked no more"() {
+        given:
+        byte[] file = missionFile(10)
+        file[10 + 38 * 3..<10 + 38 * 4].eachWithIndex { b, i -> file[10 + 38 * 3 + i] = 0 }
+        server.dropReply = { FtpPayload p, int n -> p.reqOpcode() == FtpPayload.CALC_FILE_CRC32 }
+
+        when:
+        Throwable e = failure(client.writeChecked(MISSION, file, timeouts, null))
+        clock.advance(Duration.ofSeconds(20))
+
+        then:
+        ((FtpException) e).refusedAtClose()
+        server.requests.CalcFileCRC32 == 1
+    }
+
+    def "a vehicle without CalcFileCRC32: the checked write succeeds without a CRC"() {
+        given:
+        server.refuseCrc = true
+
+        when:
+        CheckedFile f = settle(client.writeChecked('/b', bytes(300), timeouts, null))
+
+        then:
+        server.files['/b'] == bytes(300)
+        !f.vehicleCrc().present
+    }
+
     @Unroll
     def "our radio's buffer #free% free: at most #most writes outstanding"() {
         given:
@@ -167,7 +268,7 @@ class FtpClientSpec extends Specification {
         10   | 1
     }
 
-    def "two vehicles behind one radio share its window: eight requests in flight at most, both, and both files written"() {
+    def "two vehicles behind one radio share its window: eight requests in flight, and one more, the second's first; both files written"() {
         given:
         FtpLink other = new FtpLink(clock, { FtpChannel c -> new FtpClient(c, new ClockTimers(clock)) })
         [link, other].each { it.pacing = FtpPacing.RADIO; it.linkRequests = link.linkRequests }
@@ -186,7 +287,7 @@ class FtpClientSpec extends Specification {
         two.get().bytes() == bytes(1500)
         link.server.files['/a'] == bytes(2000)
         other.server.files['/b'] == bytes(1500)
-        most == FtpPacing.RADIO.linkWindow()
+        most == FtpPacing.RADIO.linkWindow() + 1
         link.linkRequests.inFlight() == 0
     }
 
@@ -299,10 +400,10 @@ class FtpClientSpec extends Specification {
         when:
         settle(client.write('/b', bytes(100), timeouts, null))
 
-        then: 'three clean 41 ms samples (OpenFileRO, the burst, CreateFile): RTO = 41 ms + 4 x 20.5 x (3/4)^2 ms'
+        then: 'the write follows the CreateFile at once, after two clean 41 ms samples (OpenFileRO, the burst): RTO = 41 ms + 4 x 20.5 x 3/4 ms'
         def writes = server.log.findAll { it.contains('> WriteFile') }.collect { it.split(' ')[0] as double }
         writes.size() == 2
-        Math.abs(writes[1] - writes[0] - 0.087) < 0.001
+        Math.abs(writes[1] - writes[0] - 0.1025) < 0.001
     }
 
     @Unroll

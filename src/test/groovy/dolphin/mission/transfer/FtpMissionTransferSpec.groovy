@@ -269,20 +269,21 @@ class FtpMissionTransferSpec extends Specification {
         offers              | how            | forced
         Optional.of(true)   | 'over FTP'     | 'succeeds'
         Optional.of(false)  | 'item by item' | 'fails at once'
-        Optional.empty()    | 'item by item' | 'succeeds'
+        Optional.empty()    | 'over FTP'     | 'succeeds'
     }
 
-    def "AUTO on a vehicle that has not said what it offers: it asks again and waits for the answer"() {
-        given: 'the first AUTOPILOT_VERSION was lost; the ask the transfer sends is answered 0.4 s later'
+    def "AUTO on a vehicle that has not said what it offers: it asks again and tries FTP meanwhile, whose answer proves it"() {
+        given: 'the first AUTOPILOT_VERSION was lost, and so is every later one'
         channel.offersFtp = Optional.empty()
-        channel.answerAsk = { clock.schedule(Duration.ofMillis(400)) { channel.offersFtp = Optional.of(true) } }
 
         when:
         CompletableFuture<TransferResult> f = upload(TransferPath.AUTO)
 
-        then: 'nothing is sent before the answer'
+        then: 'the ask and the CreateFile go at once'
         channel.asks == 1
-        channel.sent.isEmpty()
+        channel.sent.first().time == 0.0d
+        channel.sent.first().message instanceof msg_file_transfer_protocol
+        server.log.first().startsWith('0.000 > ') && server.log.first().contains('CreateFile')
 
         when:
         TransferResult r = settle(f)
@@ -291,22 +292,51 @@ class FtpMissionTransferSpec extends Specification {
         r.verified()
         r.note() == 'over FTP'
         missionMessages() == 0
-        channel.sent.first().time >= 0.4d
+        channel.offersFtp == Optional.empty()
     }
 
-    def "AUTO on a vehicle that never says what it offers: item by item after 3 s, saying why"() {
+    def "AUTO on a vehicle that never says what it offers nor answers FTP: item by item after 3 s, saying why, its file closed"() {
         given:
         channel.offersFtp = Optional.empty()
+        server.silent = true
 
         when:
         TransferResult r = settle(upload(TransferPath.AUTO))
 
         then:
         r.success()
-        ftpMessages() == 0
-        channel.sent.first().time >= 3.0d
         r.note() == 'item by item: the vehicle has not said whether it offers MAVLink FTP (AUTOPILOT_VERSION asked 1 time)'
         vehicle.stored == intended()
+        def firstItemMessage = channel.sent.find { !(it.message instanceof msg_file_transfer_protocol) }
+        firstItemMessage.time >= 3.0d && firstItemMessage.time < 3.1d
+        def ftpSent = channel.sent.findAll { it.message instanceof msg_file_transfer_protocol }
+        server.log.findAll { it.contains(' > ') }.last().contains('TerminateSession')
+        ftpSent.every { it.time <= firstItemMessage.time }
+
+        when: 'the next upload: the vehicle still silent, FTP is tried again (nothing was learnt of it)'
+        TransferResult next = settle(upload(TransferPath.AUTO))
+
+        then:
+        next.success()
+        next.note().startsWith('item by item: the vehicle has not said')
+        channel.sent.count { it.message instanceof msg_file_transfer_protocol && it.time > firstItemMessage.time } > 0
+    }
+
+    def "AUTO on a vehicle that says it has no FTP while FTP is tried: item by item at once, saying so"() {
+        given: 'the ask the transfer sends is answered 0.4 s later; FTP gets no answer'
+        channel.offersFtp = Optional.empty()
+        channel.answerAsk = { clock.schedule(Duration.ofMillis(400)) { channel.offersFtp = Optional.of(false) } }
+        server.silent = true
+
+        when:
+        TransferResult r = settle(upload(TransferPath.AUTO))
+
+        then:
+        r.success()
+        r.note() == 'item by item: the vehicle offers no MAVLink FTP'
+        vehicle.stored == intended()
+        def firstItemMessage = channel.sent.find { !(it.message instanceof msg_file_transfer_protocol) }
+        firstItemMessage.time >= 0.4d && firstItemMessage.time < 0.5d
     }
 
     def "AUTO on a vehicle asked in vain more than three times: item by item at once"() {
@@ -320,7 +350,8 @@ class FtpMissionTransferSpec extends Specification {
         then:
         r.success()
         channel.sent.first().time == 0.0d
-        r.note() == 'item by item: the vehicle has not said whether it offers MAVLink FTP (AUTOPILOT_VERSION asked 5 times)'
+        r.note() == 'item by item: the vehicle has not said whether it offers MAVLink FTP (AUTOPILOT_VERSION asked 4 times)'
+        channel.asks == 4
     }
 
     def "AUTO on a vehicle without FTP says so; the paths a user forced need no word"() {
