@@ -3,6 +3,7 @@ package dolphin.mavlink
 import com.MAVLink.common.msg_command_ack
 import com.MAVLink.common.msg_command_long
 import com.MAVLink.common.msg_home_position
+import com.MAVLink.common.msg_radio_status
 import com.MAVLink.common.msg_sys_status
 import com.MAVLink.enums.MAV_AUTOPILOT
 import com.MAVLink.enums.MAV_CMD
@@ -13,6 +14,7 @@ import com.MAVLink.standard.msg_global_position_int
 import dolphin.core.ManualClock
 import dolphin.mavlink.codec.FrameReader
 import dolphin.mavlink.codec.FrameWriter
+import java.time.Duration
 import spock.lang.Specification
 import spock.lang.Unroll
 
@@ -135,5 +137,57 @@ class TelemetryBudgetSpec extends Specification {
         (1..4).every { asked(radio, it, HOME) == [0.1d, 1d] && asked(radio, it, POSITION) == [4d] }
         asked(radio, 5, HOME) == [0.1d]
         (11..20).every { asked(udp, it, HOME) == [1d] }
+    }
+
+    def "a SiK radio heard on a UDP link whose rate was not stated: the five copters on it are slowed to fit 57600 baud; a link without one is left alone"() {
+        given: 'the communications thread run by hand, on the manual clock'
+        MAVLinkCommunications comms = new MAVLinkCommunications(MAVLinkConfig.of('udpin:127.0.0.1:0'), clock)
+        FakeLink relay = new FakeLink('udpin:0.0.0.0:14550', 0)
+        FakeLink lte = new FakeLink('udpin:0.0.0.0:14560', 1)
+        comms.attachForSpecs([relay, lte])
+        Closure run = { Duration d ->
+            for (long t = 0; t < d.toMillis(); t += 10) {
+                clock.advance(Duration.ofMillis(10))
+                comms.runDue()
+                [relay, lte].each { link -> acknowledgeQueued(comms, link) }
+            }
+        }
+        def hb = new msg_heartbeat(type: MAV_TYPE.MAV_TYPE_QUADROTOR, autopilot: MAV_AUTOPILOT.MAV_AUTOPILOT_ARDUPILOTMEGA)
+
+        when: 'five copters on the relay and five on LTE, heard for 2 s'
+        (1..5).each { comms.received(relay.from(new FrameWriter(it, 1).write(hb))) }
+        (11..15).each { comms.received(lte.from(new FrameWriter(it, 1).write(hb))) }
+        run(Duration.ofSeconds(2))
+
+        then: 'nothing known of either link: every stream at its wanted rate'
+        (1..5).collect { asked(relay, it, HOME) } == [[1d]] * 5
+        (11..15).collect { asked(lte, it, HOME) } == [[1d]] * 5
+
+        when: 'the ground radio on the relay reports (SiK: system 51, component 68)'
+        def report = new msg_radio_status(rssi: 180, remrssi: 170, txbuf: 95, noise: 40, remnoise: 38)
+        comms.received(relay.from(new FrameWriter(51, 68).write(report)))
+        run(Duration.ofSeconds(2))
+
+        then: 'the five on the relay share 5760 bytes/s: their home position slowed to 0.1 Hz, position kept'
+        (1..5).collect { asked(relay, it, HOME) } == [[0.1d, 1d]] * 5
+        (1..5).every { asked(relay, it, POSITION).every { it == 4d } }   // asked again only as silent (no fake sends it)
+        (11..15).collect { asked(lte, it, HOME) } == [[1d]] * 5
+    }
+
+    /** Acknowledges the commands sent on {@code link} since the last call, through the communications' queue. */
+    private final Map<FakeLink, Integer> queuedAcks = [:].withDefault { 0 }
+
+    void acknowledgeQueued(MAVLinkCommunications comms, FakeLink link) {
+        while (queuedAcks[link] < link.sent.size()) {
+            byte[] bytes = link.sent[queuedAcks[link]]
+            queuedAcks[link] = queuedAcks[link] + 1
+            new FrameReader().feed(bytes, 0, bytes.length) { f ->
+                def m = f.message()
+                if (m instanceof msg_command_long) {
+                    def ack = new msg_command_ack(command: m.command, result: (short) MAV_RESULT.MAV_RESULT_ACCEPTED)
+                    comms.received(link.from(new FrameWriter(m.target_system, 1).write(ack)))
+                }
+            }
+        }
     }
 }

@@ -70,23 +70,33 @@ final class FtpMissionUpload extends FtpMissionTransfer {
      * Compares the vehicle's CRC32 of the file it holds with that of the file predicted from what
      * was sent ({@link StoredItems}): equal, the list is verified at no cost; otherwise (a
      * prediction that misses, a vehicle without CalcFileCRC32) the whole file is read back and
-     * compared item by item. The prediction of a mission needs the vehicle's home, asked for when
-     * the upload began; without it after another second, item 0 is predicted all zeros, as ArduPilot
-     * reads it when its home is not set (it then sends no HOME_POSITION).
+     * compared item by item. A mission's item 0 is the vehicle's home, which it fills in itself: the
+     * CRC is first compared with the prediction of a vehicle whose home is not set (item 0 all
+     * zeros, as ArduPilot reads it then), then with one of the home it reported, waiting up to 1 s
+     * for that home (asked for when the upload began) when it has not reported one yet.
      */
     private void verify(OptionalLong vehicleCrc, long written, long total) {
+        boolean plane = vehicle.family() == VehicleFamily.PLANE;
+        if (vehicleCrc.isPresent() && vehicleCrc.getAsLong() == FileCrc32.of(StoredItems.file(type, items, null, plane))) {
+            verified(total);
+            return;
+        }
         Position home = vehicle.home();
-        if (type == MissionType.MISSION && home == null && homeLooks++ < HOME_LOOKS) {
+        if (type == MissionType.MISSION && vehicleCrc.isPresent() && home == null && homeLooks++ < HOME_LOOKS) {
             timers.schedule(HOME_LOOK, () -> verify(vehicleCrc, written, total));
             return;
         }
-        long expected = FileCrc32.of(StoredItems.file(type, items, home, vehicle.family() == VehicleFamily.PLANE));
-        if (vehicleCrc.isPresent() && vehicleCrc.getAsLong() == expected) {
-            reportBytes(true, total, total, resends);
-            succeed(items);
+        if (vehicleCrc.isPresent() && home != null
+                && vehicleCrc.getAsLong() == FileCrc32.of(StoredItems.file(type, items, home, plane))) {
+            verified(total);
         } else {
             readBack(written, total);
         }
+    }
+
+    private void verified(long total) {
+        reportBytes(true, total, total, resends);
+        succeed(items);
     }
 
     private void readBack(long written, long total) {

@@ -398,33 +398,60 @@ class FtpMissionTransferSpec extends Specification {
         statuses.last().done() == statuses.last().total()
     }
 
-    def "a vehicle that has not reported its home is asked for it: the CRC check waits for the answer"() {
-        given:
+    def "a vehicle that has not reported its home is asked for it when the upload begins: the CRC check waits for the answer"() {
+        given: 'the home comes 0.6 s after the ask, long after the file is written'
         vehicleStoresAsArduPilot()
         channel.home = null
-        channel.answerHome = { clock.schedule(Duration.ofMillis(300)) { channel.home = MissionTransferSpec.HOME } }
+        channel.answerHome = { clock.schedule(Duration.ofMillis(600)) { channel.home = MissionTransferSpec.HOME } }
 
         when:
-        TransferResult r = settle(upload(TransferPath.FTP))
+        CompletableFuture<TransferResult> f = upload(TransferPath.FTP)
+
+        then:
+        channel.homeAsks == 1
+
+        when:
+        double doneAt = -1
+        f.thenRun { doneAt = clock.seconds() }
+        TransferResult r = settle(f)
 
         then:
         r.verified()
         channel.homeAsks == 1
         checkedByCrcAlone()
+        doneAt >= 0.6d && doneAt < 0.7d
     }
 
-    def "a vehicle whose home is not set sends none: after 1 s the CRC is predicted with item 0 all zeros, as ArduPilot reads it"() {
+    def "a vehicle whose home is not set sends none: its CRC is that of item 0 all zeros, as ArduPilot reads it, and no home is waited for"() {
         given:
         vehicleStoresAsArduPilot(null)
 
         when:
-        TransferResult r = settle(upload(TransferPath.FTP))
+        CompletableFuture<TransferResult> f = upload(TransferPath.FTP)
+        double doneAt = -1
+        f.thenRun { doneAt = clock.seconds() }
+        TransferResult r = settle(f)
 
         then:
         r.verified()
         channel.homeAsks == 1
         checkedByCrcAlone()
         MissionFtpFile.decode(server.files[MISSION]).items()[0].x() == 0
+        doneAt < 0.5d
+    }
+
+    def "a vehicle whose home is set but never reported: after 1 s more the file is read back and found equal"() {
+        given: 'the vehicle keeps its home as item 0, but its HOME_POSITION never reaches us'
+        vehicleStoresAsArduPilot()
+        channel.home = null
+
+        when:
+        TransferResult r = settle(upload(TransferPath.FTP))
+
+        then:
+        r.verified()
+        server.requests['CalcFileCRC32'] == 1
+        server.requests['OpenFileRO'] == 1
     }
 
     @Unroll
