@@ -1,14 +1,19 @@
 package dolphin.dsl;
 
+import dolphin.dsl.check.FixableSyntaxException;
+import dolphin.dsl.check.QuickFix;
+import java.util.List;
 import org.codehaus.groovy.ast.ASTNode;
 import org.codehaus.groovy.ast.ClassCodeVisitorSupport;
 import org.codehaus.groovy.ast.ClassNode;
+import org.codehaus.groovy.ast.expr.Expression;
+import org.codehaus.groovy.ast.expr.MethodCallExpression;
+import org.codehaus.groovy.ast.expr.TupleExpression;
 import org.codehaus.groovy.classgen.GeneratorContext;
 import org.codehaus.groovy.control.CompilePhase;
 import org.codehaus.groovy.control.SourceUnit;
 import org.codehaus.groovy.control.customizers.CompilationCustomizer;
 import org.codehaus.groovy.control.messages.SyntaxErrorMessage;
-import org.codehaus.groovy.syntax.SyntaxException;
 
 /**
  * A compile-time check of a script's code as Groovy parsed it (CONVERSION phase: before names are
@@ -44,8 +49,17 @@ abstract class ScriptCheck extends CompilationCustomizer {
         }
     }
 
-    static void error(SourceUnit source, String message, ASTNode at) {
+    /** A call's arguments as a list: named arguments are one map, first. */
+    static List<Expression> arguments(MethodCallExpression call) {
+        return call.getArguments() instanceof TupleExpression t ? t.getExpressions() : List.of(call.getArguments());
+    }
+
+    static void error(SourceUnit source, String message, ASTNode at, QuickFix... fixes) {
+        error(source, message, at.getLineNumber(), at.getColumnNumber(), fixes);
+    }
+
+    static void error(SourceUnit source, String message, int line, int column, QuickFix... fixes) {
         source.getErrorCollector().addErrorAndContinue(new SyntaxErrorMessage(
-                new SyntaxException(message, at.getLineNumber(), at.getColumnNumber()), source));
+                new FixableSyntaxException(message, line, column, List.of(fixes)), source));
     }
 }

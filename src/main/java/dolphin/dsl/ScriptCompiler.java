@@ -5,6 +5,7 @@ import groovy.lang.GroovyClassLoader;
 import groovy.lang.GroovyCodeSource;
 import groovy.lang.Script;
 import dolphin.dsl.check.CallCheck;
+import dolphin.dsl.check.FixableSyntaxException;
 import dolphin.dsl.check.ScriptLanguage;
 import dolphin.dsl.check.WordCheck;
 import dolphin.dsl.vocabulary.Vocabulary;
@@ -89,7 +90,8 @@ final class ScriptCompiler {
         extensions.forEach(e -> e.addImports(imports));
         // ThreadInterrupt makes loops and closures check for interrupts, so stop() ends any script.
         config.addCompilationCustomizers(imports, new ASTTransformationCustomizer(ThreadInterrupt.class),
-                new ExecuteKeyCheck(), new SplitInstructionCheck(), new ExecuteOperandCheck());
+                new ExecuteKeyCheck(), new SplitInstructionCheck(), new ExecuteOperandCheck(), new LabelCheck(),
+                new HandlerOperandCheck());
         if (checked) {
             config.addCompilationCustomizers(new WordCheck(language()));
         }
@@ -174,7 +176,8 @@ final class ScriptCompiler {
             for (Message msg : m.getErrorCollector().getErrors()) {
                 if (msg instanceof SyntaxErrorMessage s) {
                     SyntaxException se = s.getCause();
-                    out.add(new ScriptError(file, se.getStartLine(), se.getStartColumn(), cleanSyntaxMessage(se.getOriginalMessage())));
+                    out.add(new ScriptError(file, se.getStartLine(), se.getStartColumn(), cleanSyntaxMessage(se.getOriginalMessage()),
+                            se instanceof FixableSyntaxException f ? f.fixes() : List.of()));
                 } else if (msg instanceof ExceptionMessage x) {
                     out.add(new ScriptError(file, 0, 0, x.getCause().getMessage()));
                 }

@@ -6,6 +6,8 @@ import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import org.eclipse.lsp4j.CodeActionKind;
+import org.eclipse.lsp4j.CodeActionOptions;
 import org.eclipse.lsp4j.CompletionOptions;
 import org.eclipse.lsp4j.InitializeParams;
 import org.eclipse.lsp4j.InitializeResult;
@@ -21,9 +23,9 @@ import org.eclipse.lsp4j.services.TextDocumentService;
 import org.eclipse.lsp4j.services.WorkspaceService;
 
 /**
- * The Dolphin language server (docs/editors.md): diagnostics as the user types, completion, hover,
- * signature help and go to definition for {@code .dolphin} scripts, from the language's own
- * vocabulary. {@link #exited()} gives the process's exit code: 0 after {@code shutdown} then
+ * The Dolphin language server (docs/editors.md): diagnostics as the user types, with their quick
+ * fixes, completion, hover, signature help and go to definition for {@code .dolphin} scripts, from
+ * the language's own vocabulary. {@link #exited()} gives the process's exit code: 0 after {@code shutdown} then
  * {@code exit}, 1 after {@code exit} alone, as the protocol says.
  */
 public final class DolphinLanguageServer implements LanguageServer, LanguageClientAware, AutoCloseable {
@@ -49,8 +51,9 @@ public final class DolphinLanguageServer implements LanguageServer, LanguageClie
     }
 
     DolphinLanguageServer(Clock clock, Duration quiet, ScriptChecker checker) {
-        this.diagnostics = new DiagnosticsScheduler(clock, quiet, checker::check, this::publish);
-        this.documents = new ScriptDocumentService(new VisibleWords(checker.engine().vocabulary()), diagnostics, requests);
+        QuickFixes fixes = new QuickFixes();
+        this.diagnostics = new DiagnosticsScheduler(clock, quiet, d -> fixes.remember(d, checker.check(d)), this::publish);
+        this.documents = new ScriptDocumentService(new VisibleWords(checker.engine().vocabulary()), diagnostics, fixes, requests);
     }
 
     @Override
@@ -74,6 +77,7 @@ public final class DolphinLanguageServer implements LanguageServer, LanguageClie
         capabilities.setHoverProvider(true);
         capabilities.setSignatureHelpProvider(new SignatureHelpOptions(List.of("(", ",", " ")));
         capabilities.setDefinitionProvider(true);
+        capabilities.setCodeActionProvider(new CodeActionOptions(List.of(CodeActionKind.QuickFix)));
         String version = DolphinLanguageServer.class.getPackage().getImplementationVersion();
         return CompletableFuture.completedFuture(new InitializeResult(capabilities,
                 new ServerInfo("dolphin", version == null ? "development build" : version)));

@@ -4,11 +4,17 @@ import dolphin.core.VehiclelessPlatform;
 import dolphin.dsl.Engine;
 import dolphin.dsl.ScriptError;
 import dolphin.platform.MAVLinkLanguage;
+import dolphin.dsl.check.QuickFix;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import org.eclipse.lsp4j.CodeAction;
+import org.eclipse.lsp4j.CodeActionKind;
 import org.eclipse.lsp4j.Diagnostic;
 import org.eclipse.lsp4j.DiagnosticSeverity;
 import org.eclipse.lsp4j.Range;
+import org.eclipse.lsp4j.TextEdit;
+import org.eclipse.lsp4j.WorkspaceEdit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -16,7 +22,7 @@ import org.slf4j.LoggerFactory;
  * A script's mistakes as editor diagnostics: what {@code dolphin check} finds by compiling it
  * ({@link Engine#check}), without the rehearsal, which would run the script's code. A script too large
  * to check at typing speed, or one the compiler fails on, gets one diagnostic saying so: bad input
- * never ends the server.
+ * never ends the server. Each diagnostic comes with the corrections the check knows, as quick fixes.
  */
 final class ScriptChecker {
 
@@ -42,11 +48,11 @@ final class ScriptChecker {
         return engine;
     }
 
-    List<Diagnostic> check(OpenDocument document) {
+    List<FixableDiagnostic> check(OpenDocument document) {
         String text = document.text();
         LineMap lines = document.lines();
         if (text.length() > MAX_CHARACTERS) {
-            return List.of(diagnostic(new Range(lines.position(0), lines.position(lines.lineEnd(0))),
+            return List.of(unfixable(new Range(lines.position(0), lines.position(lines.lineEnd(0))),
                     "not checked: the script has " + text.length() + " characters, more than the "
                             + MAX_CHARACTERS + " the editor checks as you type; run dolphin check on it"));
         }
@@ -55,18 +61,42 @@ final class ScriptChecker {
             errors = engine.check(text, fileName(document.uri()));
         } catch (RuntimeException | StackOverflowError e) {
             LOG.warn("checking {} failed", document.uri(), e);
-            return List.of(diagnostic(new Range(lines.position(0), lines.position(lines.lineEnd(0))),
+            return List.of(unfixable(new Range(lines.position(0), lines.position(lines.lineEnd(0))),
                     "the checker failed on this script: " + e));
         }
-        List<Diagnostic> found = new ArrayList<>();
+        List<FixableDiagnostic> found = new ArrayList<>();
         for (ScriptError e : errors) {
-            found.add(diagnostic(ErrorRange.of(e, text, lines), e.message()));
+            Diagnostic d = diagnostic(ErrorRange.of(e, text, lines), e.message());
+            found.add(new FixableDiagnostic(d, e.fixes().stream().map(f -> action(f, d, document, e.fixes().size() == 1)).toList()));
         }
         return found;
     }
 
+    private static FixableDiagnostic unfixable(Range range, String message) {
+        return new FixableDiagnostic(diagnostic(range, message), List.of());
+    }
+
     private static Diagnostic diagnostic(Range range, String message) {
         return new Diagnostic(range, message, DiagnosticSeverity.Error, "dolphin");
+    }
+
+    /** A fix as the protocol's quick fix of its diagnostic: one edit of the checked text; the only fix is the preferred one. */
+    private static CodeAction action(QuickFix fix, Diagnostic d, OpenDocument document, boolean only) {
+        LineMap lines = document.lines();
+        Range range = new Range(lines.position(offset(lines, fix.line(), fix.column())),
+                lines.position(offset(lines, fix.endLine(), fix.endColumn())));
+        CodeAction action = new CodeAction(fix.title());
+        action.setKind(CodeActionKind.QuickFix);
+        action.setDiagnostics(List.of(d));
+        action.setEdit(new WorkspaceEdit(Map.of(document.uri(), List.of(new TextEdit(range, fix.replacement())))));
+        action.setIsPreferred(only);
+        return action;
+    }
+
+    /** The offset of a 1-based line and column, kept on the text. */
+    private static int offset(LineMap lines, int line, int column) {
+        int l = Math.min(Math.max(line, 1), lines.lineCount()) - 1;
+        return Math.min(lines.lineStart(l) + Math.max(column, 1) - 1, lines.lineEnd(l));
     }
 
     /** The name messages give the script: the last part of its URI. */

@@ -6,10 +6,14 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.function.BiFunction;
+import org.eclipse.lsp4j.CodeAction;
+import org.eclipse.lsp4j.CodeActionParams;
+import org.eclipse.lsp4j.Command;
 import org.eclipse.lsp4j.CompletionItem;
 import org.eclipse.lsp4j.CompletionList;
 import org.eclipse.lsp4j.CompletionParams;
 import org.eclipse.lsp4j.DefinitionParams;
+import org.eclipse.lsp4j.Diagnostic;
 import org.eclipse.lsp4j.DidChangeTextDocumentParams;
 import org.eclipse.lsp4j.DidCloseTextDocumentParams;
 import org.eclipse.lsp4j.DidOpenTextDocumentParams;
@@ -39,9 +43,11 @@ final class ScriptDocumentService implements TextDocumentService {
     private final Hovers hovers;
     private final CallSignatures signatures;
     private final Definitions definitions = new Definitions();
+    private final QuickFixes fixes;
 
-    ScriptDocumentService(VisibleWords words, DiagnosticsScheduler diagnostics, ExecutorService requests) {
+    ScriptDocumentService(VisibleWords words, DiagnosticsScheduler diagnostics, QuickFixes fixes, ExecutorService requests) {
         this.diagnostics = diagnostics;
+        this.fixes = fixes;
         this.requests = requests;
         this.completions = new Completions(words);
         this.hovers = new Hovers(words);
@@ -88,6 +94,7 @@ final class ScriptDocumentService implements TextDocumentService {
         String uri = params.getTextDocument().getUri();
         documents.remove(uri);
         diagnostics.closed(uri);
+        fixes.forget(uri);
     }
 
     @Override
@@ -117,6 +124,14 @@ final class ScriptDocumentService implements TextDocumentService {
             Location found = d == null ? null : definitions.at(d, at);
             return Either.forLeft(found == null ? List.of() : List.of(found));
         });
+    }
+
+    @Override
+    public CompletableFuture<List<Either<Command, CodeAction>>> codeAction(CodeActionParams params) {
+        List<Diagnostic> shown = params.getContext() == null || params.getContext().getDiagnostics() == null
+                ? List.of() : params.getContext().getDiagnostics();
+        return answer(params.getTextDocument().getUri(), params.getRange().getStart(),
+                (d, at) -> d == null ? List.of() : fixes.at(d, params.getRange(), shown));
     }
 
     /** Answers on the request thread from the document as it is now (null if it is not open). */

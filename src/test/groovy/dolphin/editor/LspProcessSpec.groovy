@@ -36,6 +36,27 @@ class LspProcessSpec extends Specification {
         rest.every { it.jsonrpc == '2.0' }
     }
 
+    def "a plain JSON-RPC client asks for the code actions of a diagnostic and gets the quick fix that replaces 'mvoe' with 'move'"() {
+        when:
+        server.initialize()
+        server.notify('textDocument/didOpen', [textDocument: [uri: URI, languageId: 'dolphin', version: 1,
+                                                              text: 'm = mission {\n    mvoe 50, 0\n}\n']])
+        Map published = server.next { it.method == 'textDocument/publishDiagnostics' }
+        Map diagnostic = published.params.diagnostics[0]
+        int asked = server.request('textDocument/codeAction', [textDocument: [uri: URI], range: diagnostic.range,
+                                                               context: [diagnostics: [diagnostic]]])
+        List<Map> actions = server.next { it.id == asked }.result
+
+        then:
+        diagnostic.message == "unknown command 'mvoe' in mission { }; did you mean 'move'?"
+        actions.size() == 1
+        actions[0].title == "Change 'mvoe' to 'move'"
+        actions[0].kind == 'quickfix'
+        actions[0].isPreferred
+        actions[0].diagnostics == [diagnostic]
+        actions[0].edit.changes == [(URI): [[range: [start: [line: 1, character: 4], end: [line: 1, character: 8]], newText: 'move']]]
+    }
+
     def "a message that is not JSON, or a request for a method the server does not know, gets an error; the server goes on"() {
         when:
         server.initialize()

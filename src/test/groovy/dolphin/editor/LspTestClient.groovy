@@ -6,9 +6,13 @@ import java.time.Duration
 import java.util.concurrent.CompletableFuture
 import java.util.concurrent.LinkedBlockingQueue
 import java.util.concurrent.TimeUnit
+import org.eclipse.lsp4j.CodeAction
+import org.eclipse.lsp4j.CodeActionContext
+import org.eclipse.lsp4j.CodeActionParams
 import org.eclipse.lsp4j.CompletionItem
 import org.eclipse.lsp4j.CompletionParams
 import org.eclipse.lsp4j.DefinitionParams
+import org.eclipse.lsp4j.Diagnostic
 import org.eclipse.lsp4j.DidChangeTextDocumentParams
 import org.eclipse.lsp4j.DidCloseTextDocumentParams
 import org.eclipse.lsp4j.DidOpenTextDocumentParams
@@ -22,6 +26,7 @@ import org.eclipse.lsp4j.MessageActionItem
 import org.eclipse.lsp4j.MessageParams
 import org.eclipse.lsp4j.Position
 import org.eclipse.lsp4j.PublishDiagnosticsParams
+import org.eclipse.lsp4j.Range
 import org.eclipse.lsp4j.ShowMessageRequestParams
 import org.eclipse.lsp4j.SignatureHelp
 import org.eclipse.lsp4j.SignatureHelpParams
@@ -117,6 +122,12 @@ final class LspTestClient implements LanguageClient, AutoCloseable {
     List<Location> definition(String uri, Position p) {
         remote.textDocumentService.definition(new DefinitionParams(new TextDocumentIdentifier(uri), p))
                 .get(DEADLINE_SECONDS, TimeUnit.SECONDS).getLeft() as List<Location>
+    }
+
+    /** The code actions for a range, with the diagnostics the client shows there. */
+    List<CodeAction> codeActions(String uri, Range range, List<Diagnostic> shown) {
+        remote.textDocumentService.codeAction(new CodeActionParams(new TextDocumentIdentifier(uri), range, new CodeActionContext(shown)))
+                .get(DEADLINE_SECONDS, TimeUnit.SECONDS).collect { it.getRight() }
     }
 
     /** Closes the client's end of the server's input, as an editor that goes away does; the server's exit code. */

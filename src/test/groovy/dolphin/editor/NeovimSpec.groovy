@@ -13,7 +13,8 @@ import spock.lang.Timeout
  * A real editor: Debian's Neovim 0.7.2, headless, configured by the Lua block of docs/editors.md
  * itself (its server command replaced by this JVM's {@code java -cp ... dolphin.cli.Main lsp}), opens
  * a script with a mistake, waits for the diagnostic, asks for completion inside the script's
- * {@code mission { }} and writes what it got as JSON; the spec reads it.
+ * {@code mission { }} and writes what it got as JSON; the spec reads it. A second probe asks for the
+ * code actions of a diagnostic and applies its quick fix.
  */
 @Requires({ Neovim.available() })
 @Timeout(180)
@@ -58,6 +59,46 @@ vim.api.nvim_create_autocmd('VimEnter', { callback = function()
       end
     end
     write({ filetype = vim.bo.filetype, diagnostics = diagnostics, completion = items })
+  end)
+  if not ok then
+    write({ error = tostring(err) })
+  end
+  vim.cmd('qa!')
+end })
+'''
+
+    static final String MISTYPED = 'm = mission {\n    mvoe 50, 0\n}\n'
+
+    /** Once the diagnostic is there: ask for its code actions, apply the first one, wait for the next check. */
+    static final String CODE_ACTION_PROBE = '''
+local function write(value)
+  local f = assert(io.open(RESULT, 'w'))
+  f:write(vim.fn.json_encode(value))
+  f:close()
+end
+
+vim.api.nvim_create_autocmd('VimEnter', { callback = function()
+  local ok, err = pcall(function()
+    vim.wait(DEADLINE_MS, function() return #vim.diagnostic.get(0) > 0 end, 50)
+    local d = vim.diagnostic.get(0)[1]
+    local range = { start = { line = d.lnum, character = d.col }, ['end'] = { line = d.end_lnum, character = d.end_col } }
+    local params = { textDocument = { uri = vim.uri_from_bufnr(0) }, range = range,
+                     context = { diagnostics = { { range = range, message = d.message, severity = 1, source = 'dolphin' } } } }
+    local responses = vim.lsp.buf_request_sync(0, 'textDocument/codeAction', params, DEADLINE_MS)
+    local titles = {}
+    local first = nil
+    for _, response in pairs(responses or {}) do
+      for _, action in ipairs(response.result or {}) do
+        table.insert(titles, action.title)
+        first = first or action
+      end
+    end
+    if first then
+      vim.lsp.util.apply_workspace_edit(first.edit, 'utf-16')
+    end
+    vim.wait(DEADLINE_MS, function() return #vim.diagnostic.get(0) == 0 end, 50)
+    write({ message = d.message, actions = titles, line = vim.api.nvim_buf_get_lines(0, 1, 2, false)[1],
+            after = #vim.diagnostic.get(0) })
   end)
   if not ok then
     write({ error = tostring(err) })
@@ -126,5 +167,39 @@ end })
         if (log) {
             println "nvim: ${log}"
         }
+    }
+
+    def "Neovim gets the quick fix of a 'did you mean' as a code action, and applying it clears the diagnostic"() {
+        when:
+        Map got = neovim(CODE_ACTION_PROBE, 'mission.dolphin', MISTYPED)
+
+        then:
+        got.error == null
+        got.message == "unknown command 'mvoe' in mission { }; did you mean 'move'?"
+        got.actions == ["Change 'mvoe' to 'move'"]
+        got.line == '    move 50, 0'
+        got.after == 0
+    }
+
+    /** Runs the documented configuration with a probe in a headless Neovim on a script; what the probe wrote. */
+    Map neovim(String probe, String name, String text) {
+        String java = Path.of(System.getProperty('java.home'), 'bin', 'java').toString()
+        String command = ["[[${java}]]", "'-cp'", "[[${System.getProperty('java.class.path')}]]", "'dolphin.cli.Main'", "'lsp'"].join(', ')
+        Path result = dir.resolve('result.json')
+        Path init = dir.resolve('init.lua')
+        Files.writeString(init, documentedConfig().replace(DOCUMENTED_COMMAND, command)
+                + probe.replace('RESULT', "[[${result}]]").replace('DEADLINE_MS', "${DEADLINE_SECONDS * 1000}"))
+        Path script = dir.resolve(name)
+        Files.writeString(script, text)
+        def nvim = new ProcessBuilder(Neovim.EDITOR.path, '--headless', '--clean', '-u', init.toString(), script.toString())
+                .directory(dir.toFile()).redirectErrorStream(true).redirectOutput(dir.resolve('nvim.log').toFile())
+        ['XDG_CONFIG_HOME', 'XDG_DATA_HOME', 'XDG_STATE_HOME', 'XDG_CACHE_HOME'].each { nvim.environment()[it] = dir.toString() }
+        Process p = nvim.start()
+        boolean ended = p.waitFor(DEADLINE_SECONDS + 30, TimeUnit.SECONDS)
+        if (!ended) {
+            p.destroyForcibly()
+        }
+        assert ended && Files.exists(result): "Neovim wrote no result; its output:\n${Files.readString(dir.resolve('nvim.log'))}"
+        new JsonSlurper().parse(result.toFile()) as Map
     }
 }

@@ -1,5 +1,11 @@
 package dolphin.dsl.check;
 
-/** A mistake the checker found: where (1-based line and column) and what. */
-public record Finding(int line, int column, String message) {
+import java.util.List;
+
+/** A mistake the checker found: where (1-based line and column), what, and the corrections it knows. */
+public record Finding(int line, int column, String message, List<QuickFix> fixes) {
+
+    public Finding {
+        fixes = List.copyOf(fixes);
+    }
 }

@@ -62,37 +62,37 @@ final class FindingMessages {
     }
 
     /** A name nothing answers: where it belongs if it is a word elsewhere, else what it may have meant. */
-    String missing(String name, List<WordScope> visible) {
+    FindingText missing(String name, List<WordScope> visible) {
         List<WordScope> elsewhere = vocabulary.scopesWith(name).stream().filter(s -> !visible.contains(s)).toList();
         if (!elsewhere.isEmpty()) {
-            return belongsElsewhere(name, elsewhere.get(0));
+            return FindingText.of(belongsElsewhere(name, elsewhere.get(0)));
         }
         WordScope innermost = visible.get(0);
         String kind = innermost.kind() == WordScope.ScopeKind.BLOCK ? " in " + String.join(" / ",
                 innermost.openers().stream().map(o -> o + " { }").toList()) : "";
-        String near = Suggestions.didYouMean(name, innermost.words().keySet());
+        List<String> near = Suggestions.near(name, innermost.words().keySet());
         if (near.isEmpty()) {
-            near = Suggestions.didYouMean(name, visibleNames(visible));
+            near = Suggestions.near(name, visibleNames(visible));
         }
         if (near.isEmpty()) {
-            near = elsewhereNear(name, visible);
+            return elsewhereNear(name, visible, "unknown command '" + name + "'" + kind);
         }
-        return "unknown command '" + name + "'" + kind + near;
+        return new FindingText("unknown command '" + name + "'" + kind + Suggestions.didYouMean(near), near);
     }
 
     /** "; did you mean 'takeOff'? It can only be used inside mission { }": a word of a block not open here. */
-    private String elsewhereNear(String name, List<WordScope> visible) {
+    private FindingText elsewhereNear(String name, List<WordScope> visible, String unknown) {
         for (WordScope s : vocabulary.scopes()) {
             if (visible.contains(s)) {
                 continue;
             }
             List<String> close = Suggestions.near(name, s.words().keySet());
             if (!close.isEmpty()) {
-                return "; did you mean '" + close.get(0) + "'? It " + belongsElsewhere(close.get(0), s)
-                        .replaceFirst("^'[^']*' (is|can)", "$1");
+                return new FindingText(unknown + "; did you mean '" + close.get(0) + "'? It " + belongsElsewhere(close.get(0), s)
+                        .replaceFirst("^'[^']*' (is|can)", "$1"), List.of(close.get(0)));
             }
         }
-        return "";
+        return FindingText.of(unknown);
     }
 
     private static String belongsElsewhere(String name, WordScope scope) {
@@ -103,22 +103,22 @@ final class FindingMessages {
         };
     }
 
-    String unknownName(String name, List<WordScope> visible) {
+    FindingText unknownName(String name, List<WordScope> visible) {
         for (WordScope s : visible) {
             if (s.words().containsKey(name)) {
-                return s.kind() == WordScope.ScopeKind.SCRIPT
+                return FindingText.of(s.kind() == WordScope.ScopeKind.SCRIPT
                         ? "'" + name + "' is a command, but Groovy read it as a variable here. Expected it with its arguments,"
                         + " e.g. '" + name + "()', and in parentheses when it is the argument of another command,"
                         + " e.g. 'execute(during(10) run task)'"
                         : "'" + name + "' is a command of " + s.where().replaceFirst("^inside ", "") + ", but Groovy read it as a"
                         + " variable here: write it with its arguments, as in " + String.join(" or ", s.words().get(name).usages())
                         + (s.words().get(name).takes(0) ? "" : "; a negative value needs parentheses, '" + name + "(-2)' (Groovy reads '"
-                        + name + " -2' as '" + name + " minus 2')");
+                        + name + " -2' as '" + name + " minus 2')"));
             }
         }
         List<WordScope> elsewhere = vocabulary.scopesWith(name);
         if (!elsewhere.isEmpty()) {
-            return belongsElsewhere(name, elsewhere.get(0));
+            return FindingText.of(belongsElsewhere(name, elsewhere.get(0)));
         }
         Integer local = assignments.localLines.get(name);
         String hint = local != null
@@ -127,19 +127,22 @@ final class FindingMessages {
                 : ". Expected a variable assigned in the script (names are case-sensitive)";
         Set<String> known = new LinkedHashSet<>(variables);
         known.addAll(assignments.localLines.keySet());
-        return "unknown name '" + name + "'" + Suggestions.didYouMean(name, known) + hint;
+        List<String> near = Suggestions.near(name, known);
+        return new FindingText("unknown name '" + name + "'" + Suggestions.didYouMean(near) + hint, near);
     }
 
     /** "'thne' cannot follow waitFor or when: expected 'then'". */
-    String wrongFollower(WordScope chain, String name) {
+    FindingText wrongFollower(WordScope chain, String name) {
         String expected = String.join(" or ", chain.words().keySet());
-        return "'" + name + "' cannot follow " + String.join(" or ", chain.openers()) + ": expected '" + expected + "'"
-                + (Suggestions.near(name, chain.words().keySet()).isEmpty() ? "" : ", did you mean it?");
+        List<String> near = Suggestions.near(name, chain.words().keySet());
+        return new FindingText("'" + name + "' cannot follow " + String.join(" or ", chain.openers()) + ": expected '" + expected + "'"
+                + (near.isEmpty() ? "" : ", did you mean it?"), near);
     }
 
-    String unknownUnit(String name) {
-        return "unknown unit '" + name + "'" + Suggestions.didYouMean(name, vocabulary.units().words().keySet())
-                + " Units: " + String.join(", ", vocabulary.units().words().keySet());
+    FindingText unknownUnit(String name) {
+        List<String> near = Suggestions.near(name, vocabulary.units().words().keySet());
+        return new FindingText("unknown unit '" + name + "'" + Suggestions.didYouMean(near)
+                + " Units: " + String.join(", ", vocabulary.units().words().keySet()), near);
     }
 
     private Set<String> visibleNames(List<WordScope> visible) {

@@ -7,7 +7,6 @@ import org.codehaus.groovy.control.CompilePhase;
 import org.codehaus.groovy.control.SourceUnit;
 import org.codehaus.groovy.control.customizers.CompilationCustomizer;
 import org.codehaus.groovy.control.messages.SyntaxErrorMessage;
-import org.codehaus.groovy.syntax.SyntaxException;
 
 /**
  * The check of every name in a script against the language, as a compilation step: after Groovy
@@ -33,6 +32,6 @@ public final class WordCheck extends CompilationCustomizer {
                 .distinct()
                 .sorted(Comparator.comparingInt(Finding::line).thenComparingInt(Finding::column))
                 .forEach(f -> source.getErrorCollector().addErrorAndContinue(new SyntaxErrorMessage(
-                        new SyntaxException(f.message(), f.line(), f.column()), source)));
+                        new FixableSyntaxException(f.message(), f.line(), f.column(), f.fixes()), source)));
     }
 }

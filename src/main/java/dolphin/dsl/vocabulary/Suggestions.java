@@ -43,7 +43,11 @@ public final class Suggestions {
 
     /** "; did you mean 'a' or 'b'?", or "" when nothing is near. */
     public static String didYouMean(String name, Collection<String> known) {
-        List<String> close = near(name, known);
+        return didYouMean(near(name, known));
+    }
+
+    /** "; did you mean 'a' or 'b'?" for these names, or "" when there are none. */
+    public static String didYouMean(List<String> close) {
         return close.isEmpty() ? "" : "; did you mean " + close.stream().map(k -> "'" + k + "'")
                 .collect(Collectors.joining(" or ")) + "?";
     }
