@@ -15,7 +15,9 @@ import org.codehaus.groovy.control.SourceUnit;
  * Finds {@code watch(t) onError { ... } >> next}: Groovy joins {@code { ... } >> next} before it
  * hands it to onError, so the operator applies to the handler (Groovy composes closures with
  * {@code >>}), not to the watch; {@code next} never runs as a task, and the handler's words are no
- * longer in an onError block. The fix puts the watch in parentheses.
+ * longer in an onError block. In an assignment, {@code x = watch(t) onError { ... } >> next} is
+ * {@code (x = watch(t) onError { ... }) >> next}: next is joined to what was assigned, and dropped.
+ * The fix puts the watch in parentheses.
  */
 final class HandlerOperandCheck extends ScriptCheck {
 
@@ -26,17 +28,43 @@ final class HandlerOperandCheck extends ScriptCheck {
             @Override
             public void visitMethodCallExpression(MethodCallExpression call) {
                 List<Expression> args = arguments(call);
-                if (!call.isImplicitThis() && "onError".equals(call.getMethodAsString()) && !args.isEmpty()
-                        && args.get(args.size() - 1) instanceof BinaryExpression b && b.getLeftExpression() instanceof ClosureExpression handler) {
-                    String op = b.getOperation().getText();
-                    String rest = "[".equals(op) ? "[...]" : op + " ...";
+                if (isOnError(call) && !args.isEmpty() && args.get(args.size() - 1) instanceof BinaryExpression b
+                        && b.getLeftExpression() instanceof ClosureExpression handler) {
+                    String rest = rest(b);
                     error(source, "'" + rest + "' after the onError block applies to the block, not to the watch: Groovy joins '{ ... } "
                             + rest + "' before it hands it to onError. Expected the watch in parentheses: '(watch(t) onError { ... }) "
                             + rest + "'", b, parenthesized(text, call, handler));
                 }
                 super.visitMethodCallExpression(call);
             }
+
+            @Override
+            public void visitBinaryExpression(BinaryExpression b) {
+                // x = watch(t) onError { ... } >> next is (x = watch(t) onError { ... }) >> next
+                if (b.getLeftExpression() instanceof BinaryExpression assignment && "=".equals(assignment.getOperation().getText())
+                        && assignment.getRightExpression() instanceof MethodCallExpression call && isOnError(call)
+                        && !text.between(assignment.getLineNumber(), assignment.getColumnNumber() - 1, assignment.getLineNumber(),
+                                assignment.getColumnNumber()).equals("(")
+                        && arguments(call).get(arguments(call).size() - 1) instanceof ClosureExpression handler) {
+                    String rest = rest(b);
+                    error(source, "'" + rest + "' after the onError block applies to the assignment, not to the watch: Groovy reads"
+                            + " 'x = watch(t) onError { ... } " + rest + "' as '(x = watch(t) onError { ... }) " + rest + "', whose"
+                            + " result is dropped. Expected the watch in parentheses: '(watch(t) onError { ... }) " + rest + "'",
+                            call.getMethod(), parenthesized(text, call, handler));
+                }
+                super.visitBinaryExpression(b);
+            }
         }.visitClass(script);
+    }
+
+    private static boolean isOnError(MethodCallExpression call) {
+        return !call.isImplicitThis() && "onError".equals(call.getMethodAsString());
+    }
+
+    /** The operator and what follows it, as the message shows them: "/ ...", "[...]". */
+    private static String rest(BinaryExpression b) {
+        String op = b.getOperation().getText();
+        return "[".equals(op) ? "[...]" : op + " ...";
     }
 
     /**
