@@ -1,12 +1,15 @@
 package dolphin.mavlink.ftp;
 
 import java.util.Arrays;
-import java.util.BitSet;
+import java.util.HashSet;
+import java.util.Set;
+import java.util.SortedMap;
+import java.util.TreeMap;
 import java.util.concurrent.CompletableFuture;
 
 /**
  * Writes a whole file over one session: CreateFile, WriteFile of up to 239 bytes (fewer on a radio,
- * {@link FtpChannel#pacing}) with at most the session's window outstanding (each sent again on its
+ * {@link FtpChannel#pacing}, as soon as one is heard) with at most the session's window outstanding (each sent again on its
  * own timeout), then TerminateSession, whose answer is the vehicle's verdict on the file (ArduPilot
  * parses an @MISSION file when it is closed).
  *
@@ -14,7 +17,7 @@ import java.util.concurrent.CompletableFuture;
  * radio that wait is a round trip of time slots. ArduPilot's FTP thread serves requests in the
  * order they come, so a write that arrives after the CreateFile finds the file open; one refused
  * before the file is known to be open (the CreateFile lost on the way) is written again once it
- * is. A write's ACK proves the file open: the CreateFile is no longer waited for, since asked
+ * is, and its FileNotFound sends the CreateFile again at once. A write's ACK proves the file open: the CreateFile is no longer waited for, since asked
  * again after other replies ArduPilot would refuse it (the session has a file open).
  */
 final class FtpWrite implements FtpSession.Owner {
@@ -27,13 +30,11 @@ final class FtpWrite implements FtpSession.Owner {
     private final FtpProgress progress;
     private final Runnable closing;
     private final CompletableFuture<FtpFile> result = new CompletableFuture<>();
-    private final BitSet acked = new BitSet();
-    private final BitSet refusedEarly = new BitSet();   // refused before the file was known open: written again
-    private final int block;        // file bytes per WriteFile
-    private final int blocks;
+    private final Set<Long> acked = new HashSet<>();                       // offsets written
+    private final SortedMap<Long, Integer> refusedEarly = new TreeMap<>();  // offset, size: refused before the file was known open
     private Phase phase = Phase.CREATING;
-    private int next;               // the next block never sent since the file was last created
-    private long done;
+    private long nextOffset;        // the first byte never sent since the file was last created
+    private long done;              // bytes written
     private boolean reset;
 
     /** @param closing runs once the TerminateSession that closes the written file is sent */
@@ -42,8 +43,6 @@ final class FtpWrite implements FtpSession.Owner {
         this.bytes = bytes.clone();
         this.progress = progress;
         this.closing = closing;
-        this.block = session.dataBytes();
-        this.blocks = (bytes.length + block - 1) / block;
         session.serve(this);
     }
 
@@ -86,13 +85,13 @@ final class FtpWrite implements FtpSession.Owner {
             advance();
         } else if (!reset && FtpErrors.busy(reply)) {
             // sessions of ours left open (their TerminateSession lost): close them all, then create
-            // again and write every block into the new file
+            // again and write the whole file into the new one
             reset = true;
             phase = Phase.RESETTING;
             session.withdraw(FtpPayload.WRITE_FILE);
             acked.clear();
             refusedEarly.clear();
-            next = 0;
+            nextOffset = 0;
             done = 0;
             session.send(FtpPayload.RESET_SESSIONS, 0, 0, null);
         } else {
@@ -101,12 +100,15 @@ final class FtpWrite implements FtpSession.Owner {
     }
 
     private void written(FtpPayload request, FtpPayload reply) {
-        int b = (int) (request.offset() / block);
         if (reply.opcode() != FtpPayload.ACK) {
             if (phase == Phase.WRITING) {
                 session.fail(FtpException.refused(session.path(), request, reply));
-            } else {
-                refusedEarly.set(b);
+                return;
+            }
+            refusedEarly.put(request.offset(), request.size());
+            if (phase == Phase.CREATING && reply.error() == FtpErrors.FILE_NOT_FOUND) {
+                // no file open when this write came: the CreateFile sent before it was lost
+                session.resendLostBefore(FtpPayload.CREATE_FILE, request);
             }
             return;
         }
@@ -114,8 +116,7 @@ final class FtpWrite implements FtpSession.Owner {
             phase = Phase.WRITING;
             session.withdraw(FtpPayload.CREATE_FILE);
         }
-        if (!acked.get(b)) {
-            acked.set(b);
+        if (acked.add(request.offset())) {
             done += request.size();
             progress.progress(done, bytes.length, session.resends());
         }
@@ -124,25 +125,25 @@ final class FtpWrite implements FtpSession.Owner {
 
     private void advance() {
         if (phase == Phase.WRITING) {
-            for (int b = refusedEarly.nextSetBit(0); b >= 0 && session.free() > 0; b = refusedEarly.nextSetBit(b + 1)) {
-                refusedEarly.clear(b);
-                send(b);
+            while (!refusedEarly.isEmpty() && session.free() > 0) {
+                long offset = refusedEarly.firstKey();
+                send(offset, refusedEarly.remove(offset));
             }
         }
-        while ((phase == Phase.CREATING || phase == Phase.WRITING) && next < blocks && session.free() > 0) {
-            send(next++);
+        while ((phase == Phase.CREATING || phase == Phase.WRITING) && nextOffset < bytes.length && session.free() > 0) {
+            int size = (int) Math.min(session.dataBytes(), bytes.length - nextOffset);
+            send(nextOffset, size);
+            nextOffset += size;
         }
-        if (phase == Phase.WRITING && acked.cardinality() == blocks) {
+        if (phase == Phase.WRITING && done == bytes.length) {
             phase = Phase.CLOSING;
             session.send(FtpPayload.TERMINATE_SESSION, 0, 0, null);
             closing.run();
         }
     }
 
-    private void send(int b) {
-        int from = b * block;
-        byte[] chunk = Arrays.copyOfRange(bytes, from, Math.min(bytes.length, from + block));
-        session.send(FtpPayload.WRITE_FILE, chunk.length, from, chunk);
+    private void send(long offset, int size) {
+        session.send(FtpPayload.WRITE_FILE, size, offset, Arrays.copyOfRange(bytes, (int) offset, (int) offset + size));
     }
 
     @Override
