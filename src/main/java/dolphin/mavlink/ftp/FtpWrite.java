@@ -9,16 +9,17 @@ import java.util.concurrent.CompletableFuture;
 
 /**
  * Writes a whole file over one session: CreateFile, WriteFile of up to 239 bytes (fewer on a radio,
- * {@link FtpChannel#pacing}, as soon as one is heard) with at most the session's window outstanding (each sent again on its
- * own timeout), then TerminateSession, whose answer is the vehicle's verdict on the file (ArduPilot
- * parses an @MISSION file when it is closed).
+ * {@link FtpChannel#pacing}, as soon as one is heard) with at most the session's window outstanding
+ * (each sent again on its own timeout), then TerminateSession, whose answer is the vehicle's verdict
+ * on the file (ArduPilot parses an @MISSION file when it is closed).
  *
  * <p>The first writes follow the CreateFile without waiting for its answer, as MAVProxy's do: on a
  * radio that wait is a round trip of time slots. ArduPilot's FTP thread serves requests in the
  * order they come, so a write that arrives after the CreateFile finds the file open; one refused
  * before the file is known to be open (the CreateFile lost on the way) is written again once it
- * is, and its FileNotFound sends the CreateFile again at once. A write's ACK proves the file open: the CreateFile is no longer waited for, since asked
- * again after other replies ArduPilot would refuse it (the session has a file open).
+ * is, and its FileNotFound sends the CreateFile again at once. A write's ACK proves the file open:
+ * the CreateFile is no longer waited for, since asked again after other replies ArduPilot would
+ * refuse it (the session has a file open).
  */
 final class FtpWrite implements FtpSession.Owner {
 
