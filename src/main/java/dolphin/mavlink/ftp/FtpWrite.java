@@ -24,7 +24,7 @@ import java.util.concurrent.CompletableFuture;
 final class FtpWrite implements FtpSession.Owner {
 
     /** Where the write stands; writes may be outstanding in CREATING and WRITING. */
-    private enum Phase { CREATING, RESETTING, WRITING, CLOSING }
+    private enum WritePhase { CREATING, RESETTING, WRITING, CLOSING }
 
     private final FtpSession session;
     private final byte[] bytes;
@@ -33,7 +33,7 @@ final class FtpWrite implements FtpSession.Owner {
     private final CompletableFuture<FtpFile> result = new CompletableFuture<>();
     private final Set<Long> acked = new HashSet<>();                       // offsets written
     private final SortedMap<Long, Integer> refusedEarly = new TreeMap<>();  // offset, size: refused before the file was known open
-    private Phase phase = Phase.CREATING;
+    private WritePhase phase = WritePhase.CREATING;
     private long nextOffset;        // the first byte never sent since the file was last created
     private long done;              // bytes written
     private boolean reset;
@@ -53,7 +53,7 @@ final class FtpWrite implements FtpSession.Owner {
     }
 
     private void create() {
-        phase = Phase.CREATING;
+        phase = WritePhase.CREATING;
         session.sendPath(FtpPayload.CREATE_FILE);
         advance();
     }
@@ -82,13 +82,13 @@ final class FtpWrite implements FtpSession.Owner {
 
     private void created(FtpPayload request, FtpPayload reply) {
         if (reply.opcode() == FtpPayload.ACK) {
-            phase = Phase.WRITING;
+            phase = WritePhase.WRITING;
             advance();
         } else if (!reset && FtpErrors.busy(reply)) {
             // sessions of ours left open (their TerminateSession lost): close them all, then create
             // again and write the whole file into the new one
             reset = true;
-            phase = Phase.RESETTING;
+            phase = WritePhase.RESETTING;
             session.withdraw(FtpPayload.WRITE_FILE);
             acked.clear();
             refusedEarly.clear();
@@ -102,19 +102,19 @@ final class FtpWrite implements FtpSession.Owner {
 
     private void written(FtpPayload request, FtpPayload reply) {
         if (reply.opcode() != FtpPayload.ACK) {
-            if (phase == Phase.WRITING) {
+            if (phase == WritePhase.WRITING) {
                 session.fail(FtpException.refused(session.path(), request, reply));
                 return;
             }
             refusedEarly.put(request.offset(), request.size());
-            if (phase == Phase.CREATING && reply.error() == FtpErrors.FILE_NOT_FOUND) {
+            if (phase == WritePhase.CREATING && reply.error() == FtpErrors.FILE_NOT_FOUND) {
                 // no file open when this write came: the CreateFile sent before it was lost
                 session.resendLostBefore(FtpPayload.CREATE_FILE, request);
             }
             return;
         }
-        if (phase == Phase.CREATING) {
-            phase = Phase.WRITING;
+        if (phase == WritePhase.CREATING) {
+            phase = WritePhase.WRITING;
             session.withdraw(FtpPayload.CREATE_FILE);
         }
         if (acked.add(request.offset())) {
@@ -125,19 +125,19 @@ final class FtpWrite implements FtpSession.Owner {
     }
 
     private void advance() {
-        if (phase == Phase.WRITING) {
+        if (phase == WritePhase.WRITING) {
             while (!refusedEarly.isEmpty() && session.free() > 0) {
                 long offset = refusedEarly.firstKey();
                 send(offset, refusedEarly.remove(offset));
             }
         }
-        while ((phase == Phase.CREATING || phase == Phase.WRITING) && nextOffset < bytes.length && session.free() > 0) {
+        while ((phase == WritePhase.CREATING || phase == WritePhase.WRITING) && nextOffset < bytes.length && session.free() > 0) {
             int size = (int) Math.min(session.dataBytes(), bytes.length - nextOffset);
             send(nextOffset, size);
             nextOffset += size;
         }
-        if (phase == Phase.WRITING && done == bytes.length) {
-            phase = Phase.CLOSING;
+        if (phase == WritePhase.WRITING && done == bytes.length) {
+            phase = WritePhase.CLOSING;
             session.send(FtpPayload.TERMINATE_SESSION, 0, 0, null);
             closing.run();
         }
