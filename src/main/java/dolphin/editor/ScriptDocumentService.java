@@ -44,6 +44,7 @@ final class ScriptDocumentService implements TextDocumentService {
     private final CallSignatures signatures;
     private final Definitions definitions = new Definitions();
     private final QuickFixes fixes;
+    private volatile boolean snippets;
 
     ScriptDocumentService(VisibleWords words, DiagnosticsScheduler diagnostics, QuickFixes fixes, ExecutorService requests) {
         this.diagnostics = diagnostics;
@@ -52,6 +53,11 @@ final class ScriptDocumentService implements TextDocumentService {
         this.completions = new Completions(words);
         this.hovers = new Hovers(words);
         this.signatures = new CallSignatures(words);
+    }
+
+    /** Whether completion may insert snippets: the editor said it takes them when it initialized. */
+    void snippetsTaken(boolean taken) {
+        this.snippets = taken;
     }
 
     @Override
@@ -105,7 +111,7 @@ final class ScriptDocumentService implements TextDocumentService {
     @Override
     public CompletableFuture<Either<List<CompletionItem>, CompletionList>> completion(CompletionParams params) {
         return answer(params.getTextDocument().getUri(), params.getPosition(),
-                (d, at) -> Either.forRight(new CompletionList(false, d == null ? List.of() : completions.at(d, at))));
+                (d, at) -> Either.forRight(d == null ? new CompletionList(false, List.of()) : completions.at(d, at, snippets)));
     }
 
     @Override

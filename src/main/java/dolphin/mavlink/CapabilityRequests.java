@@ -55,7 +55,7 @@ final class CapabilityRequests {
     }
 
     /**
-     * A transfer waits for the answer: asked again now unless an ask is already on its way (sent
+     * A transfer wants the answer: asked again now unless an ask is already on its way (sent
      * less than a round-trip timeout ago). A vehicle that answered is not asked.
      */
     void hurry(MAVLinkNode node, long now) {

@@ -121,7 +121,8 @@ public final class MAVLinkNode extends AbstractNode {
      */
     public boolean throughRadio() {
         Link link = getLink();
-        return link != null && (link.url().kind() == LinkUrl.Transport.SERIAL || linkHealth().radio() != null);
+        // asked for each FTP request: whether a radio reported, not the link's whole health
+        return link != null && (link.url().kind() == LinkUrl.Transport.SERIAL || comms.radioHeard(link));
     }
 
     /** The requests in flight on the link the vehicle is reached through, shared with the other vehicles on it. */

@@ -93,8 +93,8 @@ final class LspProcess implements AutoCloseable {
         null
     }
 
-    void initialize() {
-        int id = request('initialize', [processId: null, rootUri: null, capabilities: [:]])
+    void initialize(Map capabilities = [:]) {
+        int id = request('initialize', [processId: null, rootUri: null, capabilities: capabilities])
         next { it.id == id }
         notify('initialized', [:])
     }

@@ -99,4 +99,36 @@ class LspProcessSpec extends Specification {
         then:
         server.exitCode() == 0
     }
+
+    def "a plain JSON-RPC client asking at mv|oe inside mission { } gets move and the other move words first, each replacing mvoe whole"() {
+        when:
+        server.initialize()
+        List<Map> items = completeInMvoe()
+
+        then:
+        items*.label.take(CompletionSpec.MISSION_MOVE_WORDS.size()) == CompletionSpec.MISSION_MOVE_WORDS
+        items == items.toSorted { it.sortText }
+        items[0].textEdit == [range: [start: [line: 1, character: 4], end: [line: 1, character: 8]], newText: 'move']
+        items[0].filterText == 'move'
+
+        and: 'no snippet for a client that did not say it takes them'
+        items.every { it.insertTextFormat == null }
+    }
+
+    def "a client that takes snippets gets move with placeholders for the arguments it needs"() {
+        when:
+        server.initialize([textDocument: [completion: [completionItem: [snippetSupport: true]]]])
+        Map move = completeInMvoe()[0]
+
+        then:
+        move.label == 'move'
+        move.textEdit.newText == 'move(${1:north}, ${2:east})'
+        move.insertTextFormat == 2
+    }
+
+    private List<Map> completeInMvoe() {
+        server.notify('textDocument/didOpen', [textDocument: [uri: URI, languageId: 'dolphin', version: 1, text: 'm = mission {\n    mvoe\n}\n']])
+        int id = server.request('textDocument/completion', [textDocument: [uri: URI], position: [line: 1, character: 6]])
+        server.next { it.id == id }.result.items as List<Map>
+    }
 }

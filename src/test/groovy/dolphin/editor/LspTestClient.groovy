@@ -6,10 +6,14 @@ import java.time.Duration
 import java.util.concurrent.CompletableFuture
 import java.util.concurrent.LinkedBlockingQueue
 import java.util.concurrent.TimeUnit
+import org.eclipse.lsp4j.ClientCapabilities
 import org.eclipse.lsp4j.CodeAction
 import org.eclipse.lsp4j.CodeActionContext
 import org.eclipse.lsp4j.CodeActionParams
+import org.eclipse.lsp4j.CompletionCapabilities
 import org.eclipse.lsp4j.CompletionItem
+import org.eclipse.lsp4j.CompletionItemCapabilities
+import org.eclipse.lsp4j.CompletionList
 import org.eclipse.lsp4j.CompletionParams
 import org.eclipse.lsp4j.DefinitionParams
 import org.eclipse.lsp4j.Diagnostic
@@ -30,6 +34,7 @@ import org.eclipse.lsp4j.Range
 import org.eclipse.lsp4j.ShowMessageRequestParams
 import org.eclipse.lsp4j.SignatureHelp
 import org.eclipse.lsp4j.SignatureHelpParams
+import org.eclipse.lsp4j.TextDocumentClientCapabilities
 import org.eclipse.lsp4j.TextDocumentContentChangeEvent
 import org.eclipse.lsp4j.TextDocumentIdentifier
 import org.eclipse.lsp4j.TextDocumentItem
@@ -55,7 +60,8 @@ final class LspTestClient implements LanguageClient, AutoCloseable {
     LanguageServer remote
     InitializeResult initialized
 
-    LspTestClient(Clock clock = ManualClock.autoAdvancing(), Duration quiet = DolphinLanguageServer.QUIET_PERIOD) {
+    LspTestClient(Clock clock = ManualClock.autoAdvancing(), Duration quiet = DolphinLanguageServer.QUIET_PERIOD,
+                  ClientCapabilities capabilities = new ClientCapabilities()) {
         server = new DolphinLanguageServer(clock, quiet, ScriptChecker.withMavlinkWords())
         def serverIn = new PipedInputStream(toServer, 1 << 20)
         def clientIn = new PipedInputStream(toClient, 1 << 20)
@@ -69,8 +75,15 @@ final class LspTestClient implements LanguageClient, AutoCloseable {
         def launcher = LSPLauncher.createClientLauncher(this, clientIn, toServer)
         launcher.startListening()
         remote = launcher.remoteProxy
-        initialized = remote.initialize(new InitializeParams()).get(DEADLINE_SECONDS, TimeUnit.SECONDS)
+        initialized = remote.initialize(new InitializeParams(capabilities: capabilities)).get(DEADLINE_SECONDS, TimeUnit.SECONDS)
         remote.initialized(new InitializedParams())
+    }
+
+    /** A client that says, as VS Code does, that it takes snippets in completion items. */
+    static LspTestClient takingSnippets() {
+        def completion = new CompletionCapabilities(new CompletionItemCapabilities(true))
+        new LspTestClient(ManualClock.autoAdvancing(), DolphinLanguageServer.QUIET_PERIOD,
+                new ClientCapabilities(null, new TextDocumentClientCapabilities(completion: completion), null))
     }
 
     void open(String uri, String text) {
@@ -106,8 +119,12 @@ final class LspTestClient implements LanguageClient, AutoCloseable {
     }
 
     List<CompletionItem> complete(String uri, Position p) {
+        completionList(uri, p).items
+    }
+
+    CompletionList completionList(String uri, Position p) {
         remote.textDocumentService.completion(new CompletionParams(new TextDocumentIdentifier(uri), p))
-                .get(DEADLINE_SECONDS, TimeUnit.SECONDS).getRight().items
+                .get(DEADLINE_SECONDS, TimeUnit.SECONDS).getRight()
     }
 
     Hover hover(String uri, Position p) {

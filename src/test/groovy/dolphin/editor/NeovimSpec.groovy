@@ -13,8 +13,9 @@ import spock.lang.Timeout
  * A real editor: Debian's Neovim 0.7.2, headless, configured by the Lua block of docs/editors.md
  * itself (its server command replaced by this JVM's {@code java -cp ... dolphin.cli.Main lsp}), opens
  * a script with a mistake, waits for the diagnostic, asks for completion inside the script's
- * {@code mission { }} and writes what it got as JSON; the spec reads it. A second probe asks for the
- * code actions of a diagnostic and applies its quick fix.
+ * {@code mission { }}, then again inside a typo it writes there ({@code mv|oe}), and writes what it
+ * got as JSON; the spec reads it. A second probe asks for the code actions of a diagnostic and
+ * applies its quick fix.
  */
 @Requires({ Neovim.available() })
 @Timeout(180)
@@ -42,6 +43,21 @@ local function write(value)
   f:close()
 end
 
+local function complete(line, character)
+  local params = { textDocument = { uri = vim.uri_from_bufnr(0) }, position = { line = line, character = character } }
+  local responses = vim.lsp.buf_request_sync(0, 'textDocument/completion', params, DEADLINE_MS)
+  local items = {}
+  for _, response in pairs(responses or {}) do
+    local result = response.result or {}
+    for _, item in ipairs(result.items or result) do
+      local edit = item.textEdit or {}
+      table.insert(items, { label = item.label, sortText = item.sortText, filterText = item.filterText,
+                            newText = edit.newText, range = edit.range, insertTextFormat = item.insertTextFormat })
+    end
+  end
+  return items
+end
+
 vim.api.nvim_create_autocmd('VimEnter', { callback = function()
   local ok, err = pcall(function()
     vim.wait(DEADLINE_MS, function() return #vim.diagnostic.get(0) > 0 end, 50)
@@ -49,16 +65,11 @@ vim.api.nvim_create_autocmd('VimEnter', { callback = function()
     for _, d in ipairs(vim.diagnostic.get(0)) do
       table.insert(diagnostics, { lnum = d.lnum, col = d.col, message = d.message })
     end
-    local params = { textDocument = { uri = vim.uri_from_bufnr(0) }, position = { line = 3, character = 4 } }
-    local responses = vim.lsp.buf_request_sync(0, 'textDocument/completion', params, DEADLINE_MS)
-    local items = {}
-    for _, response in pairs(responses or {}) do
-      local result = response.result or {}
-      for _, item in ipairs(result.items or result) do
-        table.insert(items, { label = item.label, sortText = item.sortText })
-      end
-    end
-    write({ filetype = vim.bo.filetype, diagnostics = diagnostics, completion = items })
+    local completion = complete(3, 4)
+    -- a typo in the mission, completed with the cursor inside it: mv|oe
+    vim.api.nvim_buf_set_lines(0, 3, 4, false, { '    mvoe' })
+    local typo = complete(3, 6)
+    write({ filetype = vim.bo.filetype, diagnostics = diagnostics, completion = completion, typo = typo })
   end)
   if not ok then
     write({ error = tostring(err) })
@@ -120,7 +131,7 @@ end })
         blocks[0].text
     }
 
-    def "Neovim with the documented configuration shows the script's diagnostic and completes the mission commands"() {
+    def "Neovim with the documented configuration shows the script's diagnostic and completes the mission commands, move first at mv|oe"() {
         given: 'the documented configuration, the server started as this JVM starts it'
         String java = Path.of(System.getProperty('java.home'), 'bin', 'java').toString()
         String command = ["[[${java}]]", "'-cp'", "[[${System.getProperty('java.class.path')}]]", "'dolphin.cli.Main'", "'lsp'"].join(', ')
@@ -162,6 +173,14 @@ end })
         items*.label.containsAll(['goPos', 'takeOff', 'returnHomeAndLand', 'surveyArea'])
         items*.label.indexOf('goPos') < items*.label.indexOf('pick')
         items*.label.contains('homePos')
+
+        and: 'at mv|oe, after the line is changed to mvoe: the move words first, replacing mvoe whole with the word alone (Neovim 0.7 takes no snippets)'
+        List<Map> typo = (got.typo as List<Map>).sort { it.sortText }
+        typo*.label.take(CompletionSpec.MISSION_MOVE_WORDS.size()) == CompletionSpec.MISSION_MOVE_WORDS
+        typo[0].newText == 'move'
+        typo[0].filterText == 'move'
+        typo[0].insertTextFormat == null
+        typo.every { it.range == [start: [line: 3, character: 4], end: [line: 3, character: 8]] }
 
         cleanup:
         if (log) {

@@ -10,9 +10,9 @@ import spock.lang.Timeout
 
 /**
  * Every script in dsl-examples/ runs to completion against the in-process simulated fleet, as
- * `dolphin run SCRIPT --sim N --speedup X` with the command line its comment gives, and its outcome
- * is checked from the printed lines: the MissionExecutor's progress ("mission X on vehicle N: ...")
- * and the script's own messages.
+ * `dolphin run SCRIPT --sim N --speedup X` with the command line of its row in README.md's table of
+ * examples (the same as its own comment's), and its outcome is checked from the printed lines: the
+ * MissionExecutor's progress ("mission X on vehicle N: ...") and the script's own messages.
  */
 class ExamplesSpec extends Specification {
 
@@ -28,13 +28,32 @@ class ExamplesSpec extends Specification {
     @Shared
     Map<String, String> commandLines = [:]
 
-    /** Runs the example with the `./dolphin run ...` line of its own comment; a deadline of 90 s. */
+    /** The `./dolphin run ...` line of an example's own comment, or null. */
+    static String commentCommand(String example) {
+        def m = new File(DIR, "${example}.dolphin").text =~ /(?m)^\/\/\s+(\.\/dolphin run \S+(?: --\S+ \S+)*)\s*$/
+        m.find() ? m.group(1) : null
+    }
+
+    /** README.md's table of examples: each row's file name and its "Run with" command, in order. */
+    static List<List<String>> readmeRows() {
+        String readme = new File('README.md').text
+        int table = readme.indexOf('| Example | Shows | Run with |')
+        assert table >= 0: 'README.md has no table of examples'
+        readme.substring(table).readLines().drop(2).takeWhile { it.startsWith('|') }.collect { row ->
+            def m = row =~ /^\| `([^`]+)\.dolphin` \|.*\| `(\.\/dolphin run [^`]+)` \|$/
+            assert m.find(): "README.md: a row of the examples' table without a file and a './dolphin run' command: ${row}"
+            [m.group(1), m.group(2)]
+        }
+    }
+
+    /** Runs the example with the command of its README row; a deadline of 90 s. */
     Map run(String example) {
         File file = new File(DIR, "${example}.dolphin")
-        def m = file.text =~ /(?m)^\/\/\s+\.\/dolphin run (\S+)((?: --\S+ \S+)*)\s*$/
-        assert m.find(): "${file}: no './dolphin run ${file} --sim N ...' line in its comment"
-        assert m.group(1) == file.path
-        List<String> args = ['run', file.path] + m.group(2).trim().split(/\s+/).toList()
+        String command = readmeRows().find { it[0] == example }?.getAt(1)
+        assert command: "README.md: no row for ${file} in the table of examples"
+        List<String> words = command.split(/\s+/).toList()
+        assert words.take(3) == ['./dolphin', 'run', file.path]
+        List<String> args = words.drop(1)
         assert args.contains('--sim')
         def out = new StringWriter()
         def err = new StringWriter()
@@ -60,6 +79,15 @@ class ExamplesSpec extends Specification {
     def "every file in dsl-examples/ is run by this spec"() {
         expect:
         new File(DIR).listFiles().findAll { it.name.endsWith('.dolphin') }*.name*.replace('.dolphin', '').sort() == COVERED.sort()
+    }
+
+    def "every example has one row in README.md's table, whose command is the one in the example's own comment"() {
+        given:
+        List<List<String>> rows = readmeRows()
+
+        expect:
+        rows*.getAt(0).sort() == COVERED.sort()
+        rows.every { String example, String command -> command == commentCommand(example) }
     }
 
     @Timeout(100)

@@ -7,6 +7,7 @@ final class FtpErrors {
     static final int FAIL_ERRNO = 2;
     static final int NO_SESSIONS_AVAILABLE = 5;
     static final int EOF = 6;
+    static final int FILE_NOT_FOUND = 10;
     /** The errno of an open when the vehicle's file table is full (AP_Filesystem_Mission keeps four @MISSION files). */
     static final int ENFILE = 23;
 

@@ -11,13 +11,14 @@ import java.util.List;
 import java.util.function.BooleanSupplier;
 
 /**
- * One session with the vehicle's FTP server, on the protocol's thread: its requests numbered,
- * at most its {@link FtpPacing}'s window outstanding (fewer while our radio's buffer fills), each sent again on its own timeout (the link's RTO, backed
- * off per timeout in a row, twice at most), and matched with their replies by session, req_opcode and seq (a
- * reply's seq is its request's plus one); a session that makes no progress for the give-up time
- * fails. A request sent again keeps its seq, so ArduPilot repeats its remembered reply instead of
- * doing it twice. Clean round trips (a reply to a request sent once) feed the link's
- * {@link dolphin.mavlink.RoundTrip}.
+ * One session with the vehicle's FTP server, on the protocol's thread: its requests numbered, at
+ * most the window of its link's {@link FtpPacing} outstanding (looked at for each request: a radio
+ * may be heard after the transfer began), fewer while our radio's buffer fills; each sent again on
+ * its own timeout (the link's RTO, backed off per timeout in a row, twice at most), and matched
+ * with their replies by session, req_opcode and seq (a reply's seq is its request's plus one); a
+ * session that makes no progress for the give-up time fails. A request sent again keeps its seq, so
+ * ArduPilot repeats its remembered reply instead of doing it twice. Clean round trips (a reply to a
+ * request sent once) feed the link's {@link dolphin.mavlink.RoundTrip}.
  */
 final class FtpSession {
 
@@ -40,6 +41,7 @@ final class FtpSession {
         final FtpPayload request;
         int sends;
         long sentAt;
+        int seqAfterSend;       // the session's next seq when it was last sent: later requests have it or more
 
         OutstandingRequest(FtpPayload request) {
             this.request = request;
@@ -52,7 +54,6 @@ final class FtpSession {
     private final int id;
     private final String path;
     private final Runnable onEnd;
-    private final FtpPacing pacing;
     private final LinkRequests onTheLink;
     private final BooleanSupplier heard;
     private final List<OutstandingRequest> pending = new ArrayList<>();
@@ -76,7 +77,6 @@ final class FtpSession {
         this.path = path;
         this.onEnd = onEnd;
         this.heard = heard;
-        this.pacing = channel.pacing();
         this.onTheLink = channel.linkRequests();
         this.lastProgress = timers.nanoTime();
     }
@@ -101,9 +101,9 @@ final class FtpSession {
         return channel.roundTrip();
     }
 
-    /** The file bytes per request or reply on this link, 1 to 239. */
+    /** The file bytes per request or reply on this link now, 1 to 239 (fewer once a radio is heard on it). */
     int dataBytes() {
-        return pacing.dataBytes();
+        return channel.pacing().dataBytes();
     }
 
     ProtocolTimers timers() {
@@ -123,6 +123,7 @@ final class FtpSession {
         if (ended) {
             return 0;
         }
+        FtpPacing pacing = channel.pacing();
         int own = window(pacing.window(), channel.radioBufferFree()) - pending.size();
         int onLink = pacing.linkWindow() == Integer.MAX_VALUE ? own : pacing.linkWindow() - onTheLink.inFlight();
         // each transfer may always have one in flight, or it could wait for ever on the others
@@ -160,10 +161,12 @@ final class FtpSession {
     private void transmit(OutstandingRequest p) {
         p.sends++;
         p.sentAt = timers.nanoTime();
+        p.seqAfterSend = nextSeq;
         int sends = p.sends;
         channel.send(p.request.toMessage(channel.system(), channel.component()));
         Duration timeout = timeouts.timeout(channel.roundTrip(), timeoutsInARow);
-        timers.schedule(timeout.compareTo(pacing.shortestTimeout()) < 0 ? pacing.shortestTimeout() : timeout, () -> {
+        Duration shortest = channel.pacing().shortestTimeout();
+        timers.schedule(timeout.compareTo(shortest) < 0 ? shortest : timeout, () -> {
             if (!ended && p.sends == sends && pending.contains(p)) {
                 timedOut(p);
             }
@@ -203,6 +206,25 @@ final class FtpSession {
         }
         progressed();
         owner.answered(p.request, reply);
+    }
+
+    /**
+     * Sends the outstanding request of {@code opcode} again now, unless it was sent again since the
+     * request {@code later} (whose answer shows it lost: ArduPilot serves requests in order). Whether
+     * it was sent.
+     */
+    boolean resendLostBefore(int opcode, FtpPayload later) {
+        for (OutstandingRequest p : pending) {
+            if (p.request.opcode() == opcode) {
+                if (((later.seq() - p.seqAfterSend) & 0x8000) != 0) {
+                    return false;       // sent again after the later request: its answer may still come
+                }
+                resends++;
+                transmit(p);
+                return true;
+            }
+        }
+        return false;
     }
 
     /**

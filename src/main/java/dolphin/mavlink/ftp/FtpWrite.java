@@ -1,39 +1,41 @@
 package dolphin.mavlink.ftp;
 
 import java.util.Arrays;
-import java.util.BitSet;
+import java.util.HashSet;
+import java.util.Set;
+import java.util.SortedMap;
+import java.util.TreeMap;
 import java.util.concurrent.CompletableFuture;
 
 /**
  * Writes a whole file over one session: CreateFile, WriteFile of up to 239 bytes (fewer on a radio,
- * {@link FtpChannel#pacing}) with at most the session's window outstanding (each sent again on its
- * own timeout), then TerminateSession, whose answer is the vehicle's verdict on the file (ArduPilot
- * parses an @MISSION file when it is closed).
+ * {@link FtpChannel#pacing}, as soon as one is heard) with at most the session's window outstanding
+ * (each sent again on its own timeout), then TerminateSession, whose answer is the vehicle's verdict
+ * on the file (ArduPilot parses an @MISSION file when it is closed).
  *
  * <p>The first writes follow the CreateFile without waiting for its answer, as MAVProxy's do: on a
  * radio that wait is a round trip of time slots. ArduPilot's FTP thread serves requests in the
  * order they come, so a write that arrives after the CreateFile finds the file open; one refused
  * before the file is known to be open (the CreateFile lost on the way) is written again once it
- * is. A write's ACK proves the file open: the CreateFile is no longer waited for, since asked
- * again after other replies ArduPilot would refuse it (the session has a file open).
+ * is, and its FileNotFound sends the CreateFile again at once. A write's ACK proves the file open:
+ * the CreateFile is no longer waited for, since asked again after other replies ArduPilot would
+ * refuse it (the session has a file open).
  */
 final class FtpWrite implements FtpSession.Owner {
 
     /** Where the write stands; writes may be outstanding in CREATING and WRITING. */
-    private enum Phase { CREATING, RESETTING, WRITING, CLOSING }
+    private enum WritePhase { CREATING, RESETTING, WRITING, CLOSING }
 
     private final FtpSession session;
     private final byte[] bytes;
     private final FtpProgress progress;
     private final Runnable closing;
     private final CompletableFuture<FtpFile> result = new CompletableFuture<>();
-    private final BitSet acked = new BitSet();
-    private final BitSet refusedEarly = new BitSet();   // refused before the file was known open: written again
-    private final int block;        // file bytes per WriteFile
-    private final int blocks;
-    private Phase phase = Phase.CREATING;
-    private int next;               // the next block never sent since the file was last created
-    private long done;
+    private final Set<Long> acked = new HashSet<>();                       // offsets written
+    private final SortedMap<Long, Integer> refusedEarly = new TreeMap<>();  // offset, size: refused before the file was known open
+    private WritePhase phase = WritePhase.CREATING;
+    private long nextOffset;        // the first byte never sent since the file was last created
+    private long done;              // bytes written
     private boolean reset;
 
     /** @param closing runs once the TerminateSession that closes the written file is sent */
@@ -42,8 +44,6 @@ final class FtpWrite implements FtpSession.Owner {
         this.bytes = bytes.clone();
         this.progress = progress;
         this.closing = closing;
-        this.block = session.dataBytes();
-        this.blocks = (bytes.length + block - 1) / block;
         session.serve(this);
     }
 
@@ -53,7 +53,7 @@ final class FtpWrite implements FtpSession.Owner {
     }
 
     private void create() {
-        phase = Phase.CREATING;
+        phase = WritePhase.CREATING;
         session.sendPath(FtpPayload.CREATE_FILE);
         advance();
     }
@@ -82,17 +82,17 @@ final class FtpWrite implements FtpSession.Owner {
 
     private void created(FtpPayload request, FtpPayload reply) {
         if (reply.opcode() == FtpPayload.ACK) {
-            phase = Phase.WRITING;
+            phase = WritePhase.WRITING;
             advance();
         } else if (!reset && FtpErrors.busy(reply)) {
             // sessions of ours left open (their TerminateSession lost): close them all, then create
-            // again and write every block into the new file
+            // again and write the whole file into the new one
             reset = true;
-            phase = Phase.RESETTING;
+            phase = WritePhase.RESETTING;
             session.withdraw(FtpPayload.WRITE_FILE);
             acked.clear();
             refusedEarly.clear();
-            next = 0;
+            nextOffset = 0;
             done = 0;
             session.send(FtpPayload.RESET_SESSIONS, 0, 0, null);
         } else {
@@ -101,21 +101,23 @@ final class FtpWrite implements FtpSession.Owner {
     }
 
     private void written(FtpPayload request, FtpPayload reply) {
-        int b = (int) (request.offset() / block);
         if (reply.opcode() != FtpPayload.ACK) {
-            if (phase == Phase.WRITING) {
+            if (phase == WritePhase.WRITING) {
                 session.fail(FtpException.refused(session.path(), request, reply));
-            } else {
-                refusedEarly.set(b);
+                return;
+            }
+            refusedEarly.put(request.offset(), request.size());
+            if (phase == WritePhase.CREATING && reply.error() == FtpErrors.FILE_NOT_FOUND) {
+                // no file open when this write came: the CreateFile sent before it was lost
+                session.resendLostBefore(FtpPayload.CREATE_FILE, request);
             }
             return;
         }
-        if (phase == Phase.CREATING) {
-            phase = Phase.WRITING;
+        if (phase == WritePhase.CREATING) {
+            phase = WritePhase.WRITING;
             session.withdraw(FtpPayload.CREATE_FILE);
         }
-        if (!acked.get(b)) {
-            acked.set(b);
+        if (acked.add(request.offset())) {
             done += request.size();
             progress.progress(done, bytes.length, session.resends());
         }
@@ -123,26 +125,26 @@ final class FtpWrite implements FtpSession.Owner {
     }
 
     private void advance() {
-        if (phase == Phase.WRITING) {
-            for (int b = refusedEarly.nextSetBit(0); b >= 0 && session.free() > 0; b = refusedEarly.nextSetBit(b + 1)) {
-                refusedEarly.clear(b);
-                send(b);
+        if (phase == WritePhase.WRITING) {
+            while (!refusedEarly.isEmpty() && session.free() > 0) {
+                long offset = refusedEarly.firstKey();
+                send(offset, refusedEarly.remove(offset));
             }
         }
-        while ((phase == Phase.CREATING || phase == Phase.WRITING) && next < blocks && session.free() > 0) {
-            send(next++);
+        while ((phase == WritePhase.CREATING || phase == WritePhase.WRITING) && nextOffset < bytes.length && session.free() > 0) {
+            int size = (int) Math.min(session.dataBytes(), bytes.length - nextOffset);
+            send(nextOffset, size);
+            nextOffset += size;
         }
-        if (phase == Phase.WRITING && acked.cardinality() == blocks) {
-            phase = Phase.CLOSING;
+        if (phase == WritePhase.WRITING && done == bytes.length) {
+            phase = WritePhase.CLOSING;
             session.send(FtpPayload.TERMINATE_SESSION, 0, 0, null);
             closing.run();
         }
     }
 
-    private void send(int b) {
-        int from = b * block;
-        byte[] chunk = Arrays.copyOfRange(bytes, from, Math.min(bytes.length, from + block));
-        session.send(FtpPayload.WRITE_FILE, chunk.length, from, chunk);
+    private void send(long offset, int size) {
+        session.send(FtpPayload.WRITE_FILE, size, offset, Arrays.copyOfRange(bytes, (int) offset, (int) offset + size));
     }
 
     @Override

@@ -53,7 +53,7 @@ public final class MissionTransfers {
      * radio, with an ask lost on the way.
      */
     static final Duration CAPABILITY_WAIT = Duration.ofSeconds(3);
-    /** A vehicle asked more often than this in vain has nothing to say: transfers no longer wait for it. */
+    /** A vehicle asked more often than this in vain has nothing to say: AUTO no longer tries FTP on it. */
     static final int PATIENT_ASKS = 3;
     private static final Duration CAPABILITY_POLL = Duration.ofMillis(50);
     private static final String NO_FTP = "item by item: the vehicle offers no MAVLink FTP";

@@ -155,7 +155,7 @@ class FtpClientSpec extends Specification {
         server.requests.CreateFile == 1
     }
 
-    def "the CreateFile lost: the writes it left without a file are written again once it is open"() {
+    def "the CreateFile lost: the first write it left without a file sends it again at once, and those writes go again once it is open"() {
         given:
         server.dropRequest = { FtpPayload p, int n -> p.opcode() == FtpPayload.CREATE_FILE && n == 0 }
 
@@ -165,10 +165,30 @@ class FtpClientSpec extends Specification {
         then:
         server.files['/b'] == bytes(2000)
         f.bytes() == bytes(2000)
-        server.requests.CreateFile == 1
         server.log.count { it.contains('< NAK to WriteFile FileNotFound') } == 3
         server.requests.WriteFile == 9 + 3
         progress.last()[0..1] == [2000L, 2000L]
+
+        and: 'sent again when the first NAK came (a round trip), not on its timeout (1.5 s before any round trip is measured); once'
+        def creates = server.log.findAll { it.contains(' > CreateFile') }*.split(' ')*.getAt(0)*.toDouble()
+        creates.size() == 2
+        creates[1] < 0.1d
+        server.requests.CreateFile == 1
+    }
+
+    def "a radio heard during a write: the writes after it carry the radio's 96 bytes, and the file arrives whole"() {
+        when:
+        def f = client.write('/b', bytes(5000), timeouts, null)
+        clock.advance(Duration.ofMillis(60))
+        link.pacing = FtpPacing.RADIO
+        settle(f)
+
+        then:
+        server.files['/b'] == bytes(5000)
+        def sizes = server.log.findAll { it.contains(' > WriteFile') }.collect { (it =~ / size (\d+)/)[0][1] as int }
+        sizes.first() == 239
+        sizes.last() <= 96
+        sizes.count { it == 96 } >= 10
     }
 
     def "the CreateFile's ACK lost: a write's ACK proves the file open, and the CreateFile is not sent again (ArduPilot would refuse it)"() {
