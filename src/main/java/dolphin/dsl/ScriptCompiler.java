@@ -91,7 +91,7 @@ final class ScriptCompiler {
         // ThreadInterrupt makes loops and closures check for interrupts, so stop() ends any script.
         config.addCompilationCustomizers(imports, new ASTTransformationCustomizer(ThreadInterrupt.class),
                 new ExecuteKeyCheck(), new SplitInstructionCheck(), new ExecuteOperandCheck(), new LabelCheck(),
-                new HandlerOperandCheck());
+                new HandlerOperandCheck(), new DuringCountCheck());
         if (checked) {
             config.addCompilationCustomizers(new WordCheck(language()));
         }
@@ -176,8 +176,9 @@ final class ScriptCompiler {
             for (Message msg : m.getErrorCollector().getErrors()) {
                 if (msg instanceof SyntaxErrorMessage s) {
                     SyntaxException se = s.getCause();
-                    out.add(new ScriptError(file, se.getStartLine(), se.getStartColumn(), cleanSyntaxMessage(se.getOriginalMessage()),
-                            se instanceof FixableSyntaxException f ? f.fixes() : List.of()));
+                    ScriptError error = new ScriptError(file, se.getStartLine(), se.getStartColumn(), cleanSyntaxMessage(se.getOriginalMessage()),
+                            se instanceof FixableSyntaxException f ? f.fixes() : List.of());
+                    out.add(DuringCountCheck.explain(error, source).orElse(error));
                 } else if (msg instanceof ExceptionMessage x) {
                     out.add(new ScriptError(file, 0, 0, x.getCause().getMessage()));
                 }

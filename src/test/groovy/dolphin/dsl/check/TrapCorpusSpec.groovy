@@ -28,14 +28,14 @@ import static dolphin.testing.FixApplier.applied
 /**
  * The traps of the Groovy embedding, as MistakeCorpusSpec does for typos: every correct example of the
  * corpus is made wrong in one place at a time by writing it as Groovy reads it differently (a task
- * after a key without its parentheses, a second word on the next line, execute alone on its line, an
+ * or a duration after a key without its parentheses, a second word on the next line, execute alone on its line, an
  * entry without its comma, an operator after an onError block, a parenthesis right after execute, a
  * def key). Every mutant must be explained at its line, and the fix of the finding that explains it
  * must give a script that checks clean. The figures are printed and written to target/trap-corpus.txt.
  */
 class TrapCorpusSpec extends Specification {
 
-    enum Trap { TASK_AFTER_KEY, SECOND_WORD_ON_NEXT_LINE, EXECUTE_ALONE, ENTRY_WITHOUT_COMMA, OPERATOR_AFTER_HANDLER,
+    enum Trap { TASK_AFTER_KEY, DURATION_AFTER_KEY, SECOND_WORD_ON_NEXT_LINE, EXECUTE_ALONE, ENTRY_WITHOUT_COMMA, OPERATOR_AFTER_HANDLER,
         PARENTHESIS_AFTER_EXECUTE, DEF_KEY }
 
     static final class Mutant {
@@ -143,7 +143,9 @@ class TrapCorpusSpec extends Specification {
             }
             if (execute || secondWord) {
                 args.findAll { it instanceof MapExpression }.each { m ->
-                    ((MapExpression) m).mapEntryExpressions.each { e -> out.addAll([taskAfterKey(origin, lines, e.valueExpression)].findAll()) }
+                    ((MapExpression) m).mapEntryExpressions.each { e ->
+                        out.addAll([taskAfterKey(origin, lines, e.valueExpression), durationAfterKey(origin, lines, e.valueExpression)].findAll())
+                    }
                 }
             }
             if (secondWord && call in statements) {
@@ -172,6 +174,21 @@ class TrapCorpusSpec extends Specification {
         }
         mutant(origin, Trap.TASK_AFTER_KEY, replaced(lines, value.lineNumber, line.substring(0, at) + "watch ${task}" +
                 line.substring(at + "watch(${task})".length())), value.lineNumber, "'onError' is read here as an argument")
+    }
+
+    /** {@code v: during(30) run t} written {@code v: during 30 run t}. */
+    static Mutant durationAfterKey(String origin, List<String> lines, Expression value) {
+        if (!(value instanceof MethodCallExpression) || value.methodAsString != 'during' || !value.implicitThis) {
+            return null
+        }
+        List<Expression> args = ((TupleExpression) value.arguments).expressions
+        String line = lines[value.lineNumber - 1]
+        int at = value.columnNumber - 1
+        if (args.size() != 1 || !line.startsWith("during(${args[0].text})", at)) {
+            return null
+        }
+        mutant(origin, Trap.DURATION_AFTER_KEY, replaced(lines, value.lineNumber, line.substring(0, at) + "during ${args[0].text}" +
+                line.substring(at + "during(${args[0].text})".length())), value.lineNumber, "Expected the duration in parentheses")
     }
 
     /** {@code waitFor { c } then t} with {@code then t} moved to the next line. */
