@@ -133,32 +133,12 @@ end })
 
     def "Neovim with the documented configuration shows the script's diagnostic and completes the mission commands, move first at mv|oe"() {
         given: 'the documented configuration, the server started as this JVM starts it'
-        String java = Path.of(System.getProperty('java.home'), 'bin', 'java').toString()
-        String command = ["[[${java}]]", "'-cp'", "[[${System.getProperty('java.class.path')}]]", "'dolphin.cli.Main'", "'lsp'"].join(', ')
-        String config = documentedConfig()
-        assert config.count(DOCUMENTED_COMMAND) == 1
-        Path result = dir.resolve('result.json')
-        Path init = dir.resolve('init.lua')
-        Files.writeString(init, config.replace(DOCUMENTED_COMMAND, command)
-                + PROBE.replace('RESULT', "[[${result}]]").replace('DEADLINE_MS', "${DEADLINE_SECONDS * 1000}"))
-        Path script = dir.resolve('survey.dolphin')
-        Files.writeString(script, SCRIPT)
+        assert documentedConfig().count(DOCUMENTED_COMMAND) == 1
 
         when: 'Neovim opens the script, headless, without any user configuration'
-        def nvim = new ProcessBuilder(Neovim.EDITOR.path, '--headless', '--clean', '-u', init.toString(), script.toString())
-                .directory(dir.toFile()).redirectErrorStream(true).redirectOutput(dir.resolve('nvim.log').toFile())
-        ['XDG_CONFIG_HOME', 'XDG_DATA_HOME', 'XDG_STATE_HOME', 'XDG_CACHE_HOME'].each { nvim.environment()[it] = dir.toString() }
-        Process p = nvim.start()
-        boolean ended = p.waitFor(DEADLINE_SECONDS + 30, TimeUnit.SECONDS)
-        if (!ended) {
-            p.destroyForcibly()
-        }
-        String log = Files.readString(dir.resolve('nvim.log'))
+        Map got = neovim(PROBE, 'survey.dolphin', SCRIPT)
 
         then:
-        ended
-        Files.exists(result)
-        Map got = new JsonSlurper().parse(result.toFile()) as Map
         got.error == null
 
         and: 'the file has the dolphin file type, and the diagnostic of dolphin check on line 7 (0-based 6)'
@@ -181,11 +161,6 @@ end })
         typo[0].filterText == 'move'
         typo[0].insertTextFormat == null
         typo.every { it.range == [start: [line: 3, character: 4], end: [line: 3, character: 8]] }
-
-        cleanup:
-        if (log) {
-            println "nvim: ${log}"
-        }
     }
 
     def "Neovim gets the quick fix of a 'did you mean' as a code action, and applying it clears the diagnostic"() {
