@@ -37,29 +37,20 @@ v1: survey
 
     /** What the test adds after the documented configuration: once the file is open, ask and write the answers. */
     static final String PROBE = '''
-local function write(value)
-  local f = assert(io.open(RESULT, 'w'))
-  f:write(vim.fn.json_encode(value))
-  f:close()
-end
-
-local function complete(line, character)
-  local params = { textDocument = { uri = vim.uri_from_bufnr(0) }, position = { line = line, character = character } }
-  local responses = vim.lsp.buf_request_sync(0, 'textDocument/completion', params, DEADLINE_MS)
-  local items = {}
-  for _, response in pairs(responses or {}) do
-    local result = response.result or {}
-    for _, item in ipairs(result.items or result) do
-      local edit = item.textEdit or {}
-      table.insert(items, { label = item.label, sortText = item.sortText, filterText = item.filterText,
-                            newText = edit.newText, range = edit.range, insertTextFormat = item.insertTextFormat })
+    local function complete(line, character)
+      local params = { textDocument = { uri = vim.uri_from_bufnr(0) }, position = { line = line, character = character } }
+      local responses = vim.lsp.buf_request_sync(0, 'textDocument/completion', params, DEADLINE_MS)
+      local items = {}
+      for _, response in pairs(responses or {}) do
+        local result = response.result or {}
+        for _, item in ipairs(result.items or result) do
+          local edit = item.textEdit or {}
+          table.insert(items, { label = item.label, sortText = item.sortText, filterText = item.filterText,
+                                newText = edit.newText, range = edit.range, insertTextFormat = item.insertTextFormat })
+        end
+      end
+      return items
     end
-  end
-  return items
-end
-
-vim.api.nvim_create_autocmd('VimEnter', { callback = function()
-  local ok, err = pcall(function()
     vim.wait(DEADLINE_MS, function() return #vim.diagnostic.get(0) > 0 end, 50)
     local diagnostics = {}
     for _, d in ipairs(vim.diagnostic.get(0)) do
@@ -70,26 +61,12 @@ vim.api.nvim_create_autocmd('VimEnter', { callback = function()
     vim.api.nvim_buf_set_lines(0, 3, 4, false, { '    mvoe' })
     local typo = complete(3, 6)
     write({ filetype = vim.bo.filetype, diagnostics = diagnostics, completion = completion, typo = typo })
-  end)
-  if not ok then
-    write({ error = tostring(err) })
-  end
-  vim.cmd('qa!')
-end })
 '''
 
     static final String MISTYPED = 'm = mission {\n    mvoe 50, 0\n}\n'
 
     /** Once the diagnostic is there: ask for its code actions, apply the first one, wait for the next check. */
     static final String CODE_ACTION_PROBE = '''
-local function write(value)
-  local f = assert(io.open(RESULT, 'w'))
-  f:write(vim.fn.json_encode(value))
-  f:close()
-end
-
-vim.api.nvim_create_autocmd('VimEnter', { callback = function()
-  local ok, err = pcall(function()
     vim.wait(DEADLINE_MS, function() return #vim.diagnostic.get(0) > 0 end, 50)
     local d = vim.diagnostic.get(0)[1]
     local range = { start = { line = d.lnum, character = d.col }, ['end'] = { line = d.end_lnum, character = d.end_col } }
@@ -110,12 +87,6 @@ vim.api.nvim_create_autocmd('VimEnter', { callback = function()
     vim.wait(DEADLINE_MS, function() return #vim.diagnostic.get(0) == 0 end, 50)
     write({ message = d.message, actions = titles, line = vim.api.nvim_buf_get_lines(0, 1, 2, false)[1],
             after = #vim.diagnostic.get(0) })
-  end)
-  if not ok then
-    write({ error = tostring(err) })
-  end
-  vim.cmd('qa!')
-end })
 '''
 
     Path dir = Files.createTempDirectory('dolphin-nvim-')
@@ -175,6 +146,29 @@ end })
         got.after == 0
     }
 
+    /**
+     * A probe's Lua run once Neovim has opened the file, with {@code write(value)} to hand its answers
+     * back as JSON; an error is written instead, and Neovim quits either way.
+     */
+    static String wrapped(String probe) {
+        """
+local function write(value)
+  local f = assert(io.open(RESULT, 'w'))
+  f:write(vim.fn.json_encode(value))
+  f:close()
+end
+
+vim.api.nvim_create_autocmd('VimEnter', { callback = function()
+  local ok, err = pcall(function()
+${probe}  end)
+  if not ok then
+    write({ error = tostring(err) })
+  end
+  vim.cmd('qa!')
+end })
+"""
+    }
+
     /** Runs the documented configuration with a probe in a headless Neovim on a script; what the probe wrote. */
     Map neovim(String probe, String name, String text) {
         String java = Path.of(System.getProperty('java.home'), 'bin', 'java').toString()
@@ -182,7 +176,7 @@ end })
         Path result = dir.resolve('result.json')
         Path init = dir.resolve('init.lua')
         Files.writeString(init, documentedConfig().replace(DOCUMENTED_COMMAND, command)
-                + probe.replace('RESULT', "[[${result}]]").replace('DEADLINE_MS', "${DEADLINE_SECONDS * 1000}"))
+                + wrapped(probe).replace('RESULT', "[[${result}]]").replace('DEADLINE_MS', "${DEADLINE_SECONDS * 1000}"))
         Path script = dir.resolve(name)
         Files.writeString(script, text)
         def nvim = new ProcessBuilder(Neovim.EDITOR.path, '--headless', '--clean', '-u', init.toString(), script.toString())
