@@ -68,6 +68,11 @@ class FtpMissionTransferSpec extends Specification {
         channel.sent.count { !(it.message instanceof msg_file_transfer_protocol) }
     }
 
+    /** The first message of the mission protocol sent: when the transfer went item by item. */
+    def firstItemMessage() {
+        channel.sent.find { !(it.message instanceof msg_file_transfer_protocol) }
+    }
+
     def "FILE_TRANSFER_PROTOCOL is one of the messages the mission layer routes to the transfers"() {
         expect:
         MissionTransfers.MESSAGES.contains(msg_file_transfer_protocol)
@@ -307,11 +312,11 @@ class FtpMissionTransferSpec extends Specification {
         r.success()
         r.note() == 'item by item: the vehicle has not said whether it offers MAVLink FTP (AUTOPILOT_VERSION asked 1 time)'
         vehicle.stored == intended()
-        def firstItemMessage = channel.sent.find { !(it.message instanceof msg_file_transfer_protocol) }
-        firstItemMessage.time >= 3.0d && firstItemMessage.time < 3.1d
+        def firstItem = firstItemMessage()
+        firstItem.time >= 3.0d && firstItem.time < 3.1d
         def ftpSent = channel.sent.findAll { it.message instanceof msg_file_transfer_protocol }
         server.log.findAll { it.contains(' > ') }.last().contains('TerminateSession')
-        ftpSent.every { it.time <= firstItemMessage.time }
+        ftpSent.every { it.time <= firstItem.time }
 
         when: 'the next upload: the vehicle still silent, FTP is tried again (nothing was learnt of it)'
         TransferResult next = settle(upload(TransferPath.AUTO))
@@ -319,7 +324,7 @@ class FtpMissionTransferSpec extends Specification {
         then:
         next.success()
         next.note().startsWith('item by item: the vehicle has not said')
-        channel.sent.count { it.message instanceof msg_file_transfer_protocol && it.time > firstItemMessage.time } > 0
+        channel.sent.count { it.message instanceof msg_file_transfer_protocol && it.time > firstItem.time } > 0
     }
 
     def "AUTO on a vehicle that says it has no FTP while FTP is tried: item by item at once, saying so"() {
@@ -335,8 +340,8 @@ class FtpMissionTransferSpec extends Specification {
         r.success()
         r.note() == 'item by item: the vehicle offers no MAVLink FTP'
         vehicle.stored == intended()
-        def firstItemMessage = channel.sent.find { !(it.message instanceof msg_file_transfer_protocol) }
-        firstItemMessage.time >= 0.4d && firstItemMessage.time < 0.5d
+        def firstItem = firstItemMessage()
+        firstItem.time >= 0.4d && firstItem.time < 0.5d
     }
 
     def "AUTO on a vehicle asked in vain more than three times: item by item at once"() {
