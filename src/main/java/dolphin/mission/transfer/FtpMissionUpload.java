@@ -76,22 +76,29 @@ final class FtpMissionUpload extends FtpMissionTransfer {
      * for that home (asked for when the upload began) when it has not reported one yet.
      */
     private void verify(OptionalLong vehicleCrc, long written, long total) {
-        boolean plane = vehicle.family() == VehicleFamily.PLANE;
-        if (vehicleCrc.isPresent() && vehicleCrc.getAsLong() == FileCrc32.of(StoredItems.file(type, items, null, plane))) {
+        if (vehicleCrc.isEmpty()) {
+            readBack(written, total);
+        } else if (vehicleCrc.getAsLong() == FileCrc32.of(StoredItems.file(type, items, null, plane()))) {
             verified(total);
-            return;
+        } else {
+            compareWithHome(vehicleCrc.getAsLong(), written, total);
         }
+    }
+
+    /** The CRC compared with the prediction of the home the vehicle reported, looked for up to 1 s. */
+    private void compareWithHome(long vehicleCrc, long written, long total) {
         Position home = vehicle.home();
-        if (type == MissionType.MISSION && vehicleCrc.isPresent() && home == null && homeLooks++ < HOME_LOOKS) {
-            timers.schedule(HOME_LOOK, () -> verify(vehicleCrc, written, total));
-            return;
-        }
-        if (vehicleCrc.isPresent() && home != null
-                && vehicleCrc.getAsLong() == FileCrc32.of(StoredItems.file(type, items, home, plane))) {
+        if (type == MissionType.MISSION && home == null && homeLooks++ < HOME_LOOKS) {
+            timers.schedule(HOME_LOOK, () -> compareWithHome(vehicleCrc, written, total));
+        } else if (home != null && vehicleCrc == FileCrc32.of(StoredItems.file(type, items, home, plane()))) {
             verified(total);
         } else {
             readBack(written, total);
         }
+    }
+
+    private boolean plane() {
+        return vehicle.family() == VehicleFamily.PLANE;
     }
 
     private void verified(long total) {
