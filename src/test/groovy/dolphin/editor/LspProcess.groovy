@@ -39,6 +39,17 @@ final class LspProcess implements AutoCloseable {
         send([jsonrpc: '2.0', method: method, params: params])
     }
 
+    /** Opens a script, as an editor does when it shows one. */
+    void open(String uri, String text) {
+        notify('textDocument/didOpen', [textDocument: [uri: uri, languageId: 'dolphin', version: 1, text: text]])
+    }
+
+    /** Opens a script and waits for its check: the publishDiagnostics message. */
+    Map openChecked(String uri, String text) {
+        open(uri, text)
+        next { it.method == 'textDocument/publishDiagnostics' }
+    }
+
     private void send(Map message) {
         sendRaw(JsonOutput.toJson(message))
     }

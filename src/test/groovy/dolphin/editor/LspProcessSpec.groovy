@@ -16,9 +16,7 @@ class LspProcessSpec extends Specification {
     def "shutdown then exit: exit code 0, and standard output held nothing but the protocol's messages"() {
         when:
         server.initialize()
-        server.notify('textDocument/didOpen', [textDocument: [uri: URI, languageId: 'dolphin', version: 1,
-                                                              text: 'm = mission {\n    takeOff(\n}\n']])
-        Map published = server.next { it.method == 'textDocument/publishDiagnostics' }
+        Map published = server.openChecked(URI, 'm = mission {\n    takeOff(\n}\n')
         int shutdown = server.request('shutdown', null)
         server.next { it.id == shutdown }
         server.notify('exit', null)
@@ -39,9 +37,7 @@ class LspProcessSpec extends Specification {
     def "a plain JSON-RPC client asks for the code actions of a diagnostic and gets the quick fix that replaces 'mvoe' with 'move'"() {
         when:
         server.initialize()
-        server.notify('textDocument/didOpen', [textDocument: [uri: URI, languageId: 'dolphin', version: 1,
-                                                              text: 'm = mission {\n    mvoe 50, 0\n}\n']])
-        Map published = server.next { it.method == 'textDocument/publishDiagnostics' }
+        Map published = server.openChecked(URI, 'm = mission {\n    mvoe 50, 0\n}\n')
         Map diagnostic = published.params.diagnostics[0]
         int asked = server.request('textDocument/codeAction', [textDocument: [uri: URI], range: diagnostic.range,
                                                                context: [diagnostics: [diagnostic]]])
@@ -84,8 +80,7 @@ class LspProcessSpec extends Specification {
     def "a client that goes away (the server's input closed) ends the server cleanly: exit code 0"() {
         when:
         server.initialize()
-        server.notify('textDocument/didOpen', [textDocument: [uri: URI, languageId: 'dolphin', version: 1, text: 'message "hi"\n']])
-        server.next { it.method == 'textDocument/publishDiagnostics' }
+        server.openChecked(URI, 'message "hi"\n')
         server.closeInput()
 
         then:
@@ -127,7 +122,7 @@ class LspProcessSpec extends Specification {
     }
 
     private List<Map> completeInMvoe() {
-        server.notify('textDocument/didOpen', [textDocument: [uri: URI, languageId: 'dolphin', version: 1, text: 'm = mission {\n    mvoe\n}\n']])
+        server.open(URI, 'm = mission {\n    mvoe\n}\n')
         int id = server.request('textDocument/completion', [textDocument: [uri: URI], position: [line: 1, character: 6]])
         server.next { it.id == id }.result.items as List<Map>
     }
