@@ -95,8 +95,9 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
                 heading, positionNanos, h, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
-    public VehicleState withLandedState(int landed) {
-        return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
+    /** EXTENDED_SYS_STATE: the landed state, and the VTOL state, which tells a QuadPlane from a plane. */
+    public VehicleState withExtendedState(int landed, int vtolState) {
+        return new VehicleState(heartbeat, heartbeatNanos, family.withVtolState(vtolState), systemStatus, systemStatusNanos, position, relativeAlt,
                 heading, positionNanos, home, landed, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 

@@ -20,8 +20,8 @@ public interface FlightRules {
     /** The rules for a family; other autopilots fly as Rover does (arm, AUTO, done at COMPLETE). */
     static FlightRules of(VehicleFamily family) {
         return switch (family) {
-            case COPTER -> Copter.RULES;
-            case PLANE -> Plane.RULES;
+            case COPTER, HELI -> Copter.RULES;
+            case PLANE, VTOL -> Plane.RULES;
             case SUB -> Sub.RULES;
             default -> Rover.RULES;
         };

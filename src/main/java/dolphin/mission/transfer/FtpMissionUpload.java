@@ -98,7 +98,7 @@ final class FtpMissionUpload extends FtpMissionTransfer {
     }
 
     private boolean plane() {
-        return vehicle.family() == VehicleFamily.PLANE;
+        return vehicle.family().firmware() == VehicleFamily.PLANE;
     }
 
     private void verified(long total) {

@@ -401,7 +401,7 @@ class FakeFlightVehicle implements MissionVehicle {
         current?.consume(m)
     }
 
-    void landedState(int landed) { state = state.withLandedState(landed) }
+    void landedState(int landed) { state = state.withExtendedState(landed, 0) }
 
     /** MISSION_CURRENT. */
     void missionCurrent(int seq, int missionState = MISSION_STATE.MISSION_STATE_ACTIVE) {

@@ -38,7 +38,7 @@ class FlightAlarmsSpec extends Specification {
         def hb = new msg_heartbeat()
         hb.base_mode = (short) ((armed ? 128 : 0) | 1)
         hb.custom_mode = family.modeNumber('AUTO').asLong
-        VehicleState.initial(family).withHeartbeat(hb, 0).withLandedState(landed)
+        VehicleState.initial(family).withHeartbeat(hb, 0).withExtendedState(landed, 0)
                 .withPosition(HOME.displace(100, 0, -up), up, Double.NaN, 0)
     }
 

@@ -48,7 +48,7 @@ class MissionEndSpec extends Specification {
         double up = (m.up ?: 0) as double
         def s = VehicleState.initial(family).withHeartbeat(hb, 0)
                 .withMissionCurrent((m.seq ?: 0) as int, 4, (m.mission ?: ACTIVE) as int)
-                .withLandedState((m.landed ?: IN_AIR) as int)
+                .withExtendedState((m.landed ?: IN_AIR) as int, 0)
                 .withPosition(HOME.displace((m.north ?: 0) as double, 0, -up), up, Double.NaN, 0)
         (m.texts ?: []).each { s = s.withStatusText(it as String) }
         s
