@@ -6,6 +6,8 @@ import com.MAVLink.ardupilotmega.msg_ekf_status_report;
 import com.MAVLink.ardupilotmega.msg_radio;
 import com.MAVLink.common.msg_fence_status;
 import com.MAVLink.common.msg_command_ack;
+import com.MAVLink.common.msg_param_error;
+import com.MAVLink.common.msg_param_value;
 import com.MAVLink.common.msg_command_long;
 import com.MAVLink.common.msg_extended_sys_state;
 import com.MAVLink.standard.msg_autopilot_version;
@@ -36,6 +38,7 @@ import java.util.HashSet;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.OptionalDouble;
 import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
@@ -95,6 +98,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
     private final Timers timers = new Timers();
     private final CommandSender commands;
     private final TelemetryRequests telemetry;
+    private final ParameterReads parameters;
     private final CapabilityRequests capabilities;
     private final List<FrameObserver> observers = new CopyOnWriteArrayList<>();
     private final List<ComponentListener> componentListeners = new CopyOnWriteArrayList<>();
@@ -112,6 +116,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
         this.config = config;
         this.clock = clock;
         this.commands = new CommandSender(this::sendOnCommsThread, config.commandTimeout().toNanos(), config.commandAttempts());
+        this.parameters = new ParameterReads(this::sendOnCommsThread, config.commandTimeout().toNanos(), config.commandAttempts());
         this.telemetry = new TelemetryRequests(this, config.telemetryHz());
         this.capabilities = CapabilityRequests.of(this);
         routeVehicleState();
@@ -315,6 +320,13 @@ public final class MAVLinkCommunications implements AutoCloseable {
         return result;
     }
 
+    /** Reads a parameter by name; completes empty when the vehicle did not answer. From any thread. */
+    public CompletableFuture<OptionalDouble> parameter(MAVLinkNode node, String name) {
+        CompletableFuture<OptionalDouble> result = new CompletableFuture<>();
+        execute(() -> parameters.read(node, name, clock.nanoTime()).thenAccept(result::complete));
+        return result;
+    }
+
     void hurryCapabilities(MAVLinkNode node) {
         capabilities.hurry(node, clock.nanoTime());
     }
@@ -429,6 +441,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
     private void supervise() {
         long now = clock.nanoTime();
         commands.tick(now);
+        parameters.tick(now);
         telemetry.check(now);
         capabilities.check(now);
         nodesById.values().forEach(n -> {
@@ -642,6 +655,8 @@ public final class MAVLinkCommunications implements AutoCloseable {
             LOG.info("vehicle {}: {}", n.getId(), text);
             changed(n, s -> s.withStatusText(text));
         });
+        handler.on(msg_param_value.class, parameters::onValue);
+        handler.on(msg_param_error.class, parameters::onError);
         handler.on(msg_command_ack.class, (n, m) -> {
             // Acknowledgements of another ground station's commands (a viewer's, relayed) are not ours.
             if (m.target_system == 0 || m.target_system == config.sysid()) {

@@ -10,6 +10,7 @@ import dolphin.mission.model.DelayCommand
 import dolphin.mission.model.DroneCommand
 import dolphin.mission.model.Fence
 import dolphin.mission.model.FlightLimits
+import dolphin.mission.model.FlightWay
 import dolphin.mission.model.GoToPoint
 import dolphin.mission.model.HeightCheck
 import dolphin.mission.model.JumpToItem
@@ -212,6 +213,20 @@ class MissionBuilder {
                 (float) Args.number('takeOffWithYaw', 'pitch', pitch), Args.yaw('takeOffWithYaw', yaw)))
     }
 
+    /** A take-off flown vertically, where the vehicle can do both (a QuadPlane): docs/vtol.md. */
+    @Word('Takes off vertically (a VTOL take-off) and climbs to the position\'s height')
+    void takeOffVertically(Position position) {
+        addRegistered(new TakeOffPoint('takeOffVertically', Args.position('takeOffVertically', position), 0f, Float.NaN,
+                FlightWay.VERTICAL))
+    }
+
+    /** A take-off on a runway, where the vehicle can do both (a QuadPlane whose Q_OPTIONS allow it): docs/vtol.md. */
+    @Word('Takes off on a runway (a plane\'s take-off) to the position; pitch in degrees')
+    void takeOffOnRunway(Position position, Number pitch = TakeOffPoint.DEFAULT_PITCH) {
+        addRegistered(new TakeOffPoint('takeOffOnRunway', Args.position('takeOffOnRunway', position),
+                (float) Args.number('takeOffOnRunway', 'pitch', pitch), Float.NaN, FlightWay.RUNWAY))
+    }
+
     /** NAV_WAYPOINT north/east/up metres from the last registered position (or home); registers it. */
     @Word('A waypoint north, east and up of the last position, metres; move(p, { north n; east e }) is a position')
     void move(Number north, Number east, Number up = 0) {
@@ -318,6 +333,18 @@ class MissionBuilder {
         add(new LandingPoint(w, Args.position(w, position), Args.yaw(w, yaw), Args.landMode(w, landMode)))
     }
 
+    @Word('Lands vertically at a position (a VTOL landing); yaw in degrees')
+    void landVertically(Position position, Number yaw = Float.NaN) {
+        String w = 'landVertically'
+        add(new LandingPoint(w, Args.position(w, position), Args.yaw(w, yaw), 0, FlightWay.VERTICAL))
+    }
+
+    @Word('Lands on a runway at a position (a plane\'s landing); yaw in degrees')
+    void landOnRunway(Position position, Number yaw = Float.NaN) {
+        String w = 'landOnRunway'
+        add(new LandingPoint(w, Args.position(w, position), Args.yaw(w, yaw), 0, FlightWay.RUNWAY))
+    }
+
     // ---- home again (each registers where it ends)
 
     /** NAV_WAYPOINT over home at the last registered height; registers it. */
@@ -336,9 +363,22 @@ class MissionBuilder {
     /** NAV_LAND at home: the vehicle flies there at the height it has, then lands; registers home. */
     @Word('Flies to home and lands there')
     void returnHomeAndLand(Number yaw = Float.NaN, Number landMode = 0) {
-        String w = 'returnHomeAndLand'
+        homeLanding('returnHomeAndLand', yaw, landMode, FlightWay.AS_THE_VEHICLE_DOES)
+    }
+
+    @Word('Flies to home and lands there vertically (a VTOL landing)')
+    void returnHomeAndLandVertically(Number yaw = Float.NaN) {
+        homeLanding('returnHomeAndLandVertically', yaw, 0, FlightWay.VERTICAL)
+    }
+
+    @Word('Flies to home and lands there on a runway (a plane\'s landing)')
+    void returnHomeAndLandOnRunway(Number yaw = Float.NaN) {
+        homeLanding('returnHomeAndLandOnRunway', yaw, 0, FlightWay.RUNWAY)
+    }
+
+    private void homeLanding(String w, Number yaw, Number landMode, FlightWay way) {
         Position h = homeFor(w)
-        add(new LandingPoint(w, h, Args.yaw(w, yaw), Args.landMode(w, landMode)))
+        add(new LandingPoint(w, h, Args.yaw(w, yaw), Args.landMode(w, landMode), way))
         register(h)
     }
 

@@ -3,6 +3,7 @@ package dolphin.mission.flight;
 import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_FRAME;
 import dolphin.mavlink.VehicleFamily;
+import dolphin.mission.model.FlightWay;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.Underwater;
 import java.util.List;
@@ -20,11 +21,27 @@ public interface FlightRules {
     /** The rules for a family; other autopilots fly as Rover does (arm, AUTO, done at COMPLETE). */
     static FlightRules of(VehicleFamily family) {
         return switch (family) {
-            case COPTER, HELI -> Copter.RULES;
-            case PLANE, VTOL -> Plane.RULES;
+            case COPTER -> Copter.MULTIROTOR;
+            case HELI -> Copter.HELICOPTER;
+            case PLANE -> Plane.FIXED_WING;
+            case VTOL -> Plane.VTOL;
             case SUB -> Sub.RULES;
             default -> Rover.RULES;
         };
+    }
+
+    /** A command the family needs at a point of the flight, e.g. a helicopter's motor interlock. */
+    record FamilyCommand(String what, int command, float... params) {
+    }
+
+    /** The ways this family takes off and lands: a script's explicit other way is refused before upload. */
+    default Set<FlightWay> flightWays() {
+        return Set.of(FlightWay.AS_THE_VEHICLE_DOES);
+    }
+
+    /** The parameters {@link #onBoard} reads from the vehicle, by name; none by default. */
+    default List<String> parameters() {
+        return List.of();
     }
 
     /** Whether the vehicle goes under water, so flies underwater missions ({@code maxDepth}) and only those. */
@@ -37,9 +54,14 @@ public interface FlightRules {
         return true;
     }
 
-    /** The items as this family must receive them; by default as the mission made them (heights above mean sea level). */
-    default List<MissionItem> onBoard(List<MissionItem> items, Underwater water) {
-        return items;
+    /**
+     * The items as this family must receive them, and the seqs of the items it added; by default as
+     * the mission made them (heights above mean sea level).
+     *
+     * @throws IllegalArgumentException when the vehicle cannot fly the mission as written, saying why
+     */
+    default Boarded onBoard(List<MissionItem> items, Boarding boarding) {
+        return new Boarded(items, List.of());
     }
 
     /** Why the family cannot fly this item, or empty when it can. */
@@ -55,6 +77,34 @@ public interface FlightRules {
     /** The mode to arm in, or empty (the default) to arm in the mode the vehicle is in. */
     default Optional<String> armMode() {
         return Optional.empty();
+    }
+
+    /** Sent before arming, each until accepted. */
+    default List<FamilyCommand> beforeArming() {
+        return List.of();
+    }
+
+    /** Sent once armed, each until accepted, before the mission starts. */
+    default List<FamilyCommand> afterArming() {
+        return List.of();
+    }
+
+    /** Sent once the mission has ended on the ground, disarmed. */
+    default List<FamilyCommand> afterLanding() {
+        return List.of();
+    }
+
+    /** Whether AUTO may be refused for a while once armed (a helicopter's rotor runs up): asked again until the start deadline. */
+    default boolean autoWaitsAfterArming() {
+        return false;
+    }
+
+    /**
+     * Whether the first item is made current before arming, for a family armed in AUTO: armed there,
+     * it starts at once from its current item, which may be a previous flight's.
+     */
+    default boolean setsFirstItemBeforeArming() {
+        return false;
     }
 
     /** Whether AUTO must be followed by MAV_CMD_MISSION_START before the vehicle moves; by default AUTO starts it. */
@@ -104,13 +154,56 @@ public interface FlightRules {
     /**
      * ArduCopter: armed in GUIDED (it refuses to arm in AUTO), started by MISSION_START; LAND and
      * RETURN_TO_LAUNCH end on the ground, where it disarms itself without reporting the item reached.
+     * A traditional helicopter (docs/vtol.md, "Helicopters") arms only with its motor interlock off
+     * (RC8_OPTION 32, which its SITL has on: "Arm: Motor Interlock Enabled"), needs it on once armed,
+     * and refuses AUTO until its rotor has run up ("runup not complete", about 13 s on SITL); the
+     * interlock goes off again once it has landed.
      */
     enum Copter implements FlightRules {
-        RULES;
+        MULTIROTOR(false),
+        HELICOPTER(true);
+
+        /** RC_Channel::AUX_FUNC::MOTOR_INTERLOCK, switched by MAV_CMD_DO_AUX_FUNCTION: 0 low (off), 2 high (on). */
+        private static final float MOTOR_INTERLOCK = 32;
+        private static final FamilyCommand INTERLOCK_OFF = new FamilyCommand("motor interlock off (DO_AUX_FUNCTION 32 low)",
+                MAV_CMD.MAV_CMD_DO_AUX_FUNCTION, MOTOR_INTERLOCK, 0);
+        private static final FamilyCommand INTERLOCK_ON = new FamilyCommand("motor interlock on (DO_AUX_FUNCTION 32 high)",
+                MAV_CMD.MAV_CMD_DO_AUX_FUNCTION, MOTOR_INTERLOCK, 2);
+
+        private final boolean interlock;
+
+        Copter(boolean interlock) {
+            this.interlock = interlock;
+        }
+
+        @Override
+        public Set<FlightWay> flightWays() {
+            return Set.of(FlightWay.AS_THE_VEHICLE_DOES, FlightWay.VERTICAL);
+        }
 
         @Override
         public Optional<String> armMode() {
             return Optional.of("GUIDED");
+        }
+
+        @Override
+        public List<FamilyCommand> beforeArming() {
+            return interlock ? List.of(INTERLOCK_OFF) : List.of();
+        }
+
+        @Override
+        public List<FamilyCommand> afterArming() {
+            return interlock ? List.of(INTERLOCK_ON) : List.of();
+        }
+
+        @Override
+        public List<FamilyCommand> afterLanding() {
+            return interlock ? List.of(INTERLOCK_OFF) : List.of();
+        }
+
+        @Override
+        public boolean autoWaitsAfterArming() {
+            return interlock;
         }
 
         @Override
@@ -126,7 +219,7 @@ public interface FlightRules {
         @Override
         public Set<String> takeoverModes() {
             return Set.of("LOITER", "BRAKE", "POSHOLD", "ALT_HOLD", "STABILIZE", "ACRO", "GUIDED", "CIRCLE", "SPORT", "DRIFT",
-                    "FLOWHOLD", "ZIGZAG");
+                    "FLOWHOLD", "ZIGZAG", "AUTOTUNE");
         }
 
         @Override
@@ -154,10 +247,54 @@ public interface FlightRules {
 
     /**
      * ArduPlane: armed in its current mode and started by AUTO; at the end of a mission it switches
-     * itself to RTL and circles home; only LAND ends on the ground.
+     * itself to RTL and circles home; only LAND ends on the ground. A QuadPlane (VTOL, docs/vtol.md)
+     * takes off and lands vertically unless the script says otherwise ({@link VtolItems}), is armed in
+     * AUTO with its first item current, as ArduPlane's own tests do, disarms itself once landed and
+     * stays in AUTO; cut short it lands vertically at home (QRTL: RTL circles there with Q_RTL_MODE 0).
      */
     enum Plane implements FlightRules {
-        RULES;
+        FIXED_WING,
+        VTOL {
+            @Override
+            public Set<FlightWay> flightWays() {
+                return Set.of(FlightWay.values());
+            }
+
+            @Override
+            public List<String> parameters() {
+                return VtolItems.PARAMETERS;
+            }
+
+            @Override
+            public Boarded onBoard(List<MissionItem> items, Boarding boarding) {
+                return new VtolItems(boarding).onBoard(items);
+            }
+
+            @Override
+            public Optional<String> armMode() {
+                return Optional.of("AUTO");
+            }
+
+            @Override
+            public boolean setsFirstItemBeforeArming() {
+                return true;
+            }
+
+            @Override
+            public String cutShortMode() {
+                return "QRTL";
+            }
+
+            @Override
+            public boolean landsAfter(int command) {
+                return command == MAV_CMD.MAV_CMD_NAV_LAND || command == MAV_CMD.MAV_CMD_NAV_VTOL_LAND;
+            }
+        };
+
+        @Override
+        public Set<FlightWay> flightWays() {
+            return Set.of(FlightWay.AS_THE_VEHICLE_DOES, FlightWay.RUNWAY);
+        }
 
         @Override
         public String holdMode() {
@@ -167,7 +304,7 @@ public interface FlightRules {
         @Override
         public Set<String> takeoverModes() {
             return Set.of("LOITER", "CIRCLE", "MANUAL", "STABILIZE", "TRAINING", "ACRO", "FLY_BY_WIRE_A", "FLY_BY_WIRE_B",
-                    "CRUISE", "GUIDED", "QSTABILIZE", "QHOVER", "QLOITER", "QACRO", "THERMAL");
+                    "CRUISE", "GUIDED", "AUTOTUNE", "QSTABILIZE", "QHOVER", "QLOITER", "QACRO", "QAUTOTUNE", "THERMAL");
         }
 
         @Override
@@ -267,11 +404,12 @@ public interface FlightRules {
 
         /** Heights above mean sea level become heights above home, at the surface: minus the depth. */
         @Override
-        public List<MissionItem> onBoard(List<MissionItem> items, Underwater water) {
-            return items.stream().map(i -> i.seq() == 0 || MissionItem.altitudeReference(i.frame()) != MAV_FRAME.MAV_FRAME_GLOBAL ? i
+        public Boarded onBoard(List<MissionItem> items, Boarding boarding) {
+            Underwater water = boarding.water();
+            return new Boarded(items.stream().map(i -> i.seq() == 0 || MissionItem.altitudeReference(i.frame()) != MAV_FRAME.MAV_FRAME_GLOBAL ? i
                     : new MissionItem(i.seq(), i.command(), MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT, i.param1(), i.param2(),
                             i.param3(), i.param4(), i.x(), i.y(), onBoardHeight(water, i.z()), i.autocontinue()))
-                    .toList();
+                    .toList(), List.of());
         }
 
         /** Minus the depth, never above the surface (ArduSub refuses a height above home), and 0 rather than -0. */

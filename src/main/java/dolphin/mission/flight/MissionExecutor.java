@@ -4,6 +4,7 @@ import com.MAVLink.common.msg_mission_current;
 import com.MAVLink.common.msg_mission_item_reached;
 import com.MAVLink.common.msg_statustext;
 import com.MAVLink.enums.MAV_CMD;
+import com.MAVLink.enums.MAV_LANDED_STATE;
 import com.MAVLink.enums.MAV_MODE_FLAG;
 import com.MAVLink.enums.MAV_RESULT;
 import com.MAVLink.enums.MISSION_STATE;
@@ -13,8 +14,10 @@ import dolphin.core.PlatformTaskExecutor;
 import dolphin.core.Position;
 import dolphin.core.VehicleEvent.EventKind;
 import dolphin.mavlink.CommandResult;
+import dolphin.mavlink.VehicleFamily;
 import dolphin.mavlink.VehicleState;
 import dolphin.mission.model.DroneCommand;
+import dolphin.mission.model.FlightWay;
 import dolphin.mission.model.HeightCheck;
 import dolphin.mission.model.JumpToItem;
 import dolphin.mission.model.Mission;
@@ -27,9 +30,11 @@ import java.time.Duration;
 import java.util.ArrayDeque;
 import java.util.Deque;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.OptionalDouble;
 import java.util.OptionalLong;
 import java.util.TreeMap;
 import java.util.concurrent.CompletableFuture;
@@ -47,6 +52,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     public enum FlightState { PREPARE, UPLOAD, VERIFY, ARM, START, RUNNING, DONE, ERROR }
 
     private static final Duration JUMP_RESEND = Duration.ofSeconds(1);
+    /** How long an ArduPlane's first EXTENDED_SYS_STATE is awaited: its stream is asked for at 0.5 Hz at least. */
+    private static final Duration VTOL_STATE_WAIT = Duration.ofSeconds(5);
     /** How often a long upload says how far it is, in clock time (a lossy link can make it last a minute). */
     private static final long TRANSFER_REPORT_NANOS = 5_000_000_000L;
 
@@ -211,6 +218,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         private final long since;
         private final CommandSteps steps;
         private boolean ready;
+        /** The vehicle's parameters its family needs, once asked; each read completes empty when unanswered. */
+        private Map<String, CompletableFuture<OptionalDouble>> parameters;
         /** What the vehicle was last waiting for, shown once per change; null when it has not waited. */
         private String waitingFor;
 
@@ -228,13 +237,24 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                     waitFor(missing.get());
                     return CompletionState.IN_PROGRESS;
                 }
+                if (vtolStateUnheard(vehicle.state(), now)) {
+                    waitFor("its EXTENDED_SYS_STATE, which tells a QuadPlane from a plane");
+                    return CompletionState.IN_PROGRESS;
+                }
                 ready = true;
+                rules = FlightRules.of(vehicle.state().family());
                 hold();
+                parameters = new LinkedHashMap<>();
+                rules.parameters().forEach(name -> parameters.put(name, watch(vehicle.parameter(name))));
             }
             if (!steps.run(now)) {
                 return steps.failure() != null ? fail(steps.failure()) : CompletionState.IN_PROGRESS;
             }
-            List<MissionItem> items;
+            if (!parameters.values().stream().allMatch(CompletableFuture::isDone)) {
+                waitFor("its parameters " + String.join(", ", parameters.keySet()));
+                return CompletionState.IN_PROGRESS;
+            }
+            Boarded boarded;
             try {
                 Position vehicleHome = vehicle.state().home();
                 var unsafe = HeightCheck.firstUnsafe(mission, mission.getHome() != null ? mission.getHome() : vehicleHome);
@@ -245,9 +265,21 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 if (wrongVehicle.isPresent()) {
                     return fail(wrongVehicle.get());
                 }
-                items = rules.onBoard(mission.items(vehicleHome), mission.underwater().orElse(null));
+                List<MissionItem> written = mission.items(vehicleHome);
+                Optional<String> wrongWay = wrongWay(written);
+                if (wrongWay.isPresent()) {
+                    return fail(wrongWay.get());
+                }
+                Map<String, OptionalDouble> values = new LinkedHashMap<>();
+                parameters.forEach((name, value) -> values.put(name, value.join()));
+                boarded = rules.onBoard(written, new Boarding(mission.underwater().orElse(null), mission::wayOf, values));
             } catch (RuntimeException e) {
-                return fail(e.getMessage());
+                return fail("vehicle " + vehicle.vehicleId() + " (" + vehicle.state().family() + ") cannot fly the mission: "
+                        + e.getMessage());
+            }
+            List<MissionItem> items = boarded.items();
+            for (int seq : boarded.added()) {
+                progress("item " + seq + " added: " + items.get(seq).commandName() + ", the approach to the landing after it");
             }
             for (MissionItem item : items) {
                 var why = rules.cannotFly(item);
@@ -256,7 +288,12 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                             + vehicle.vehicleId() + " (" + vehicle.state().family() + "): " + why.get());
                 }
             }
-            TreeMap<Integer, List<DroneCommand>> keyed = new TreeMap<>(mission.nonMissionCommands());
+            TreeMap<Integer, List<DroneCommand>> keyed = new TreeMap<>();
+            mission.nonMissionCommands().forEach((seq, commands) -> keyed.put(boarded.seqOf(seq), commands));
+            if (!boarded.added().isEmpty() && keyed.values().stream().flatMap(List::stream).anyMatch(c -> c instanceof JumpToItem)) {
+                return fail("the mission jumps, and an approach waypoint was added before its landing: write the approach"
+                        + " waypoint in the mission (docs/vtol.md)");
+            }
             List<DroneCommand> beforeUpload = keyed.remove(0);
             if (beforeUpload != null) {
                 beforeUpload.forEach(MissionExecutor.this::send);
@@ -278,6 +315,15 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             return CompletionState.IN_PROGRESS;
         }
 
+        /**
+         * An ArduPlane that has sent no EXTENDED_SYS_STATE yet (landed state undefined) may be a QuadPlane:
+         * it is given {@link #VTOL_STATE_WAIT} from the start for one, which the runtime asks for at discovery.
+         */
+        private boolean vtolStateUnheard(VehicleState s, long now) {
+            return s.family() == VehicleFamily.PLANE && s.landedState() == MAV_LANDED_STATE.MAV_LANDED_STATE_UNDEFINED
+                    && now - since < VTOL_STATE_WAIT.toNanos();
+        }
+
         private void hold() {
             VehicleState s = vehicle.state();
             if (s.armed() && isMode(s, "AUTO")) {
@@ -291,6 +337,18 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                         (float) h.latitudeDegrees(), (float) h.longitudeDegrees(), (float) h.hae()),
                         st -> st.home() != null && st.home().distanceTo(h) < 1, true));
             }
+        }
+
+        /** A take-off or landing the script says to fly in a way the vehicle does not (a plane that is no VTOL, vertically). */
+        private Optional<String> wrongWay(List<MissionItem> items) {
+            for (MissionItem item : items) {
+                FlightWay way = mission.wayOf(item.seq());
+                if (!rules.flightWays().contains(way)) {
+                    return Optional.of("item " + item.seq() + " (" + item.commandName() + ") is to be flown " + way + ", which vehicle "
+                            + vehicle.vehicleId() + " (" + vehicle.state().family() + ") does not do");
+                }
+            }
+            return Optional.empty();
         }
 
         /**
@@ -426,10 +484,14 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         enter(lists.isEmpty() ? new Arming(plan) : new Uploading(lists, plan));
     }
 
-    /** In the family's arming mode, if it has one, then arm; arming is retried until the deadline. */
+    /**
+     * The family's commands before arming (a helicopter's interlock off; the first item current for one
+     * armed in AUTO), its arming mode if it has one, then arm; arming is retried until the deadline.
+     */
     private final class Arming extends Stage {
         private final Plan plan;
         private final CommandSteps commands = commandSteps(what -> { });
+        private final CommandSteps before = commandSteps(what -> { });
         private boolean armModeSet;
         private CompletableFuture<CommandResult> pending;
         private long nextAttempt;
@@ -438,6 +500,10 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             super(FlightState.ARM, config.arm());
             this.plan = plan;
             nextAttempt = clock().nanoTime();
+            if (rules.setsFirstItemBeforeArming()) {
+                before.add(firstItemCurrent());
+            }
+            rules.beforeArming().forEach(c -> before.add(familyStep(c)));
         }
 
         @Override
@@ -447,6 +513,9 @@ public final class MissionExecutor extends PlatformTaskExecutor {
 
         @Override
         CompletionState step(long now) {
+            if (!before.run(now)) {
+                return before.failure() != null ? fail(before.failure()) : CompletionState.IN_PROGRESS;
+            }
             var armMode = rules.armMode();
             if (armMode.isPresent() && !armModeSet) {
                 String mode = armMode.get();
@@ -525,15 +594,17 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 steps.add(new CommandSteps.Step("MAV_CMD_DO_FENCE_ENABLE 1", () -> vehicle.command(
                         MAV_CMD.MAV_CMD_DO_FENCE_ENABLE, 1, 0), st -> false));
             }
-            steps.add(new CommandSteps.Step("MAV_CMD_DO_SET_MISSION_CURRENT 1", () -> vehicle.command(
-                    MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT, 1, 1), st -> st.missionSeq() == 1));
+            rules.afterArming().forEach(c -> steps.add(familyStep(c)));
+            if (!rules.setsFirstItemBeforeArming()) {
+                steps.add(firstItemCurrent());
+            }
             steps.add(new CommandSteps.Step("AUTO", () -> {
                 refusals.begin();
                 if (autoAsked < 0) {
                     autoAsked = clock().nanoTime();
                 }
                 return setMode("AUTO");
-            }, st -> isMode(st, "AUTO")));
+            }, st -> isMode(st, "AUTO"), rules.autoWaitsAfterArming()));
             if (rules.needsMissionStart()) {
                 steps.add(new CommandSteps.Step("MAV_CMD_MISSION_START", () -> vehicle.command(MAV_CMD.MAV_CMD_MISSION_START, 0, 0),
                         st -> st.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE));
@@ -619,6 +690,10 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             }
             if (verdict.done()) {
                 MissionExecutor.this.state = FlightState.DONE;
+                for (FlightRules.FamilyCommand c : rules.afterLanding()) {
+                    vehicle.command(c.command(), c.params());
+                    progress(c.what());
+                }
                 progress("done");
                 return CompletionState.DONE;
             }
@@ -736,6 +811,16 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             }
             return jumping;
         }
+    }
+
+    private CommandSteps.Step firstItemCurrent() {
+        return new CommandSteps.Step("MAV_CMD_DO_SET_MISSION_CURRENT 1", () -> vehicle.command(
+                MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT, 1, 1), st -> st.missionSeq() == 1);
+    }
+
+    /** A family's command, done once accepted: what it changes is not in the vehicle's telemetry. */
+    private CommandSteps.Step familyStep(FlightRules.FamilyCommand c) {
+        return new CommandSteps.Step(c.what(), () -> vehicle.command(c.command(), c.params()), st -> false);
     }
 
     private CommandSteps commandSteps(java.util.function.Consumer<String> waiting) {

@@ -10,6 +10,7 @@ import dolphin.mission.transfer.VehicleChannel;
 import dolphin.mission.transfer.TransferStatus;
 import java.util.List;
 import java.util.Optional;
+import java.util.OptionalDouble;
 import java.util.concurrent.CompletableFuture;
 
 /**
@@ -24,6 +25,9 @@ public interface MissionVehicle extends VehicleChannel {
 
     /** Sends a COMMAND_LONG; completes with its COMMAND_ACK, or NO_ACK after the last attempt. */
     CompletableFuture<CommandResult> command(int command, float... params);
+
+    /** Reads a parameter by name; completes empty when the vehicle did not answer (it has no such parameter). */
+    CompletableFuture<OptionalDouble> parameter(String name);
 
     CompletableFuture<TransferResult> upload(MissionType type, List<MissionItem> items);
 

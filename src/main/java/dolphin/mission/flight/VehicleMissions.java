@@ -21,6 +21,7 @@ import dolphin.mission.transfer.TransferResult;
 import dolphin.mission.transfer.TransferStatus;
 import java.util.List;
 import java.util.Optional;
+import java.util.OptionalDouble;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
@@ -115,6 +116,11 @@ public final class VehicleMissions implements MissionVehicle {
     @Override
     public CompletableFuture<CommandResult> command(int command, float... params) {
         return node.communications().command(node, command, params);
+    }
+
+    @Override
+    public CompletableFuture<OptionalDouble> parameter(String name) {
+        return node.communications().parameter(node, name);
     }
 
     @Override

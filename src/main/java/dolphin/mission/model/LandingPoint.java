@@ -14,11 +14,22 @@ public final class LandingPoint extends MissionPoint {
 
     private final float yaw;
     private final int landMode;
+    private final FlightWay way;
 
     public LandingPoint(String word, Position target, float yaw, int landMode) {
+        this(word, target, yaw, landMode, FlightWay.AS_THE_VEHICLE_DOES);
+    }
+
+    /** A landing the script says how to fly: the vehicle's rules turn it into the command that does (docs/vtol.md). */
+    public LandingPoint(String word, Position target, float yaw, int landMode, FlightWay way) {
         super(word, Objects.requireNonNull(target, "target"));
         this.yaw = yaw;
         this.landMode = landMode;
+        this.way = Objects.requireNonNull(way, "way");
+    }
+
+    public FlightWay way() {
+        return way;
     }
 
     public float yaw() {
@@ -36,6 +47,6 @@ public final class LandingPoint extends MissionPoint {
 
     @Override
     public String toString() {
-        return name() + " " + getPosition() + " yaw " + yaw + " mode " + landMode;
+        return name() + " " + getPosition() + " yaw " + yaw + " mode " + landMode + " " + way;
     }
 }

@@ -158,6 +158,24 @@ public final class Mission {
         return items;
     }
 
+    /**
+     * How the take-off or landing at item {@code seq} of {@link #items} is to be flown; AS_THE_VEHICLE_DOES
+     * for any other item, and for items read from a file, which say it by their command.
+     */
+    public FlightWay wayOf(int seq) {
+        int first = 1;
+        for (DroneCommand c : droneCommands) {
+            if (c instanceof MissionPoint p) {
+                int count = p.messageCount();
+                if (seq >= first && seq < first + count) {
+                    return p instanceof TakeOffPoint t ? t.way() : p instanceof LandingPoint l ? l.way() : FlightWay.AS_THE_VEHICLE_DOES;
+                }
+                first += count;
+            }
+        }
+        return FlightWay.AS_THE_VEHICLE_DOES;
+    }
+
     private Position placeholderHome(Position vehicleHome) {
         if (home != null) {
             return home;

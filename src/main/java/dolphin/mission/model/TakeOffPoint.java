@@ -16,11 +16,22 @@ public final class TakeOffPoint extends MissionPoint {
 
     private final float pitch;
     private final float yaw;
+    private final FlightWay way;
 
     public TakeOffPoint(String word, Position target, float pitch, float yaw) {
+        this(word, target, pitch, yaw, FlightWay.AS_THE_VEHICLE_DOES);
+    }
+
+    /** A take-off the script says how to fly: the vehicle's rules turn it into the command that does (docs/vtol.md). */
+    public TakeOffPoint(String word, Position target, float pitch, float yaw, FlightWay way) {
         super(word, Objects.requireNonNull(target, "target"));
         this.pitch = pitch;
         this.yaw = yaw;
+        this.way = Objects.requireNonNull(way, "way");
+    }
+
+    public FlightWay way() {
+        return way;
     }
 
     public float pitch() {
@@ -38,6 +49,6 @@ public final class TakeOffPoint extends MissionPoint {
 
     @Override
     public String toString() {
-        return name() + " " + getPosition() + " pitch " + pitch + " yaw " + yaw;
+        return name() + " " + getPosition() + " pitch " + pitch + " yaw " + yaw + " " + way;
     }
 }

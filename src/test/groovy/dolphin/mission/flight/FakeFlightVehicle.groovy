@@ -7,6 +7,7 @@ import com.MAVLink.common.msg_statustext
 import com.MAVLink.common.msg_mission_set_current
 import com.MAVLink.common.msg_sys_status
 import com.MAVLink.enums.MAV_CMD
+import com.MAVLink.enums.MAV_VTOL_STATE
 import com.MAVLink.enums.MAV_LANDED_STATE
 import com.MAVLink.enums.MAV_RESULT
 import com.MAVLink.enums.MAV_SEVERITY
@@ -134,7 +135,12 @@ class FakeFlightVehicle implements MissionVehicle {
         this.family = family
         this.node = new VehicleNode(id)
         this.state = VehicleState.initial(family)
-        heartbeat(false, family == VehicleFamily.COPTER ? 'STABILIZE' : 'MANUAL')
+        heartbeat(false, family.firmware() == VehicleFamily.COPTER ? 'STABILIZE' : 'MANUAL')
+        if (family.firmware() == VehicleFamily.PLANE) {
+            // ArduPlane's EXTENDED_SYS_STATE, which the executor awaits to tell a QuadPlane
+            state = state.withExtendedState(MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND, family == VehicleFamily.VTOL
+                    ? MAV_VTOL_STATE.MAV_VTOL_STATE_MC : MAV_VTOL_STATE.MAV_VTOL_STATE_UNDEFINED)
+        }
     }
 
     static String seconds(double t) {
@@ -217,6 +223,16 @@ class FakeFlightVehicle implements MissionVehicle {
             accept(c)
         }
         c.answer
+    }
+
+    /** The vehicle's parameters by name; one not here is not answered (the read completes empty). */
+    Map<String, Double> parameters = [:]
+
+    @Override
+    CompletableFuture<OptionalDouble> parameter(String name) {
+        log << "${seconds(clock.seconds())} PARAM_REQUEST_READ ${name}".toString()
+        Double value = parameters[name]
+        CompletableFuture.completedFuture(value == null ? OptionalDouble.empty() : OptionalDouble.of(value))
     }
 
     @Override
@@ -319,6 +335,7 @@ class FakeFlightVehicle implements MissionVehicle {
             case MAV_CMD.MAV_CMD_DO_SET_HOME: return "DO_SET_HOME ${p[4]} ${p[5]} ${p[6]}"
             case MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT: return "DO_SET_MISSION_CURRENT ${p[0] as int}"
             case MAV_CMD.MAV_CMD_DO_FENCE_ENABLE: return "DO_FENCE_ENABLE ${p[0] as int}"
+            case MAV_CMD.MAV_CMD_DO_AUX_FUNCTION: return "DO_AUX_FUNCTION ${p[0] as int} ${p[1] as int}"
             default: return new CommandResult(command, 0, 0).commandName()
         }
     }
