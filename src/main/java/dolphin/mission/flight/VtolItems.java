@@ -21,7 +21,7 @@ import java.util.Optional;
  * <li>one said to be on a runway stays NAV_TAKEOFF or NAV_LAND, which a QuadPlane flies on its wings only
  *     if its Q_OPTIONS allow it (bit 1, bit 2: QuadPlane::is_vtol_takeoff, is_vtol_land); if not, the
  *     mission is refused before upload;</li>
- * <li>a landing right after a waypoint nearer than the vehicle's stopping distance from its landing
+ * <li>a landing whose navigation item before is a waypoint nearer than the vehicle's stopping distance from its landing
  *     airspeed gets an approach waypoint first, that distance out on the side the vehicle comes from, at
  *     the waypoint's height. ArduPlane refuses to arm with a landing under three quarters of that distance
  *     after a waypoint ("VTOL land too short": AP_Arming_Plane::mission_checks), and a shorter approach
@@ -99,10 +99,15 @@ final class VtolItems {
         return item;
     }
 
-    /** The approach waypoint a landing needs after the last item so far, if that is a waypoint too near. */
+    /**
+     * The approach waypoint a landing needs, if the navigation item before it is a waypoint too near:
+     * ArduPlane checks only a waypoint stored right before the landing, but a DO item between them
+     * does not give the vehicle more room to slow down (on SITL it overshot and climbed back).
+     */
     private Optional<MissionItem> approach(List<MissionItem> before, MissionItem landing) {
-        MissionItem last = before.get(before.size() - 1);
-        if (before.size() < 2 || last.command() != MAV_CMD.MAV_CMD_NAV_WAYPOINT) {
+        int lastNav = MissionEnd.lastNavigation(before);
+        MissionItem last = before.get(lastNav);
+        if (lastNav == 0 || last.command() != MAV_CMD.MAV_CMD_NAV_WAYPOINT) {
             return Optional.empty();
         }
         double needed = stoppingDistance();

@@ -16,6 +16,7 @@ class FlightRulesSpec extends Specification {
         rules.needsMissionStart() == start
         rules.holdMode() == hold
         family.modeNumber(hold).present || family == VehicleFamily.OTHER
+        family.modeNumber(rules.cutShortMode()).present || family == VehicleFamily.OTHER || family == VehicleFamily.SUB
         rules.landsAfter(MAV_CMD.MAV_CMD_NAV_LAND) == land
         rules.landsAfter(MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH) == rtl
         !rules.landsAfter(MAV_CMD.MAV_CMD_NAV_WAYPOINT)
@@ -23,7 +24,9 @@ class FlightRulesSpec extends Specification {
         where:
         family               || armMode    | start | hold     | land  | rtl
         VehicleFamily.COPTER || 'GUIDED'   | true  | 'LOITER' | true  | true
+        VehicleFamily.HELI   || 'GUIDED'   | true  | 'LOITER' | true  | true
         VehicleFamily.PLANE  || 'its mode' | false | 'LOITER' | true  | false
+        VehicleFamily.VTOL   || 'AUTO'     | false | 'LOITER' | true  | false
         VehicleFamily.ROVER  || 'its mode' | false | 'HOLD'   | false | false
         VehicleFamily.OTHER  || 'its mode' | false | 'HOLD'   | false | false
     }

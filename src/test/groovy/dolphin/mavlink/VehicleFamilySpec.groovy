@@ -1,0 +1,51 @@
+package dolphin.mavlink
+
+import com.MAVLink.enums.MAV_AUTOPILOT
+import com.MAVLink.enums.MAV_TYPE
+import com.MAVLink.enums.MAV_VTOL_STATE
+import spock.lang.Specification
+
+/** Which family a heartbeat and an EXTENDED_SYS_STATE make a vehicle (docs/vtol.md, "Telling a QuadPlane"). */
+class VehicleFamilySpec extends Specification {
+
+    def "MAV_TYPE #type of ArduPilot is #family, running #firmware's firmware"() {
+        expect:
+        VehicleFamily.of(type, MAV_AUTOPILOT.MAV_AUTOPILOT_ARDUPILOTMEGA) == family
+        family.firmware() == firmware
+
+        where:
+        type                               || family               | firmware
+        MAV_TYPE.MAV_TYPE_QUADROTOR        || VehicleFamily.COPTER | VehicleFamily.COPTER
+        MAV_TYPE.MAV_TYPE_HELICOPTER       || VehicleFamily.HELI   | VehicleFamily.COPTER
+        MAV_TYPE.MAV_TYPE_FIXED_WING       || VehicleFamily.PLANE  | VehicleFamily.PLANE
+        MAV_TYPE.MAV_TYPE_VTOL_QUADROTOR   || VehicleFamily.VTOL   | VehicleFamily.PLANE
+        MAV_TYPE.MAV_TYPE_VTOL_TILTROTOR   || VehicleFamily.VTOL   | VehicleFamily.PLANE
+        MAV_TYPE.MAV_TYPE_SUBMARINE        || VehicleFamily.SUB    | VehicleFamily.SUB
+    }
+
+    def "a VTOL heartbeat of another autopilot is OTHER"() {
+        expect:
+        VehicleFamily.of(MAV_TYPE.MAV_TYPE_VTOL_QUADROTOR, MAV_AUTOPILOT.MAV_AUTOPILOT_PX4) == VehicleFamily.OTHER
+    }
+
+    def "an ArduPlane whose VTOL state is #vtolState is #family; no other family changes with it"() {
+        expect:
+        VehicleFamily.PLANE.withVtolState(vtolState) == family
+        VehicleFamily.COPTER.withVtolState(vtolState) == VehicleFamily.COPTER
+        VehicleFamily.VTOL.withVtolState(vtolState) == VehicleFamily.VTOL
+
+        where:
+        vtolState                                     || family
+        MAV_VTOL_STATE.MAV_VTOL_STATE_UNDEFINED       || VehicleFamily.PLANE
+        MAV_VTOL_STATE.MAV_VTOL_STATE_MC              || VehicleFamily.VTOL
+        MAV_VTOL_STATE.MAV_VTOL_STATE_FW              || VehicleFamily.VTOL
+        MAV_VTOL_STATE.MAV_VTOL_STATE_TRANSITION_TO_FW || VehicleFamily.VTOL
+    }
+
+    def "a VTOL and a helicopter have their firmware's modes"() {
+        expect:
+        VehicleFamily.VTOL.modeNumber('QRTL').asLong == 21
+        VehicleFamily.VTOL.modes() == VehicleFamily.PLANE.modes()
+        VehicleFamily.HELI.modes() == VehicleFamily.COPTER.modes()
+    }
+}
