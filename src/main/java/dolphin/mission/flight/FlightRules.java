@@ -2,6 +2,7 @@ package dolphin.mission.flight;
 
 import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_FRAME;
+import com.MAVLink.enums.MAV_MODE_FLAG;
 import dolphin.mavlink.VehicleFamily;
 import dolphin.mission.model.FlightWay;
 import dolphin.mission.model.MissionItem;
@@ -285,11 +286,22 @@ public interface FlightRules {
                 return "QRTL";
             }
 
+            /** Landed in AUTO, ArduPlane refuses to arm ("In landing sequence") until it leaves AUTO or gets a new mission. */
+            @Override
+            public List<FamilyCommand> afterLanding() {
+                return List.of(LANDING_SEQUENCE_ENDED);
+            }
+
             @Override
             public boolean landsAfter(int command) {
                 return command == MAV_CMD.MAV_CMD_NAV_LAND || command == MAV_CMD.MAV_CMD_NAV_VTOL_LAND;
             }
         };
+
+        /** QLOITER, which ends a landed mission's landing sequence (Plane::set_mode) and holds the vehicle if armed by hand. */
+        private static final FamilyCommand LANDING_SEQUENCE_ENDED = new FamilyCommand("QLOITER, which ends ArduPlane's landing"
+                + " sequence", MAV_CMD.MAV_CMD_DO_SET_MODE, MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED,
+                VehicleFamily.VTOL.modeNumber("QLOITER").orElseThrow());
 
         @Override
         public Set<FlightWay> flightWays() {

@@ -8,7 +8,6 @@ import dolphin.mission.model.MissionItem;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.Optional;
 
 /**
  * A QuadPlane's mission as ArduPlane must receive it (docs/vtol.md, "Take-off and landing"):
@@ -21,11 +20,10 @@ import java.util.Optional;
  * <li>one said to be on a runway stays NAV_TAKEOFF or NAV_LAND, which a QuadPlane flies on its wings only
  *     if its Q_OPTIONS allow it (bit 1, bit 2: QuadPlane::is_vtol_takeoff, is_vtol_land); if not, the
  *     mission is refused before upload;</li>
- * <li>a landing whose navigation item before is a waypoint nearer than the vehicle's stopping distance from its landing
- *     airspeed gets an approach waypoint first, that distance out on the side the vehicle comes from, at
- *     the waypoint's height. ArduPlane refuses to arm with a landing under three quarters of that distance
- *     after a waypoint ("VTOL land too short": AP_Arming_Plane::mission_checks), and a shorter approach
- *     overshoots and climbs back.</li>
+ * <li>a landing whose navigation item before is a waypoint too near for the vehicle to slow down from
+ *     its landing airspeed gets an approach leg first ({@link #approach}). ArduPlane refuses to arm with a
+ *     landing under three quarters of its stopping distance after a waypoint ("VTOL land too short":
+ *     AP_Arming_Plane::mission_checks), and a shorter approach overshoots and climbs back.</li>
  * </ul>
  */
 final class VtolItems {
@@ -34,7 +32,8 @@ final class VtolItems {
     static final String TECS_LAND_ARSPD = "TECS_LAND_ARSPD";
     static final String Q_TRANS_DECEL = "Q_TRANS_DECEL";
     static final String Q_OPTIONS = "Q_OPTIONS";
-    static final List<String> PARAMETERS = List.of(AIRSPEED_CRUISE, TECS_LAND_ARSPD, Q_TRANS_DECEL, Q_OPTIONS);
+    static final String WP_RADIUS = "WP_RADIUS";
+    static final List<String> PARAMETERS = List.of(AIRSPEED_CRUISE, TECS_LAND_ARSPD, Q_TRANS_DECEL, Q_OPTIONS, WP_RADIUS);
 
     private static final int ALLOW_FW_TAKEOFF = 1 << 1;
     private static final int ALLOW_FW_LAND = 1 << 2;
@@ -61,10 +60,10 @@ final class VtolItems {
                 default -> item;
             };
             if (landing(flown.command())) {
-                approach(out, flown).ifPresent(a -> {
+                for (MissionItem a : approach(out, flown)) {
                     added.add(out.size());
                     out.add(a.withSeq(out.size()));
-                });
+                }
             }
             out.add(flown.withSeq(out.size()));
         }
@@ -100,27 +99,35 @@ final class VtolItems {
     }
 
     /**
-     * The approach waypoint a landing needs, if the navigation item before it is a waypoint too near:
-     * ArduPlane checks only a waypoint stored right before the landing, but a DO item between them
-     * does not give the vehicle more room to slow down (on SITL it overshot and climbed back).
+     * The approach a landing needs when the navigation item before it is a waypoint nearer than the
+     * stopping distance plus WP_RADIUS: ArduPlane counts a waypoint reached up to WP_RADIUS before it,
+     * so it may start its landing that much nearer, and heading away. The approach is a leg straight
+     * to the landing: its far waypoint three WP_RADIUS beyond the near one, so that the vehicle turns
+     * towards the near one before it reaches it; the near one the stopping distance out. Both are on
+     * the side the vehicle comes from, at the waypoint's height. A DO item between the waypoint and
+     * the landing does not give the vehicle more room (ArduPlane's check looks only at a waypoint
+     * stored right before the landing; on SITL such a landing overshot and climbed back).
      */
-    private Optional<MissionItem> approach(List<MissionItem> before, MissionItem landing) {
+    private List<MissionItem> approach(List<MissionItem> before, MissionItem landing) {
         int lastNav = MissionEnd.lastNavigation(before);
         MissionItem last = before.get(lastNav);
         if (lastNav == 0 || last.command() != MAV_CMD.MAV_CMD_NAV_WAYPOINT) {
-            return Optional.empty();
+            return List.of();
         }
-        double needed = stoppingDistance();
+        double stopping = stoppingDistance();
+        double radius = boarding.parameter(WP_RADIUS).orElseThrow(() -> missing(WP_RADIUS));
         Position land = landing.position();
-        double distance = land.horizontalDistanceTo(last.position());
-        if (distance >= needed) {
-            return Optional.empty();
+        if (land.horizontalDistanceTo(last.position()) >= stopping + radius) {
+            return List.of();
         }
         double[] from = direction(before, land);
-        Position at = land.displace(from[0] * needed, from[1] * needed, 0);
-        return Optional.of(new MissionItem(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, last.frame(), 0, last.param2(),
-                last.param3(), last.param4(), MissionItem.degE7(at.latitudeDegrees()), MissionItem.degE7(at.longitudeDegrees()),
-                last.z(), true));
+        return List.of(approachPoint(last, land, from, stopping + 3 * radius), approachPoint(last, land, from, stopping));
+    }
+
+    private static MissionItem approachPoint(MissionItem last, Position land, double[] from, double distance) {
+        Position at = land.displace(from[0] * distance, from[1] * distance, 0);
+        return new MissionItem(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, last.frame(), 0, last.param2(), last.param3(), last.param4(),
+                MissionItem.degE7(at.latitudeDegrees()), MissionItem.degE7(at.longitudeDegrees()), last.z(), true);
     }
 
     /**

@@ -21,7 +21,8 @@ import static dolphin.mission.flight.FakeFlightVehicle.HOME
 class VtolFlightSpec extends MissionFlights {
 
     /** ArduPlane SITL's quadplane.parm: 25 m/s cruise, 2 m/s² deceleration, so a 156 m stopping distance. */
-    static final Map<String, Double> QUADPLANE = [AIRSPEED_CRUISE: 25d, TECS_LAND_ARSPD: -1d, Q_TRANS_DECEL: 2d, Q_OPTIONS: 0d]
+    static final Map<String, Double> QUADPLANE = [AIRSPEED_CRUISE: 25d, TECS_LAND_ARSPD: -1d, Q_TRANS_DECEL: 2d, Q_OPTIONS: 0d,
+                                                  WP_RADIUS: 90d]
 
     FakeFlightVehicle quadplane() {
         vehicle = new FakeFlightVehicle(clock, '1', VehicleFamily.VTOL)
@@ -48,7 +49,7 @@ class VtolFlightSpec extends MissionFlights {
         }
     }
 
-    def "a QuadPlane's take-off and landing go vertical; the landing 60 m after a waypoint gets an approach waypoint 156 m out"() {
+    def "a QuadPlane's take-off and landing go vertical; the landing 60 m after a waypoint gets an approach leg, 426 m to 156 m out"() {
         given:
         quadplane()
 
@@ -61,24 +62,26 @@ class VtolFlightSpec extends MissionFlights {
         vehicle.log.findAll { it.contains('PARAM_REQUEST_READ') }*.substring(4) ==
                 QUADPLANE.keySet().collect { 'PARAM_REQUEST_READ ' + it }
         items*.command() == [MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_CMD.MAV_CMD_NAV_VTOL_TAKEOFF, MAV_CMD.MAV_CMD_NAV_WAYPOINT,
-                             MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_CMD.MAV_CMD_NAV_VTOL_LAND]
-        items*.seq() == 0..5
+                             MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_CMD.MAV_CMD_NAV_WAYPOINT,
+                             MAV_CMD.MAV_CMD_NAV_VTOL_LAND]
+        items*.seq() == 0..6
         items[1].frame() == MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT
         items[1].z() == 30f
 
-        and: 'the approach: on the side it comes from, at the waypoint height, the whole stopping distance out'
-        Math.abs(HOME.horizontalDistanceTo(items[4].position()) - 156.25) < 0.5
-        HOME.displacementTo(items[4].position())[0] > 156
-        items[4].z() == items[3].z()
-        items[5].param1() == 0f
-        HOME.horizontalDistanceTo(items[5].position()) < 0.01
-        messages.contains(said('survey', ['item 4 added: NAV_WAYPOINT, the approach to the landing after it'])[0])
+        and: 'the approach: on the side it comes from, at the waypoint height, from the stopping distance plus three WP_RADIUS to the stopping distance'
+        Math.abs(HOME.horizontalDistanceTo(items[4].position()) - 426.25) < 0.5
+        Math.abs(HOME.horizontalDistanceTo(items[5].position()) - 156.25) < 0.5
+        [4, 5].every { HOME.displacementTo(items[it].position())[0] > 156 && items[it].z() == items[3].z() }
+        items[6].param1() == 0f
+        HOME.horizontalDistanceTo(items[6].position()) < 0.01
+        messages.containsAll(said('survey', ['item 4 added: NAV_WAYPOINT, the approach to the landing after it',
+                                             'item 5 added: NAV_WAYPOINT, the approach to the landing after it']))
 
         and: 'armed in AUTO with its first item current, which starts it; no MISSION_START'
         flightCommands() == ['DO_SET_MISSION_CURRENT 1', 'DO_SET_MODE AUTO', 'ARM', 'DO_SET_MODE AUTO']
     }
 
-    def "a landing as far from its waypoint as the stopping distance, or after an item that is no waypoint, is kept as written"() {
+    def "a landing as far from its waypoint as the stopping distance and WP_RADIUS, or after an item that is no waypoint, is kept as written"() {
         given:
         quadplane()
 
@@ -90,7 +93,7 @@ class VtolFlightSpec extends MissionFlights {
         vehicle.stored[MissionType.MISSION]*.command() == commands
 
         where:
-        task << [survey(157), MissionDsl.mission {
+        task << [survey(247), MissionDsl.mission {
             name 'hover'
             home 40.444233, -7.375234, 820
             takeOff HOME.atHeight(850)
@@ -99,7 +102,7 @@ class VtolFlightSpec extends MissionFlights {
         commands << [[16, 84, 16, 16, 85], [16, 84, 85]]
     }
 
-    def "a QuadPlane is DONE when, its landing current, it is on the ground and disarmed, still in AUTO"() {
+    def "a QuadPlane is DONE when, its landing current, it is on the ground and disarmed, still in AUTO; then it leaves AUTO"() {
         given:
         quadplane()
         launch(survey(400))
@@ -115,10 +118,10 @@ class VtolFlightSpec extends MissionFlights {
         vehicle.landAndDisarm()
         def end = runTo(21)
 
-        then:
+        then: 'then QLOITER ends the landing sequence of ArduPlane, which would keep it from arming'
         landing == CompletionState.IN_PROGRESS
         end == CompletionState.DONE
-        vehicle.state.modeName() == 'AUTO'
+        vehicle.commands*.text.last() == 'DO_SET_MODE QLOITER'
     }
 
     def "a QuadPlane cut short lands vertically at home: QRTL"() {
