@@ -51,7 +51,7 @@ class CheckCommandSpec extends Specification {
         r.err.readLines() == [
                 "${script('first-try.dolphin')}:3:3: takeOff: expected (position[, pitch]), got (Integer); a position is pos { lat ...; lon ...; hae ... } or location(lat, lon, hae)",
                 "${script('first-try.dolphin')}:4:3: unknown command 'mvoe' in mission { }; did you mean 'move'?",
-                "${script('first-try.dolphin')}:5:3: unknown command 'land' in mission { }; did you mean 'landingPoint' or 'returnHomeAndLand'?",
+                "${script('first-try.dolphin')}:5:3: unknown command 'land' in mission { }; did you mean 'landOnRunway' or 'landingPoint' or 'landVertically'?",
                 "${script('first-try.dolphin')}:7:23: unknown command 'batery'; did you mean 'battery'?"]*.toString()
     }
 

@@ -41,7 +41,7 @@ class CodeActionSpec extends Specification {
 
         then:
         d*.message*.getLeft() == ["unknown command 'mvoe' in mission { }; did you mean 'move'?",
-                                  "unknown command 'land' in mission { }; did you mean 'landingPoint' or 'returnHomeAndLand'?"]
+                                  "unknown command 'land' in mission { }; did you mean 'landOnRunway' or 'landingPoint' or 'landVertically'?"]
         shown.size() == 1
         with(shown[0]) {
             title == "Change 'mvoe' to 'move'"
@@ -51,7 +51,8 @@ class CodeActionSpec extends Specification {
             isPreferred
         }
         inRange == shown
-        both*.title == ["Change 'mvoe' to 'move'", "Change 'land' to 'landingPoint'", "Change 'land' to 'returnHomeAndLand'"]
+        both*.title == ["Change 'mvoe' to 'move'", "Change 'land' to 'landOnRunway'", "Change 'land' to 'landingPoint'",
+                         "Change 'land' to 'landVertically'"]
         !both[1].isPreferred
     }
 

@@ -23,7 +23,7 @@ import static dolphin.testing.ScriptLines.vehicleOf
 
 /**
  * Dolphin against two QuadPlanes: ArduPlane SITL's `quadplane` model with ArduPilot's quadplane.parm
- * (or ARDUPILOT_SITL_VTOL_DEFAULTS), system ids 31 and 32, instances 5 and 6, started with the first
+ * (or ARDUPILOT_SITL_VTOL_DEFAULTS) and a battery monitor, system ids 31 and 32, instances 5 and 6, started with the first
  * script (docs/vtol.md). Runs only when ARDUPILOT_SITL_PLANE_BIN names an arduplane binary.
  */
 @Requires({ env.ARDUPILOT_SITL_PLANE_BIN })
@@ -43,8 +43,9 @@ class SitlVtolSpec extends Specification {
     def setupSpec() {
         sitl = new SitlHarness()
         [31, 32].eachWithIndex { sysid, i ->
+            // quadplane.parm has no battery monitor, which the scenario's battery() reads: SITL's simulated one
             sitl.start('ARDUPILOT_SITL_PLANE_BIN', 'ARDUPILOT_SITL_VTOL_DEFAULTS', 'quadplane.parm', 'quadplane', sysid, 5 + i,
-                    HOME.displace(0, 10 * i, 0))
+                    HOME.displace(0, 10 * i, 0), ['BATT_MONITOR 4'])
         }
     }
 

@@ -80,8 +80,12 @@ public interface FlightRules {
         return Optional.empty();
     }
 
-    /** Sent before arming, each until accepted. */
-    default List<FamilyCommand> beforeArming() {
+    /**
+     * Sent to a disarmed vehicle before it is judged ready, each until accepted: what its pre-arm
+     * checks need that only the ground station gives (a helicopter's motor interlock off). Never to
+     * an armed one: a helicopter's interlock off in flight is autorotation.
+     */
+    default List<FamilyCommand> onTheGround() {
         return List.of();
     }
 
@@ -188,7 +192,7 @@ public interface FlightRules {
         }
 
         @Override
-        public List<FamilyCommand> beforeArming() {
+        public List<FamilyCommand> onTheGround() {
             return interlock ? List.of(INTERLOCK_OFF) : List.of();
         }
 

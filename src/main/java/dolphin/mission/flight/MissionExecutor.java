@@ -217,6 +217,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     private final class Preparing extends Stage {
         private final long since;
         private final CommandSteps steps;
+        /** The family's commands to a disarmed vehicle before it can pass its pre-arm checks. */
+        private final CommandSteps grounded;
         private boolean ready;
         /** The vehicle's parameters its family needs, once asked; each read completes empty when unanswered. */
         private Map<String, CompletableFuture<OptionalDouble>> parameters;
@@ -227,10 +229,17 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             super(FlightState.PREPARE, config.prepare());
             since = now;
             steps = commandSteps(this::waitFor);
+            grounded = commandSteps(this::waitFor);
+            if (!vehicle.state().armed()) {
+                rules.onTheGround().forEach(c -> grounded.add(familyStep(c)));
+            }
         }
 
         @Override
         CompletionState step(long now) {
+            if (!grounded.run(now)) {
+                return grounded.failure() != null ? fail(grounded.failure()) : CompletionState.IN_PROGRESS;
+            }
             if (!ready) {
                 var missing = Readiness.missing(vehicle.state(), mission.getHome() == null);
                 if (missing.isPresent()) {
@@ -485,8 +494,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     }
 
     /**
-     * The family's commands before arming (a helicopter's interlock off; the first item current for one
-     * armed in AUTO), its arming mode if it has one, then arm; arming is retried until the deadline.
+     * The first item current for a family armed in AUTO, its arming mode if it has one, then arm;
+     * arming is retried until the deadline.
      */
     private final class Arming extends Stage {
         private final Plan plan;
@@ -503,7 +512,6 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             if (rules.setsFirstItemBeforeArming()) {
                 before.add(firstItemCurrent());
             }
-            rules.beforeArming().forEach(c -> before.add(familyStep(c)));
         }
 
         @Override

@@ -271,7 +271,7 @@ class MissionScriptSpec extends Specification {
         !variable('m1').executor.is(variable('m1').executor)
     }
 
-    def "every command of C.6 rows 1 to 30, allowBelowHome, fence, rally, the underwater and the mapping words, the flight limits, is a builder method, has its forms for errors and is documented"() {
+    def "every command of C.6 rows 1 to 30, allowBelowHome, fence, rally, the underwater and the mapping words, the flight limits, the vertical and runway words, is a builder method, has its forms for errors and is documented"() {
         given:
         Set<String> methods = MissionBuilder.declaredMethods
                 .findAll { Modifier.isPublic(it.modifiers) && !it.synthetic && !it.name.startsWith('\$') }*.name
@@ -286,7 +286,8 @@ class MissionScriptSpec extends Specification {
                     'returnHomeAndLoiter', 'returnHomeAndLand', 'speed', 'altitude', 'delay', 'surveyArea', 'capturePhoto',
                     'captureSeveralPhotos', 'captureUntilStop', 'stopCapturing', 'jumpToItem', 'allowBelowHome', 'fence',
                     'rally', 'maxDepth', 'dive', 'surface', 'survey', 'corridorScan', 'structureScan', 'stallLimit',
-                    'takeoverTimeout'].toSet()
+                    'takeoverTimeout', 'takeOffVertically', 'takeOffOnRunway', 'landVertically', 'landOnRunway',
+                    'returnHomeAndLandVertically', 'returnHomeAndLandOnRunway'].toSet()
         methods.every { doc.contains("`${it}(") || doc.contains("`${it} {") }
     }
 
@@ -361,7 +362,7 @@ class MissionScriptSpec extends Specification {
         'jump past the end'           | "m = mission {\n  goPos 41, -8, 100\n  jumpToItem 2 // <<\n}"                                   || "jumpToItem: there is no item 2: mission 'MissionPlan_line1' has items 0 to 1 (0 is home)"
         'jump negative'               | "m = mission {\n  goPos 41, -8, 100\n  jumpToItem(-1) // <<\n}"                                 || "jumpToItem: the item must not be negative, got -1"
         'jump repetitions'            | "m = mission {\n  goPos 41, -8, 100\n  jumpToItem 1, 0 // <<\n}"                                || "jumpToItem: the number of repetitions must be at least 1, got 0"
-        'typo'                        | "m = mission {\n  takeoff location(41, -8, 100) // <<\n}"                                        || "unknown mission command 'takeoff'; did you mean 'takeOff' or 'takeOffWithYaw'?"
+        'typo'                        | "m = mission {\n  takeoff location(41, -8, 100) // <<\n}"                                        || "unknown mission command 'takeoff'; did you mean 'takeOff' or 'takeOffWithYaw' or 'takeOffOnRunway'?"
         'command without ()'          | "m = mission {\n  home 41, -8\n  returnHome // <<\n}"                                           || "'returnHome' is a command of mission { }, but Groovy read it as a variable here: write it with its arguments, as in returnHome()"
         'mission move outside'        | "move 100, 200 // <<"                                                                            || "move: expected (position, { north n; east e; down d }) or (position, moveDistance { ... }), got (Integer, Integer); move(north, east[, up]) is a mission command, for use inside mission { }"
         'pos latitude'                | "p = pos { lat 95 } // <<"                                                                       || "pos: the latitude must be between -90 and 90 degrees, got 95"

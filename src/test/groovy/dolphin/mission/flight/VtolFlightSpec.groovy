@@ -266,4 +266,22 @@ class VtolFlightSpec extends MissionFlights {
         vehicle.commands*.text.last() == 'DO_AUX_FUNCTION 32 0'
         messages.takeRight(2) == said(['motor interlock off (DO_AUX_FUNCTION 32 low)', 'done'])
     }
+
+    def "a helicopter already flying gets no interlock off (autorotation) when it takes a new mission"() {
+        given:
+        vehicle = new FakeFlightVehicle(clock, '1', VehicleFamily.HELI)
+        vehicle.ready()
+        vehicle.heartbeat(true, 'LOITER')
+        vehicle.landedState(MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR)
+        vehicle.autopilot = true
+
+        when:
+        launch(hop())
+        runTo(1)
+
+        then:
+        executor.state() == FlightState.RUNNING
+        vehicle.commands*.text == ['DO_SET_MODE GUIDED', 'ARM', 'DO_AUX_FUNCTION 32 2', 'DO_SET_MISSION_CURRENT 1', 'DO_SET_MODE AUTO',
+                                   'MISSION_START']
+    }
 }
