@@ -104,7 +104,8 @@ class SitlVtolSpec extends Specification {
 
         then:
         r.result.outcome() == ScriptResult.Outcome.COMPLETED
-        inOrder(r.lines, "mission vtol mapping on vehicle ${n}: item * added: NAV_WAYPOINT, the approach to the landing after it",
+        inOrder(r.lines, "mission vtol mapping on vehicle ${n}: item 39 added: NAV_WAYPOINT, the approach to the landing after it",
+                "mission vtol mapping on vehicle ${n}: item 40 added: NAV_WAYPOINT, the approach to the landing after it",
                 "mission vtol mapping on vehicle ${n}: armed", "mission vtol mapping on vehicle ${n}: done", 'mapping: DONE')
         node.home.distanceTo(node.position) < 15
         !node.armed

@@ -258,7 +258,14 @@ public interface FlightRules {
      * stays in AUTO; cut short it lands vertically at home (QRTL: RTL circles there with Q_RTL_MODE 0).
      */
     enum Plane implements FlightRules {
-        FIXED_WING,
+        FIXED_WING {
+            @Override
+            public Optional<String> cannotFly(MissionItem item) {
+                return item.command() == MAV_CMD.MAV_CMD_NAV_VTOL_TAKEOFF || item.command() == MAV_CMD.MAV_CMD_NAV_VTOL_LAND
+                        ? Optional.of("ArduPlane flies VTOL items only on a QuadPlane (Q_ENABLE, and rebooted since)")
+                        : Optional.empty();
+            }
+        },
         VTOL {
             @Override
             public Set<FlightWay> flightWays() {

@@ -57,6 +57,8 @@ final class VtolItems {
                         : vtolTakeoff(item, home);
                 case MAV_CMD.MAV_CMD_NAV_LAND -> way == FlightWay.RUNWAY ? allowed(item, ALLOW_FW_LAND, "landings")
                         : vtolLand(item);
+                // one read from a file: ArduPlane climbs its height whatever its frame, so a height above sea level goes above home
+                case MAV_CMD.MAV_CMD_NAV_VTOL_TAKEOFF -> vtolTakeoff(item, home);
                 default -> item;
             };
             if (landing(flown.command())) {

@@ -284,4 +284,30 @@ class VtolFlightSpec extends MissionFlights {
         vehicle.commands*.text == ['DO_SET_MODE GUIDED', 'ARM', 'DO_AUX_FUNCTION 32 2', 'DO_SET_MISSION_CURRENT 1', 'DO_SET_MODE AUTO',
                                    'MISSION_START']
     }
+
+    def "a VTOL take-off read from a file at a height above sea level is sent as its height above home; a plane refuses VTOL items"() {
+        given:
+        vehicle = family == VehicleFamily.VTOL ? quadplane() : new FakeFlightVehicle(clock, '1', family)
+        vehicle.ready()
+        vehicle.autopilot = true
+        def items = dolphin.mission.file.MissionFile.read('''QGC WPL 110
+0\t1\t0\t16\t0\t0\t0\t0\t40.444233\t-7.375234\t820\t1
+1\t0\t0\t84\t0\t0\t0\t0\t40.444233\t-7.375234\t850\t1
+2\t0\t3\t16\t0\t0\t0\t0\t40.448\t-7.375234\t40\t1
+3\t0\t3\t85\t0\t0\t0\t0\t40.444233\t-7.375234\t0\t1
+''').mission()
+
+        when:
+        launch(new MissionTask(dolphin.mission.model.RawItemPoint.mission('file', items)))
+        def end = runTo(1)
+
+        then:
+        family == VehicleFamily.VTOL ? vehicle.stored[MissionType.MISSION][1].z() == 30f && vehicle.stored[MissionType.MISSION][1].frame()
+                == MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT
+                : end.message.endsWith('item 1 (NAV_VTOL_TAKEOFF) cannot be flown by vehicle 1 (ArduPlane): ArduPlane flies VTOL items'
+                        + ' only on a QuadPlane (Q_ENABLE, and rebooted since)')
+
+        where:
+        family << [VehicleFamily.VTOL, VehicleFamily.PLANE]
+    }
 }
