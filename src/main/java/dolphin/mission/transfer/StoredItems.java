@@ -33,7 +33,7 @@ public final class StoredItems {
             MAV_CMD.MAV_CMD_NAV_LOITER_TURNS, MAV_CMD.MAV_CMD_NAV_LOITER_TIME, MAV_CMD.MAV_CMD_NAV_LAND,
             MAV_CMD.MAV_CMD_NAV_TAKEOFF, MAV_CMD.MAV_CMD_NAV_CONTINUE_AND_CHANGE_ALT, MAV_CMD.MAV_CMD_NAV_LOITER_TO_ALT,
             MAV_CMD.MAV_CMD_NAV_SPLINE_WAYPOINT, MAV_CMD.MAV_CMD_DO_SET_HOME, MAV_CMD.MAV_CMD_DO_SET_ROI,
-            MAV_CMD.MAV_CMD_DO_LAND_START);
+            MAV_CMD.MAV_CMD_DO_LAND_START, MAV_CMD.MAV_CMD_NAV_VTOL_TAKEOFF, MAV_CMD.MAV_CMD_NAV_VTOL_LAND);
 
     /** Item 0 of a vehicle whose home is not set. */
     private static final MissionItem UNSET_HOME = new MissionItem(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_FRAME.MAV_FRAME_GLOBAL,
@@ -133,6 +133,9 @@ public final class StoredItems {
                 p4 = (byte) (int) i.param4();
             }
             case MAV_CMD.MAV_CMD_CONDITION_DELAY, MAV_CMD.MAV_CMD_CONDITION_DISTANCE -> p1 = i.param1();
+            // a VTOL landing keeps its options (NAV_VTOL_LAND_OPTIONS), a transition its target state; a VTOL take-off nothing
+            case MAV_CMD.MAV_CMD_NAV_VTOL_LAND -> p1 = u16(i.param1());
+            case MAV_CMD.MAV_CMD_DO_VTOL_TRANSITION -> p1 = u8(i.param1());
             case MAV_CMD.MAV_CMD_CONDITION_YAW -> {
                 p1 = i.param1();
                 p2 = i.param2();
