@@ -18,9 +18,9 @@ import java.util.OptionalInt;
  * WP_RADIUS 55 m (or the item's param2), WP_LOITER_RAD 60 m; it arms in any mode and flies a
  * mission as soon as it is armed in AUTO; it holds by circling; at the end of its mission it
  * switches itself to RTL and circles home. Streams at 1 Hz from boot. Its landing is the copter's,
- * simplified.
+ * simplified. A QuadPlane is one too ({@link QuadPlaneFirmware}).
  */
-final class PlaneFirmware implements Firmware {
+class PlaneFirmware implements Firmware {
 
     private static final Performance PERFORMANCE = new Performance(20, 5, 3, 55, 60, 0, 20);
 
@@ -65,7 +65,7 @@ final class PlaneFirmware implements Firmware {
     }
 
     @Override
-    public Optional<String> armRefusal(int mode) {
+    public Optional<String> armRefusal(int mode, MissionView mission) {
         return Optional.empty();
     }
 
@@ -103,7 +103,7 @@ final class PlaneFirmware implements Firmware {
 
     @Override
     public double acceptanceRadius(MissionItem waypoint) {
-        return waypoint.param2() > 0 ? waypoint.param2() : PERFORMANCE.waypointRadius();
+        return waypoint.param2() > 0 ? waypoint.param2() : performance().waypointRadius();
     }
 
     /** Within the radius horizontally; the height is only flown towards. */
@@ -120,7 +120,7 @@ final class PlaneFirmware implements Firmware {
 
     @Override
     public Manoeuvre holdAt(Craft craft, Position at) {
-        return new Orbit(this, craft, at, PERFORMANCE.loiterRadius(), Double.POSITIVE_INFINITY);
+        return new Orbit(this, craft, at, performance().loiterRadius(), Double.POSITIVE_INFINITY);
     }
 
     @Override
