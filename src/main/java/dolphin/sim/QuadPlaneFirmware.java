@@ -17,7 +17,7 @@ import java.util.Set;
  * ArduPlane with Q_ENABLE 1 as SITL runs it with {@code --model quadplane} and quadplane.parm: a plane
  * (heartbeat MAV_TYPE_FIXED_WING, boots in MANUAL, 1 Hz streams) that cruises at AIRSPEED_CRUISE
  * 25 m/s, reaches waypoints within WP_RADIUS's default 90 m and takes off and lands on its lift
- * motors. NAV_TAKEOFF and NAV_VTOL_TAKEOFF climb straight up at Q_WP_SPEED_UP to their altitude above
+ * motors. NAV_TAKEOFF and NAV_VTOL_TAKEOFF climb straight up at Q_PILOT_SPD_UP to their altitude above
  * where it is, and are reached there; on the next leg it transitions ({@link VtolLift}). NAV_LAND and
  * NAV_VTOL_LAND (Q_OPTIONS 0: both are VTOL landings), QRTL and QLAND land vertically
  * ({@link VtolLanding}), then it disarms by itself; in AUTO its mission stays at the landing, ACTIVE.
@@ -29,7 +29,7 @@ import java.util.Set;
 final class QuadPlaneFirmware extends PlaneFirmware {
 
     private static final Performance PERFORMANCE = new Performance(25, 5, 3, 90, 60, 0, 25);
-    /** Q_WP_SPEED_UP: the vertical take-off's climb. */
+    /** Q_PILOT_SPD_UP: the vertical take-off's climb (QuadPlane::do_vtol_takeoff). */
     static final double VTOL_CLIMB = 2.5;
 
     static final List<FirmwareParam> PARAMS = List.of(

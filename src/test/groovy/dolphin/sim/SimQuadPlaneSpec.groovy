@@ -209,7 +209,7 @@ class SimQuadPlaneSpec extends Specification {
         flight > 100 && flight < 130
     }
 
-    def "the take-off climbs straight up at Q_WP_SPEED_UP to 30 m above where it stands and is reached there, before the transition"() {
+    def "the take-off climbs straight up at Q_PILOT_SPD_UP to 30 m above where it stands and is reached there, before the transition"() {
         given:
         def d = armedInAuto(good())
 
