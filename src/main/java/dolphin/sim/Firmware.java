@@ -58,6 +58,10 @@ interface Firmware {
         return MAV_RESULT.MAV_RESULT_UNSUPPORTED;
     }
 
+    /** Rebooted: what it keeps of its own goes back to how it boots (a helicopter's interlock follows its RC8 again). */
+    default void rebooted() {
+    }
+
     /** EXTENDED_SYS_STATE's vtol_state in {@code mode}; UNDEFINED but on a QuadPlane (GCS_MAVLINK_Plane::vtol_state). */
     default int vtolState(int mode, boolean onGround) {
         return MAV_VTOL_STATE.MAV_VTOL_STATE_UNDEFINED;

@@ -93,6 +93,13 @@ final class HeliFirmware extends CopterFirmware {
         return MAV_RESULT.MAV_RESULT_ACCEPTED;
     }
 
+    /** SITL's RC8 is read again at boot: MIDDLE, the interlock on, nothing run up. */
+    @Override
+    public void rebooted() {
+        interlock = true;
+        runupStart = -1;
+    }
+
     @Override
     public List<FirmwareParam> params() {
         return PARAMS;

@@ -633,7 +633,8 @@ public final class SimVehicle {
      * Reboots at clock time {@code now}, as ArduPilot after MAV_CMD_PREFLIGHT_REBOOT_SHUTDOWN: time
      * since boot from 0, its warm-up again, disarmed (motors stopped: a vehicle in the air comes
      * down, see {@link Reboot}) and in its boot mode, its requested streams forgotten, its mission
-     * stopped with no current item, no failsafe or internal error on, EKF3 on lane 0. What it stores
+     * stopped with no current item, no failsafe or internal error on, EKF3 on lane 0, what its
+     * firmware keeps as at boot (a helicopter's motor interlock on). What it stores
      * (mission, fence, rally points), its home, its battery and its GPS receiver's state stay.
      */
     private void reboot(long now) {
@@ -644,6 +645,7 @@ public final class SimVehicle {
         modeToAnnounce = false;
         nextHeartbeat = now;
         flight.rebooted();
+        firmware.rebooted();
         navigation.failsafe(false);
         navigation.primaryLane(0);
         internalErrors = false;

@@ -198,6 +198,23 @@ class SimHeliSpec extends Specification {
         d.setMode(COPTER_MODE.COPTER_MODE_AUTO).result == MAV_RESULT.MAV_RESULT_FAILED
     }
 
+    def "a reboot (--fault reboot) turns the interlock on again, as SITL's RC8 is read again: arming is refused until it is set LOW"() {
+        given: 'armed with the interlock LOW, rebooted 5 s later'
+        def d = new SimDriver(VehicleKind.HELI, SimOptions.DEFAULT.withFault(SimFault.parse('reboot@5')))
+        d.run(1)
+        interlock(d, LOW)
+        assert d.arm().result == MAV_RESULT.MAV_RESULT_ACCEPTED
+        d.run(6)
+        assert !d.vehicle.armed()
+        int from = d.mark()
+
+        expect:
+        d.arm().result == MAV_RESULT.MAV_RESULT_FAILED
+        d.texts(from) == ['Arm: Motor Interlock Enabled']
+        interlock(d, LOW) == MAV_RESULT.MAV_RESULT_ACCEPTED
+        d.arm().result == MAV_RESULT.MAV_RESULT_ACCEPTED
+    }
+
     def "DO_AUX_FUNCTION of another function, or a switch position past HIGH, is UNSUPPORTED; a multicopter supports none"() {
         expect:
         new SimDriver(kind).command(MAV_CMD.MAV_CMD_DO_AUX_FUNCTION, [function, position]).result == MAV_RESULT.MAV_RESULT_UNSUPPORTED
