@@ -1,6 +1,7 @@
 package dolphin.sim;
 
 import com.MAVLink.enums.MAV_LANDED_STATE;
+import com.MAVLink.enums.MAV_PARAM_TYPE;
 import com.MAVLink.enums.MAV_SEVERITY;
 import com.MAVLink.enums.MAV_STATE;
 import com.MAVLink.enums.MAV_TYPE;
@@ -8,6 +9,7 @@ import com.MAVLink.enums.PLANE_MODE;
 import dolphin.core.Position;
 import dolphin.mavlink.VehicleFamily;
 import dolphin.mission.model.MissionItem;
+import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.OptionalInt;
@@ -23,6 +25,7 @@ import java.util.OptionalInt;
 class PlaneFirmware implements Firmware {
 
     private static final Performance PERFORMANCE = new Performance(20, 5, 3, 55, 60, 0, 20);
+    private static final List<FirmwareParam> PARAMS = List.of(new FirmwareParam("Q_ENABLE", 0, MAV_PARAM_TYPE.MAV_PARAM_TYPE_INT8));
 
     @Override
     public int mavType() {
@@ -62,6 +65,15 @@ class PlaneFirmware implements Firmware {
     @Override
     public Performance performance() {
         return PERFORMANCE;
+    }
+
+    /**
+     * Q_ENABLE 0, which tells a plane from a QuadPlane; the other Q_ parameters, hidden while it is 0
+     * (AP_PARAM_FLAG_ENABLE), get no answer.
+     */
+    @Override
+    public List<FirmwareParam> params() {
+        return PARAMS;
     }
 
     @Override

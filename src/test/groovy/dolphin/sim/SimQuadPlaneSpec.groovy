@@ -169,6 +169,20 @@ class SimQuadPlaneSpec extends Specification {
         d.since(from, msg_param_value).collect { [it.getParam_Id(), it.param_index, it.param_value] } == [['AIRSPEED_CRUISE', 1, 25f]]
     }
 
+    def "a plane answers Q_ENABLE 0, and not the Q_ parameters it hides while Q_ENABLE is 0; a copter answers none"() {
+        given:
+        def plane = new SimDriver(VehicleKind.PLANE)
+        def copter = new SimDriver(VehicleKind.COPTER)
+
+        when:
+        ['Q_ENABLE', 'Q_TRANS_DECEL'].each { plane.handle(paramRead(it)); copter.handle(paramRead(it)) }
+
+        then:
+        plane.since(0, msg_param_value).collect { [it.getParam_Id(), it.param_value, it.param_type] } ==
+                [['Q_ENABLE', 0f, MAV_PARAM_TYPE.MAV_PARAM_TYPE_INT8 as short]]
+        copter.since(0, msg_param_value).empty
+    }
+
     def "the findings' mission: a vertical take-off, the transition, two waypoints as a plane, a VTOL landing at home; disarmed, it stays in AUTO at the landing, ACTIVE"() {
         given:
         def d = armedInAuto(good())
