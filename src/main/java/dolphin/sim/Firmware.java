@@ -58,6 +58,14 @@ interface Firmware {
         return MAV_RESULT.MAV_RESULT_UNSUPPORTED;
     }
 
+    /**
+     * Whether a change to {@code mode} while disarmed on the ground resets a mission that landed
+     * ("In landing sequence: mission reset", Plane::set_mode): ArduPlane's modes without auto navigation.
+     */
+    default boolean resetsLandedMissionIn(int mode) {
+        return false;
+    }
+
     /** Rebooted: what it keeps of its own goes back to how it boots (a helicopter's interlock follows its RC8 again). */
     default void rebooted() {
     }

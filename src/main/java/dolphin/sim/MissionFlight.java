@@ -174,10 +174,20 @@ final class MissionFlight {
         if (from == firmware.autoMode()) {
             cursor.stop();
         }
+        if (!body.armed() && body.craft().onGround() && atLanding() && firmware.resetsLandedMissionIn(to)) {
+            body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "In landing sequence: mission reset");
+            cursor.reset();
+        }
         if (to == firmware.autoMode()) {
             cursor.resume();
             body.craft().resetSpeed();
         }
+    }
+
+    /** The mission stands at a landing: AP_Mission's landing sequence, which its arming checks and Plane::set_mode look at. */
+    private boolean atLanding() {
+        int seq = cursor.nav();
+        return seq > 0 && seq < store.count() && firmware.fliesAs(store.get(seq).command()) == MAV_CMD.MAV_CMD_NAV_LAND;
     }
 
     /** MAV_CMD_MISSION_START: the copter's auto_armed; a mission not running starts or resumes. */

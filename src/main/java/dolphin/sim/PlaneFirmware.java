@@ -13,6 +13,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.OptionalInt;
+import java.util.Set;
 
 /**
  * ArduPlane as SITL runs it with plane.parm: 20 m/s cruise (at once: its acceleration is not
@@ -25,6 +26,10 @@ import java.util.OptionalInt;
 class PlaneFirmware implements Firmware {
 
     private static final Performance PERFORMANCE = new Performance(20, 5, 3, 55, 60, 0, 20);
+    /** ArduPlane's modes that navigate by themselves (Mode::does_auto_navigation), and AUTO. */
+    private static final Set<Integer> AUTO_NAVIGATION = Set.of(PLANE_MODE.PLANE_MODE_AUTO, PLANE_MODE.PLANE_MODE_GUIDED,
+            PLANE_MODE.PLANE_MODE_CIRCLE, PLANE_MODE.PLANE_MODE_LOITER, PLANE_MODE.PLANE_MODE_RTL, PLANE_MODE.PLANE_MODE_TAKEOFF,
+            PLANE_MODE.PLANE_MODE_THERMAL, PLANE_MODE.PLANE_MODE_AUTOLAND);
     private static final List<FirmwareParam> PARAMS = List.of(new FirmwareParam("Q_ENABLE", 0, MAV_PARAM_TYPE.MAV_PARAM_TYPE_INT8));
 
     @Override
@@ -74,6 +79,12 @@ class PlaneFirmware implements Firmware {
     @Override
     public List<FirmwareParam> params() {
         return PARAMS;
+    }
+
+    /** Every mode but those whose does_auto_navigation() is true, and AUTO. */
+    @Override
+    public boolean resetsLandedMissionIn(int mode) {
+        return !AUTO_NAVIGATION.contains(mode);
     }
 
     @Override

@@ -323,7 +323,7 @@ class SimQuadPlaneSpec extends Specification {
         PLANE_MODE.PLANE_MODE_QRTL  | good()                                                            || 'Arm: QRTL mode not armable'
     }
 
-    def "landed at the end of its mission, it refuses to arm again in AUTO ('In landing sequence'); in MANUAL, where the mission stopped, it arms"() {
+    def "landed at the end of its mission, it refuses to arm again in AUTO ('In landing sequence'); a change to MANUAL resets the mission, and it arms"() {
         given:
         def d = armedInAuto(good())
         d.runUntil(200, 'the disarm') { !d.vehicle.armed() }
@@ -332,12 +332,35 @@ class SimQuadPlaneSpec extends Specification {
         when:
         def inAuto = d.arm()
         d.setMode(PLANE_MODE.PLANE_MODE_MANUAL)
+        d.run(1)
         def inManual = d.arm()
 
         then:
         inAuto.result == MAV_RESULT.MAV_RESULT_FAILED
-        d.texts(from).first() == 'Arm: In landing sequence'
+        d.texts(from).take(2) == ['Arm: In landing sequence', 'In landing sequence: mission reset']
+        with(d.since(from, msg_mission_current).last()) {
+            seq == 0
+            mission_state == MISSION_STATE.MISSION_STATE_NOT_STARTED
+        }
         inManual.result == MAV_RESULT.MAV_RESULT_ACCEPTED
+    }
+
+    def "landed, a change to #mode, a mode that navigates by itself, leaves the mission at its landing (Plane::set_mode)"() {
+        given:
+        def d = armedInAuto(good())
+        d.runUntil(200, 'the disarm') { !d.vehicle.armed() }
+        int from = d.mark()
+
+        when:
+        d.setMode(mode)
+        d.run(1)
+
+        then:
+        !d.texts(from).contains('In landing sequence: mission reset')
+        d.vehicle.missionCurrent() == 4
+
+        where:
+        mode << [PLANE_MODE.PLANE_MODE_GUIDED, PLANE_MODE.PLANE_MODE_RTL]
     }
 
     def "QRTL in flight: home as a plane, the VTOL landing there, disarmed in QRTL; disarmed outside AUTO, its mission is reset (SITL run cutqrtl)"() {
