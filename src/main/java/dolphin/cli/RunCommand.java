@@ -64,7 +64,7 @@ final class RunCommand implements Callable<Integer> {
     private int sim;
 
     @Option(names = "--sim-type", paramLabel = "TYPE", converter = Converters.VehicleKindConverter.class, defaultValue = "copter",
-            description = "copter, plane, rover, boat or sub (default: ${DEFAULT-VALUE}).")
+            description = "copter, plane, rover, boat, sub, quadplane (vtol) or heli (helicopter) (default: ${DEFAULT-VALUE}).")
     private VehicleKind simType;
 
     @Option(names = "--sim-home", paramLabel = "LAT,LON[,ALT]", converter = Converters.Home.class,

@@ -43,7 +43,7 @@ final class SimCommand implements Callable<Integer> {
     private List<LinkUrl> links = new ArrayList<>();
 
     @Option(names = "--type", paramLabel = "TYPE", converter = Converters.VehicleKindConverter.class, defaultValue = "copter",
-            description = "copter, plane, rover, boat or sub (default: ${DEFAULT-VALUE}).")
+            description = "copter, plane, rover, boat, sub, quadplane (vtol) or heli (helicopter) (default: ${DEFAULT-VALUE}).")
     private VehicleKind type;
 
     @Option(names = "--home", paramLabel = "LAT,LON[,ALT]", converter = Converters.Home.class,

@@ -20,6 +20,7 @@ import java.util.List;
  * @param heading degrees from north (0..360) from the same message, NaN when the vehicle does not know it
  * @param home the vehicle's home from HOME_POSITION; null until reported
  * @param landedState MAV_LANDED_STATE from EXTENDED_SYS_STATE (0 = undefined)
+ * @param vtolState MAV_VTOL_STATE from EXTENDED_SYS_STATE: how a QuadPlane flies (0 = undefined: not a VTOL)
  * @param missionSeq the current mission item (MISSION_CURRENT.seq), -1 before the first
  * @param missionTotal MISSION_CURRENT.total (items excluding home), -1 when unknown
  * @param missionState MISSION_CURRENT.mission_state (MISSION_STATE), 0 when unknown
@@ -33,7 +34,7 @@ import java.util.List;
 public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, VehicleFamily family,
                            msg_sys_status systemStatus, long systemStatusNanos,
                            Position position, double relativeAlt, double heading, long positionNanos, Position home,
-                           int landedState, int missionSeq, int missionTotal, int missionState,
+                           int landedState, int vtolState, int missionSeq, int missionTotal, int missionState,
                            List<String> statusTexts, int ekfFlags, boolean fenceBreached, long bootMillis, int reboots) {
 
     public static final int STATUS_LINES = 20;
@@ -45,7 +46,7 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
     private static final int ARMED_FLAG = 128;
 
     public static VehicleState initial(VehicleFamily family) {
-        return new VehicleState(null, 0, family, null, 0, null, 0, Double.NaN, 0, null, 0, -1, -1, 0, List.of(), -1, false, -1, 0);
+        return new VehicleState(null, 0, family, null, 0, null, 0, Double.NaN, 0, null, 0, 0, -1, -1, 0, List.of(), -1, false, -1, 0);
     }
 
     public boolean armed() {
@@ -77,44 +78,44 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
 
     public VehicleState withHeartbeat(msg_heartbeat hb, long nanos) {
         return new VehicleState(hb, nanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
+                heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     public VehicleState withSystemStatus(msg_sys_status s, long nanos) {
         return new VehicleState(heartbeat, heartbeatNanos, family, s, nanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
+                heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     public VehicleState withPosition(Position p, double relAlt, double hdg, long nanos) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, p, relAlt, hdg,
-                nanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
+                nanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     public VehicleState withHome(Position h) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, h, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
+                heading, positionNanos, h, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     /** EXTENDED_SYS_STATE: the landed state, and the VTOL state, which tells a QuadPlane from a plane. */
-    public VehicleState withExtendedState(int landed, int vtolState) {
-        return new VehicleState(heartbeat, heartbeatNanos, family.withVtolState(vtolState), systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landed, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
+    public VehicleState withExtendedState(int landed, int vtol) {
+        return new VehicleState(heartbeat, heartbeatNanos, family.withVtolState(vtol), systemStatus, systemStatusNanos, position, relativeAlt,
+                heading, positionNanos, home, landed, vtol, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     public VehicleState withMissionCurrent(int seq, int total, int state) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, seq, total, state, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
+                heading, positionNanos, home, landedState, vtolState, seq, total, state, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     public VehicleState withEkfFlags(int flags) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, flags, fenceBreached, bootMillis, reboots);
+                heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, flags, fenceBreached, bootMillis, reboots);
     }
 
     /** From FENCE_STATUS.breach_status. */
     public VehicleState withFenceBreached(boolean breached) {
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, breached, bootMillis, reboots);
+                heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, breached, bootMillis, reboots);
     }
 
     public VehicleState withStatusText(String line) {
@@ -124,14 +125,14 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
             lines.remove(0);
         }
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, List.copyOf(lines), ekfFlags, fenceBreached, bootMillis, reboots);
+                heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, List.copyOf(lines), ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     /** The vehicle's time since boot; going back by more than {@link #REBOOT_STEP_MILLIS} counts a reboot. */
     public VehicleState withBootTime(long millis) {
         int r = bootMillis >= 0 && millis + REBOOT_STEP_MILLIS < bootMillis ? reboots + 1 : reboots;
         return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags,
+                heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags,
                 fenceBreached, millis, r);
     }
 }

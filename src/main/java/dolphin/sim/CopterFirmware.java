@@ -17,9 +17,10 @@ import java.util.Set;
  * WPNAV_ACC 2.5 m/s² (its jerk limit not simulated); waypoints reached within about a metre (SITL: 0.6
  * to 1.5 m), whatever their param2, flown past without stopping when the next nav item is another
  * point to fly to, else stopped on; a vertical take-off {@link #SPOOL_UP} seconds after it may take
- * off, hovering to hold, landing and RTL with LAND's descent; no streams until asked.
+ * off, hovering to hold, landing and RTL with LAND's descent; no streams until asked. A traditional
+ * helicopter is one too ({@link HeliFirmware}).
  */
-final class CopterFirmware implements Firmware {
+class CopterFirmware implements Firmware {
 
     /**
      * How long SITL's copter stays on the ground once it may take off: its motors spool up and its
@@ -73,7 +74,7 @@ final class CopterFirmware implements Firmware {
 
     /** ModeAuto::allows_arming: AUTO is not armable without AUTO_OPTIONS. */
     @Override
-    public Optional<String> armRefusal(int mode) {
+    public Optional<String> armRefusal(int mode, MissionView mission) {
         return mode == autoMode() ? Optional.of("Arm: AUTO mode not armable") : Optional.empty();
     }
 

@@ -72,6 +72,11 @@ final class Craft {
         return onGround;
     }
 
+    /** Says {@code text} as the vehicle (INFO), as it reports its touches. */
+    void say(String text) {
+        report.accept(text);
+    }
+
     /** Lands it if it touches the ground: a landing is complete, or it was disarmed there. */
     void settle() {
         if (contact) {
@@ -121,8 +126,13 @@ final class Craft {
      * includes the Earth's curvature (8 cm) and would bring a long leg at one height down to the ground.
      */
     void fly(Position t, double endSpeed, double within, double dt) {
+        fly(t, endSpeed, within, speed, dt);
+    }
+
+    /** As {@link #fly(Position, double, double, double)}, no faster than {@code speedLimit} m/s: a QuadPlane transitioning or braking. */
+    void fly(Position t, double endSpeed, double within, double speedLimit, double dt) {
         double[] ned = position.displacementTo(t);
-        double[] step = horizontal(ned[0], ned[1], endSpeed, endSpeed > 0 ? within : 0, false, dt);
+        double[] step = horizontal(ned[0], ned[1], endSpeed, endSpeed > 0 ? within : 0, false, Math.min(speed, speedLimit), dt);
         double dz = Math.max(-performance.sink() * dt, Math.min(performance.climb() * dt, t.hae() - position.hae()));
         Position p = position.displace(step[0], step[1], 0);
         moveTo(p.atHeight(position.hae() + dz), dt);
@@ -135,7 +145,7 @@ final class Craft {
      */
     void dive(Position t, double endSpeed, double within, double dt) {
         double[] ned = position.displacementTo(t);
-        double[] step = horizontal(ned[0], ned[1], endSpeed, endSpeed > 0 ? within : 0, false, dt);
+        double[] step = horizontal(ned[0], ned[1], endSpeed, endSpeed > 0 ? within : 0, false, speed, dt);
         double gap = t.hae() - position.hae();
         // the last step ends on the target's height itself, so a sub sent to the surface is at depth 0, not a rounding below it
         double hae = gap > performance.climb() * dt ? position.hae() + performance.climb() * dt
@@ -160,13 +170,18 @@ final class Craft {
      */
     void drive(Position t, double endSpeed, double within, double dt) {
         double[] ned = position.displacementTo(t);
-        double[] step = horizontal(ned[0], ned[1], endSpeed, endSpeed > 0 ? within : 0, true, dt);
+        double[] step = horizontal(ned[0], ned[1], endSpeed, endSpeed > 0 ? within : 0, true, speed, dt);
         position = position.displace(step[0], step[1], 0).atHeight(ground);
     }
 
     /** Straight up (or down) towards {@code hae} at the climb or sink rate, braking to a stop over the ground. */
     void climbTo(double hae, double dt) {
-        double up = Math.max(-performance.sink() * dt, Math.min(performance.climb() * dt, hae - position.hae()));
+        climbTo(hae, performance.climb(), performance.sink(), dt);
+    }
+
+    /** Straight up at {@code climb} m/s (or down at {@code sink}) towards {@code hae}, braking to a stop over the ground. */
+    void climbTo(double hae, double climb, double sink, double dt) {
+        double up = Math.max(-sink * dt, Math.min(climb * dt, hae - position.hae()));
         double[] step = brake(dt);
         moveTo(position.displace(step[0], step[1], 0).atHeight(position.hae() + up), dt);
     }
@@ -227,7 +242,7 @@ final class Craft {
      * {@code steered} one heads for the point and changes its speed only by that much. The step onto a
      * point where it stops ends on it, stopped.
      */
-    private double[] horizontal(double n, double e, double endSpeed, double within, boolean steered, double dt) {
+    private double[] horizontal(double n, double e, double endSpeed, double within, boolean steered, double speed, double dt) {
         double d = Math.hypot(n, e);
         double accel = performance.accel();
         if (accel <= 0) {

@@ -172,6 +172,12 @@ final class FaultTable {
     static final Failures ROVER = new Failures(0, Optional.empty(), Optional.of(ROVER_EKF), ROVER_MODE.ROVER_MODE_HOLD,
             Optional.of(ROVER_INTERNAL_ERROR));
     static final Failures SUB = new Failures(0, Optional.empty(), Optional.empty(), SUB_MODE.SUB_MODE_POSHOLD, Optional.empty());
+    /** A QuadPlane's lost motor (a lift motor or its engine) and its VTOL modes' EKF failsafe are not simulated. */
+    static final Failures QUADPLANE = new Failures(0, Optional.empty(), Optional.empty(), PLANE_MODE.PLANE_MODE_LOITER,
+            Optional.empty());
+    /** A helicopter's one rotor has no thrust loss check (a multicopter's, Copter::thrust_loss_check); its EKF failsafe is the copter's. */
+    static final Failures HELI = new Failures(0, Optional.empty(), Optional.of(COPTER_EKF), COPTER_MODE.COPTER_MODE_LOITER,
+            Optional.empty());
 
     /** The EKF3 cores' "stopped aiding" texts, the primary lane's first. */
     static List<String> stoppedAiding(int primary) {

@@ -1,8 +1,11 @@
 package dolphin.sim;
 
+import com.MAVLink.enums.MAV_RESULT;
+import com.MAVLink.enums.MAV_VTOL_STATE;
 import dolphin.core.Position;
 import dolphin.mavlink.VehicleFamily;
 import dolphin.mission.model.MissionItem;
+import java.util.List;
 import java.util.Optional;
 import java.util.OptionalInt;
 
@@ -11,7 +14,9 @@ import java.util.OptionalInt;
  * default streams; speeds and radii; the arming and mode rules; which mission items it starts; how
  * each one takes off, reaches a point, holds, lands, returns home and ends a mission; what it
  * reports of being on the ground; and what its faults do ({@link Failures}). {@link SimVehicle} and
- * {@link MissionFlight} ask their vehicle's firmware and never test its kind.
+ * {@link MissionFlight} ask their vehicle's firmware and never test its kind. Each vehicle runs one of
+ * its own ({@link VehicleKind#newFirmware}), which may keep what ArduPilot keeps beside the mission:
+ * a QuadPlane's transition, a helicopter's motor interlock.
  */
 interface Firmware {
 
@@ -33,10 +38,41 @@ interface Firmware {
 
     /**
      * The STATUSTEXT (WARNING) with which it refuses to enter {@code mode}, given whether it has a
-     * position estimate and a mission; empty if it enters it (as far as the firmware's mode rules go).
+     * position estimate and a mission, whether it is armed and the clock time (nanoseconds); empty if
+     * it enters it (as far as the firmware's mode rules go).
      */
-    default Optional<String> modeRefusal(int mode, boolean located, boolean missionPresent) {
+    default Optional<String> modeRefusal(int mode, boolean located, boolean missionPresent, boolean armed, long now) {
         return Optional.empty();
+    }
+
+    /** The parameters it answers PARAM_REQUEST_READ with, in index order; empty: it answers none. */
+    default List<FirmwareParam> params() {
+        return List.of();
+    }
+
+    /**
+     * MAV_CMD_DO_AUX_FUNCTION: RC option {@code function} to switch position {@code position} (0 LOW,
+     * 1 MIDDLE, 2 HIGH) at clock time {@code now}; its MAV_RESULT. UNSUPPORTED: no function is simulated.
+     */
+    default int auxFunction(int function, int position, boolean armed, long now) {
+        return MAV_RESULT.MAV_RESULT_UNSUPPORTED;
+    }
+
+    /**
+     * Whether a change to {@code mode} while disarmed on the ground resets a mission that landed
+     * ("In landing sequence: mission reset", Plane::set_mode): ArduPlane's modes without auto navigation.
+     */
+    default boolean resetsLandedMissionIn(int mode) {
+        return false;
+    }
+
+    /** Rebooted: what it keeps of its own goes back to how it boots (a helicopter's interlock follows its RC8 again). */
+    default void rebooted() {
+    }
+
+    /** EXTENDED_SYS_STATE's vtol_state in {@code mode}; UNDEFINED but on a QuadPlane (GCS_MAVLINK_Plane::vtol_state). */
+    default int vtolState(int mode, boolean onGround) {
+        return MAV_VTOL_STATE.MAV_VTOL_STATE_UNDEFINED;
     }
 
     /** The rate of the streams it sends before anyone asks, per second; 0 for none. */
@@ -44,8 +80,8 @@ interface Firmware {
 
     Performance performance();
 
-    /** The STATUSTEXT with which it refuses to arm in {@code mode}; empty if it arms there. */
-    Optional<String> armRefusal(int mode);
+    /** The STATUSTEXT with which it refuses to arm in {@code mode} with {@code mission}; empty if it arms there. */
+    Optional<String> armRefusal(int mode, MissionView mission);
 
     /** Whether it refuses to arm without a position estimate ("PreArm: Need Position Estimate", repeated while disarmed). */
     default boolean needsPositionToArm() {
@@ -91,6 +127,22 @@ interface Firmware {
         return Optional.empty();
     }
 
+    /**
+     * The nav command it flies {@code command} as: a QuadPlane flies NAV_VTOL_TAKEOFF as NAV_TAKEOFF
+     * and NAV_VTOL_LAND as NAV_LAND; other firmwares fly each command as itself.
+     */
+    default int fliesAs(int command) {
+        return command;
+    }
+
+    /**
+     * The height (above the ellipsoid) a take-off item climbs to, given its altitude {@code itemAltitude}
+     * in its frame; a QuadPlane climbs the item's altitude above where it is.
+     */
+    default double takeoffAltitude(MissionItem item, double itemAltitude, Craft craft) {
+        return itemAltitude;
+    }
+
     /** How close a NAV_WAYPOINT counts as reached. */
     double acceptanceRadius(MissionItem waypoint);
 
@@ -114,6 +166,24 @@ interface Firmware {
 
     /** NAV_LAND at {@code over} (null: where it is), and the LAND mode. */
     Manoeuvre landing(Craft craft, Position over);
+
+    /**
+     * Whether a NAV_LAND is complete once it has landed and disarmed; a QuadPlane's mission stays at
+     * its landing, ACTIVE (QuadPlane::check_land_complete).
+     */
+    default boolean completesLanding() {
+        return true;
+    }
+
+    /** Whether {@code mode}, neither AUTO nor RTL nor LAND, moves the vehicle by itself (a QuadPlane's QRTL, QLOITER). */
+    default boolean fliesIn(int mode) {
+        return false;
+    }
+
+    /** The manoeuvre of such a mode, from where the craft is; one that ends on the ground ends with a disarm. */
+    default Manoeuvre modeFlight(int mode, Craft craft, Position home) {
+        throw new IllegalArgumentException("mode " + mode + " does not fly by itself");
+    }
 
     /** What it does when the manoeuvre of its LAND mode is over: landed, it disarms. */
     default void landModeDone(MissionFlight.Body body) {

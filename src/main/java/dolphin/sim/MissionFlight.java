@@ -150,7 +150,7 @@ final class MissionFlight {
         for (int i = Math.max(1, cursor.nav()); i < store.count(); i++) {
             MissionItem item = store.get(i);
             if (nav(item.command())) {
-                return item.command() == MAV_CMD.MAV_CMD_NAV_TAKEOFF;
+                return firmware.fliesAs(item.command()) == MAV_CMD.MAV_CMD_NAV_TAKEOFF;
             }
         }
         return false;
@@ -174,10 +174,20 @@ final class MissionFlight {
         if (from == firmware.autoMode()) {
             cursor.stop();
         }
+        if (!body.armed() && body.craft().onGround() && atLanding() && firmware.resetsLandedMissionIn(to)) {
+            body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "In landing sequence: mission reset");
+            cursor.reset();
+        }
         if (to == firmware.autoMode()) {
             cursor.resume();
             body.craft().resetSpeed();
         }
+    }
+
+    /** The mission stands at a landing: AP_Mission's landing sequence, which its arming checks and Plane::set_mode look at. */
+    private boolean atLanding() {
+        int seq = cursor.nav();
+        return seq > 0 && seq < store.count() && firmware.fliesAs(store.get(seq).command()) == MAV_CMD.MAV_CMD_NAV_LAND;
     }
 
     /** MAV_CMD_MISSION_START: the copter's auto_armed; a mission not running starts or resumes. */
@@ -344,13 +354,15 @@ final class MissionFlight {
                 modeStep(dt, () -> firmware.returnHome(body.craft(), body.home(), false), this::disarmIfLanded);
             } else if (isLand(mode)) {
                 modeStep(dt, () -> firmware.landing(body.craft(), null), () -> firmware.landModeDone(body));
+            } else if (firmware.fliesIn(mode)) {
+                modeStep(dt, () -> firmware.modeFlight(mode, body.craft(), body.home()), this::disarmIfLanded);
             }
         }
     }
 
-    /** Whether the flight moves the vehicle in {@code mode}: AUTO, RTL and LAND; in any other mode it stays. */
+    /** Whether the flight moves the vehicle in {@code mode}: AUTO, RTL, LAND and the firmware's own flying modes; in any other mode it stays. */
     boolean movesIn(int mode) {
-        return mode == firmware.autoMode() || isRtl(mode) || isLand(mode);
+        return mode == firmware.autoMode() || isRtl(mode) || isLand(mode) || firmware.fliesIn(mode);
     }
 
     private boolean isRtl(int mode) {
@@ -642,8 +654,8 @@ final class MissionFlight {
         timer = 0;
         modeManoeuvre = null;
         Craft craft = body.craft();
-        manoeuvre = switch (item.command()) {
-            case MAV_CMD.MAV_CMD_NAV_TAKEOFF -> firmware.takeoff(craft, altitude(item));
+        manoeuvre = switch (firmware.fliesAs(item.command())) {
+            case MAV_CMD.MAV_CMD_NAV_TAKEOFF -> firmware.takeoff(craft, firmware.takeoffAltitude(item, altitude(item), craft));
             case MAV_CMD.MAV_CMD_NAV_LAND -> firmware.landing(craft, item.x() == 0 && item.y() == 0 ? null
                     : Position.fromDegrees(item.x() * 1e-7, item.y() * 1e-7, craft.position().hae()));
             case MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH -> firmware.returnHome(craft, body.home(), true);
@@ -654,7 +666,7 @@ final class MissionFlight {
 
     /** One tick of the current nav item; true when it is complete. */
     private boolean step(MissionItem item, double dt) {
-        return switch (item.command()) {
+        return switch (firmware.fliesAs(item.command())) {
             case MAV_CMD.MAV_CMD_NAV_TAKEOFF, MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH -> manoeuvre.step(dt);
             case MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_CMD.MAV_CMD_NAV_SPLINE_WAYPOINT, MAV_CMD.MAV_CMD_NAV_LOITER_TIME ->
                     waypoint(item, dt, item.param1());
@@ -718,7 +730,8 @@ final class MissionFlight {
 
     /**
      * NAV_LAND: complete once landed and disarmed; but a firmware that starts its mission over when
-     * disarmed never completes it (ArduCopter: no MISSION_ITEM_REACHED for the landing).
+     * disarmed never completes it (ArduCopter: no MISSION_ITEM_REACHED for the landing), nor does one
+     * whose mission stays at its landing (a QuadPlane).
      */
     private boolean land(double dt) {
         if (!manoeuvre.step(dt)) {
@@ -727,7 +740,7 @@ final class MissionFlight {
         if (manoeuvre.endsOnGround() && body.armed()) {
             body.disarm();
         }
-        return !restartDue;
+        return !restartDue && firmware.completesLanding();
     }
 
     /** The item's position; lat = lon = 0 means here; z relative to home unless the frame is global. */

@@ -1,6 +1,7 @@
 package dolphin.sim;
 
 import com.MAVLink.enums.MAV_LANDED_STATE;
+import com.MAVLink.enums.MAV_PARAM_TYPE;
 import com.MAVLink.enums.MAV_SEVERITY;
 import com.MAVLink.enums.MAV_STATE;
 import com.MAVLink.enums.MAV_TYPE;
@@ -8,9 +9,11 @@ import com.MAVLink.enums.PLANE_MODE;
 import dolphin.core.Position;
 import dolphin.mavlink.VehicleFamily;
 import dolphin.mission.model.MissionItem;
+import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.OptionalInt;
+import java.util.Set;
 
 /**
  * ArduPlane as SITL runs it with plane.parm: 20 m/s cruise (at once: its acceleration is not
@@ -18,11 +21,16 @@ import java.util.OptionalInt;
  * WP_RADIUS 55 m (or the item's param2), WP_LOITER_RAD 60 m; it arms in any mode and flies a
  * mission as soon as it is armed in AUTO; it holds by circling; at the end of its mission it
  * switches itself to RTL and circles home. Streams at 1 Hz from boot. Its landing is the copter's,
- * simplified.
+ * simplified. A QuadPlane is one too ({@link QuadPlaneFirmware}).
  */
-final class PlaneFirmware implements Firmware {
+class PlaneFirmware implements Firmware {
 
     private static final Performance PERFORMANCE = new Performance(20, 5, 3, 55, 60, 0, 20);
+    /** ArduPlane's modes that navigate by themselves (Mode::does_auto_navigation), and AUTO. */
+    private static final Set<Integer> AUTO_NAVIGATION = Set.of(PLANE_MODE.PLANE_MODE_AUTO, PLANE_MODE.PLANE_MODE_GUIDED,
+            PLANE_MODE.PLANE_MODE_CIRCLE, PLANE_MODE.PLANE_MODE_LOITER, PLANE_MODE.PLANE_MODE_RTL, PLANE_MODE.PLANE_MODE_TAKEOFF,
+            PLANE_MODE.PLANE_MODE_THERMAL, PLANE_MODE.PLANE_MODE_AUTOLAND);
+    private static final List<FirmwareParam> PARAMS = List.of(new FirmwareParam("Q_ENABLE", 0, MAV_PARAM_TYPE.MAV_PARAM_TYPE_INT8));
 
     @Override
     public int mavType() {
@@ -64,8 +72,23 @@ final class PlaneFirmware implements Firmware {
         return PERFORMANCE;
     }
 
+    /**
+     * Q_ENABLE 0, which tells a plane from a QuadPlane; the other Q_ parameters, hidden while it is 0
+     * (AP_PARAM_FLAG_ENABLE), get no answer.
+     */
     @Override
-    public Optional<String> armRefusal(int mode) {
+    public List<FirmwareParam> params() {
+        return PARAMS;
+    }
+
+    /** Every mode but those whose does_auto_navigation() is true, and AUTO. */
+    @Override
+    public boolean resetsLandedMissionIn(int mode) {
+        return !AUTO_NAVIGATION.contains(mode);
+    }
+
+    @Override
+    public Optional<String> armRefusal(int mode, MissionView mission) {
         return Optional.empty();
     }
 
@@ -103,7 +126,7 @@ final class PlaneFirmware implements Firmware {
 
     @Override
     public double acceptanceRadius(MissionItem waypoint) {
-        return waypoint.param2() > 0 ? waypoint.param2() : PERFORMANCE.waypointRadius();
+        return waypoint.param2() > 0 ? waypoint.param2() : performance().waypointRadius();
     }
 
     /** Within the radius horizontally; the height is only flown towards. */
@@ -120,7 +143,7 @@ final class PlaneFirmware implements Firmware {
 
     @Override
     public Manoeuvre holdAt(Craft craft, Position at) {
-        return new Orbit(this, craft, at, PERFORMANCE.loiterRadius(), Double.POSITIVE_INFINITY);
+        return new Orbit(this, craft, at, performance().loiterRadius(), Double.POSITIVE_INFINITY);
     }
 
     @Override

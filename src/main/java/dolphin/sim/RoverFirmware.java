@@ -73,7 +73,7 @@ final class RoverFirmware implements Firmware {
     }
 
     @Override
-    public Optional<String> armRefusal(int mode) {
+    public Optional<String> armRefusal(int mode, MissionView mission) {
         return Optional.empty();
     }
 

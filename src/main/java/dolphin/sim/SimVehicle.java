@@ -13,6 +13,8 @@ import com.MAVLink.common.msg_gps_raw_int;
 import com.MAVLink.common.msg_home_position;
 import com.MAVLink.common.msg_mission_current;
 import com.MAVLink.common.msg_mission_set_current;
+import com.MAVLink.common.msg_param_request_read;
+import com.MAVLink.common.msg_param_value;
 import com.MAVLink.common.msg_request_data_stream;
 import com.MAVLink.common.msg_set_mode;
 import com.MAVLink.common.msg_sys_status;
@@ -24,10 +26,12 @@ import com.MAVLink.enums.MAV_RESULT;
 import com.MAVLink.enums.MAV_SEVERITY;
 import com.MAVLink.enums.MAV_STATE;
 import com.MAVLink.enums.MAV_SYS_STATUS_SENSOR;
+import com.MAVLink.enums.MISSION_STATE;
 import com.MAVLink.minimal.msg_heartbeat;
 import com.MAVLink.standard.msg_autopilot_version;
 import com.MAVLink.standard.msg_global_position_int;
 import dolphin.core.Position;
+import dolphin.mavlink.VehicleFamily;
 import dolphin.mission.model.Fence;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
@@ -101,7 +105,7 @@ public final class SimVehicle {
     SimVehicle(int sysid, VehicleKind kind, Position home, SimOptions options, long now, SimEquipment equipment) {
         this.sysid = sysid;
         this.kind = kind;
-        this.firmware = kind.firmware();
+        this.firmware = kind.newFirmware();
         this.options = options;
         this.estimate = new PositionEstimate(now, options.warmupSeconds());
         this.boot = now;
@@ -112,7 +116,8 @@ public final class SimVehicle {
         this.mode = firmware.bootMode();
         this.nextHeartbeat = now;
         this.lastTick = now;
-        this.missionStore = new MissionStore(() -> this.home, options.missionCapacity(), kind == VehicleKind.PLANE);
+        this.missionStore = new MissionStore(() -> this.home, options.missionCapacity(),
+                firmware.family().firmware() == VehicleFamily.PLANE);
         TransferHost host = new TransferHost();
         this.lists = new MissionLists(missionStore, options.missionCapacity(), host);
         this.ftp = new SimFtpServer(new MissionFiles(lists::store, new MissionFileLoader(lists::store, host)), this::send);
@@ -332,6 +337,8 @@ public final class SimVehicle {
             // a mission, fence or rally transfer
         } else if (m instanceof msg_mission_set_current s && s.target_system == sysid) {
             flight.setCurrentMessage(s.seq);
+        } else if (m instanceof msg_param_request_read r && r.target_system == sysid) {
+            paramValue(r).ifPresent(this::send);
         }
         if (modeToAnnounce) {
             announceMode();
@@ -378,6 +385,7 @@ public final class SimVehicle {
             case MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT -> flight.setCurrentCommand((int) c.param1, c.param2 == 1);
             case MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH -> firmware.rtlMode().isEmpty() ? MAV_RESULT.MAV_RESULT_UNSUPPORTED
                     : setModeIfValid(firmware.rtlMode().getAsInt()) ? MAV_RESULT.MAV_RESULT_ACCEPTED : MAV_RESULT.MAV_RESULT_FAILED;
+            case MAV_CMD.MAV_CMD_DO_AUX_FUNCTION -> firmware.auxFunction((int) c.param1, (int) c.param2, armed, now);
             case MAV_CMD.MAV_CMD_NAV_LAND -> firmware.landMode().isPresent() && setModeIfValid(firmware.landMode().getAsInt())
                     ? MAV_RESULT.MAV_RESULT_ACCEPTED : MAV_RESULT.MAV_RESULT_UNSUPPORTED;
             default -> MAV_RESULT.MAV_RESULT_UNSUPPORTED;
@@ -410,6 +418,29 @@ public final class SimVehicle {
         return MAV_RESULT.MAV_RESULT_ACCEPTED;
     }
 
+    /**
+     * PARAM_REQUEST_READ by name (param_index -1) or by index (GCS_MAVLINK::param_io_timer): the
+     * PARAM_VALUE, with the index asked for and the count of the firmware's parameters; a parameter
+     * it does not have gets no answer, as older ArduPilot (4.8 sends PARAM_ERROR).
+     */
+    private Optional<msg_param_value> paramValue(msg_param_request_read r) {
+        List<FirmwareParam> params = firmware.params();
+        String name = r.getParam_Id();
+        int index = r.param_index;
+        Optional<FirmwareParam> found = index >= 0
+                ? (index < params.size() ? Optional.of(params.get(index)) : Optional.empty())
+                : params.stream().filter(p -> p.name().equals(name)).findFirst();
+        return found.map(p -> {
+            msg_param_value v = new msg_param_value();
+            v.setParam_Id(p.name());
+            v.param_value = p.value();
+            v.param_type = (short) p.type();
+            v.param_count = params.size();
+            v.param_index = index;
+            return v;
+        });
+    }
+
     /** time_boot_ms: clock milliseconds since this vehicle booted. */
     private long bootMillis(long now) {
         return (now - boot) / 1_000_000;
@@ -431,7 +462,8 @@ public final class SimVehicle {
         if (armed) {
             return MAV_RESULT.MAV_RESULT_ACCEPTED;
         }
-        var refusal = firmware.armRefusal(mode);
+        var refusal = firmware.armRefusal(mode, new MissionView(missionStore.items(), flight.current(),
+                flight.state() == MISSION_STATE.MISSION_STATE_ACTIVE));
         if (refusal.isPresent()) {
             outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, refusal.get());
             return MAV_RESULT.MAV_RESULT_FAILED;
@@ -476,7 +508,7 @@ public final class SimVehicle {
             return false;
         }
         if (custom != mode) {
-            var refusal = firmware.modeRefusal((int) custom, estimate.ready(lastTick), missionStore.count() > 1);
+            var refusal = firmware.modeRefusal((int) custom, estimate.ready(lastTick), missionStore.count() > 1, armed, lastTick);
             if (refusal.isPresent()) {
                 outbox.text(MAV_SEVERITY.MAV_SEVERITY_WARNING, refusal.get());
                 return false;
@@ -601,7 +633,8 @@ public final class SimVehicle {
      * Reboots at clock time {@code now}, as ArduPilot after MAV_CMD_PREFLIGHT_REBOOT_SHUTDOWN: time
      * since boot from 0, its warm-up again, disarmed (motors stopped: a vehicle in the air comes
      * down, see {@link Reboot}) and in its boot mode, its requested streams forgotten, its mission
-     * stopped with no current item, no failsafe or internal error on, EKF3 on lane 0. What it stores
+     * stopped with no current item, no failsafe or internal error on, EKF3 on lane 0, what its
+     * firmware keeps as at boot (a helicopter's motor interlock on). What it stores
      * (mission, fence, rally points), its home, its battery and its GPS receiver's state stay.
      */
     private void reboot(long now) {
@@ -612,6 +645,7 @@ public final class SimVehicle {
         modeToAnnounce = false;
         nextHeartbeat = now;
         flight.rebooted();
+        firmware.rebooted();
         navigation.failsafe(false);
         navigation.primaryLane(0);
         internalErrors = false;
@@ -812,6 +846,7 @@ public final class SimVehicle {
             case msg_extended_sys_state.MAVLINK_MSG_ID_EXTENDED_SYS_STATE -> {
                 msg_extended_sys_state e = new msg_extended_sys_state();
                 e.landed_state = (short) firmware.landedState(craft.onGround(), flight.manoeuvreState());
+                e.vtol_state = (short) firmware.vtolState(mode, craft.onGround());
                 yield Optional.of(e);
             }
             case msg_battery_status.MAVLINK_MSG_ID_BATTERY_STATUS -> {

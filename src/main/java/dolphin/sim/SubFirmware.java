@@ -86,7 +86,7 @@ final class SubFirmware implements Firmware {
 
     /** Sub::set_mode: a mode that needs a position, then ModeAuto::init's mission. */
     @Override
-    public Optional<String> modeRefusal(int mode, boolean located, boolean missionPresent) {
+    public Optional<String> modeRefusal(int mode, boolean located, boolean missionPresent, boolean armed, long now) {
         if (NEED_POSITION.containsKey(mode) && !located) {
             return Optional.of("Mode change failed: " + NEED_POSITION.get(mode) + " requires position");
         }
@@ -108,7 +108,7 @@ final class SubFirmware implements Firmware {
     }
 
     @Override
-    public Optional<String> armRefusal(int mode) {
+    public Optional<String> armRefusal(int mode, MissionView mission) {
         return Optional.empty();
     }
 

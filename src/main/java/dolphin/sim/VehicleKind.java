@@ -3,20 +3,31 @@ package dolphin.sim;
 import com.MAVLink.enums.MAV_TYPE;
 import dolphin.mavlink.VehicleFamily;
 import java.util.Locale;
+import java.util.function.Supplier;
 
-/** The simulated firmwares; what each one does is its {@link Firmware}. */
+/**
+ * The simulated firmwares; what each one does is its {@link Firmware}. Each vehicle runs a firmware
+ * of its own ({@link #newFirmware}): a QuadPlane's and a helicopter's keep what their rotors are doing.
+ */
 public enum VehicleKind {
-    COPTER(new CopterFirmware()),
-    PLANE(new PlaneFirmware()),
-    ROVER(new RoverFirmware(MAV_TYPE.MAV_TYPE_GROUND_ROVER)),
+    COPTER(CopterFirmware::new),
+    PLANE(PlaneFirmware::new),
+    ROVER(() -> new RoverFirmware(MAV_TYPE.MAV_TYPE_GROUND_ROVER)),
     /** ArduRover's motorboat: a rover on the water. */
-    BOAT(new RoverFirmware(MAV_TYPE.MAV_TYPE_SURFACE_BOAT)),
-    SUB(new SubFirmware());
+    BOAT(() -> new RoverFirmware(MAV_TYPE.MAV_TYPE_SURFACE_BOAT)),
+    SUB(SubFirmware::new),
+    /** ArduPlane with Q_ENABLE 1: a QuadPlane, SITL's {@code --model quadplane}. */
+    QUADPLANE(QuadPlaneFirmware::new),
+    /** ArduCopter's traditional helicopter, SITL's {@code --model heli}. */
+    HELI(HeliFirmware::new);
 
+    private final Supplier<Firmware> make;
+    /** One firmware that no vehicle runs, for what the kind is: its family, its faults. */
     private final Firmware firmware;
 
-    VehicleKind(Firmware firmware) {
-        this.firmware = firmware;
+    VehicleKind(Supplier<Firmware> make) {
+        this.make = make;
+        this.firmware = make.get();
     }
 
     public VehicleFamily family() {
@@ -27,6 +38,11 @@ public enum VehicleKind {
         return firmware;
     }
 
+    /** The firmware one vehicle runs. */
+    Firmware newFirmware() {
+        return make.get();
+    }
+
     public static VehicleKind parse(String s) {
         return switch (s.toLowerCase(Locale.ROOT)) {
             case "copter", "arducopter" -> COPTER;
@@ -34,8 +50,10 @@ public enum VehicleKind {
             case "rover", "ardurover" -> ROVER;
             case "boat" -> BOAT;
             case "sub", "ardusub" -> SUB;
+            case "quadplane", "vtol" -> QUADPLANE;
+            case "heli", "helicopter" -> HELI;
             default -> throw new IllegalArgumentException("unknown vehicle type '" + s
-                    + "': expected copter, plane, rover, boat or sub");
+                    + "': expected copter, plane, rover, boat, sub, quadplane or heli");
         };
     }
 }

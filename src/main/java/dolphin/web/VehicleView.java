@@ -2,6 +2,7 @@ package dolphin.web;
 
 import java.util.List;
 
+import com.MAVLink.enums.MAV_VTOL_STATE;
 import dolphin.core.Position;
 import dolphin.mavlink.VehicleState;
 import dolphin.mission.transfer.TransferStatus;
@@ -13,10 +14,11 @@ import groovy.json.JsonOutput;
  * the script picked it, the last platform task on it, its payloads, its latest sensor readings,
  * where a mission transfer to or from it stands, and its link's health.
  *
+ * @param vtol how a QuadPlane flies (hovering, to plane, plane, to hover: its MAV_VTOL_STATE), null for other vehicles
  * @param silence whole seconds the vehicle has been silent, -1 while it is heard
  * @param link the name of the link the vehicle is reached through ({@link LinkView#name()}), or null when not known
  */
-record VehicleView(String id, String type, String family, boolean connected, int silence, boolean picked, Position position,
+record VehicleView(String id, String type, String family, String vtol, boolean connected, int silence, boolean picked, Position position,
                    double relativeAlt, double heading, String mode, boolean armed, int battery, Position home,
                    int item, int total, boolean fenceBreached, String task, List<String> payloads, List<Shown> readings,
                    TransferStatus transfer, String link) {
@@ -37,9 +39,20 @@ record VehicleView(String id, String type, String family, boolean connected, int
     /** @param transfer where a mission transfer in progress stands, or null */
     static VehicleView of(String id, String type, boolean connected, int silence, boolean picked, VehicleState s, String task,
                           List<String> payloads, List<Shown> readings, TransferStatus transfer, String link) {
-        return new VehicleView(id, type, s.family().label(), connected, silence, picked, s.position(), s.relativeAlt(), s.heading(),
+        return new VehicleView(id, type, s.family().label(), vtolText(s.vtolState()), connected, silence, picked, s.position(), s.relativeAlt(), s.heading(),
                 s.modeName(), s.armed(), s.batteryPercent(), s.home(), s.flyingMission() ? s.missionSeq() : -1, s.missionTotal(),
                 s.fenceBreached(), task, payloads, readings, transfer, link);
+    }
+
+    /** MAV_VTOL_STATE in words; null for UNDEFINED, which every vehicle but a QuadPlane reports. */
+    static String vtolText(int vtolState) {
+        return switch (vtolState) {
+            case MAV_VTOL_STATE.MAV_VTOL_STATE_MC -> "hovering";
+            case MAV_VTOL_STATE.MAV_VTOL_STATE_TRANSITION_TO_FW -> "to plane";
+            case MAV_VTOL_STATE.MAV_VTOL_STATE_FW -> "plane";
+            case MAV_VTOL_STATE.MAV_VTOL_STATE_TRANSITION_TO_MC -> "to hover";
+            default -> null;
+        };
     }
 
     /**
@@ -51,6 +64,7 @@ record VehicleView(String id, String type, String family, boolean connected, int
         b.append("{\"id\":").append(JsonOutput.toJson(id))
                 .append(",\"type\":").append(JsonOutput.toJson(type))
                 .append(",\"family\":").append(JsonOutput.toJson(family))
+                .append(",\"vtol\":").append(JsonOutput.toJson(vtol))
                 .append(",\"connected\":").append(connected)
                 .append(",\"silence\":").append(silence < 0 ? "null" : String.valueOf(silence))
                 .append(",\"picked\":").append(picked)

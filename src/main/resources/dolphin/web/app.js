@@ -139,7 +139,8 @@ function modeText(d) {
 
 function popupText(d) {
   const heard = d.connected && d.silence == null;
-  return `<b>vehicle ${d.id}</b> (${d.type}, ${d.family})<br>${heard ? d.mode : modeText(d) + ', last seen ' + d.mode}, `
+  return `<b>vehicle ${d.id}</b> (${d.type}, ${d.family})${d.vtol ? ', <span class="dolphin-vtol">' + d.vtol + '</span>' : ''}`
+    + `<br>${heard ? d.mode : modeText(d) + ', last seen ' + d.mode}, `
     + `${d.armed ? 'armed' : 'disarmed'}, battery ${d.battery == null ? '?' : d.battery + ' %'}<br>`
     + `${d.relativeAlt} m above home${d.item != null ? ', item ' + d.item + ' of ' + d.total : ''}<br>`
     + `${d.picked ? 'picked by the script' : 'free'}${d.task ? '<br>task ' + escapeHtml(d.task) : ''}`
@@ -283,7 +284,7 @@ function renderTable() {
     const pos = d.position || [null, null];
     return `<tr data-vehicle="${escapeHtml(d.id)}" data-connected="${d.connected}" data-silent="${d.silence != null}" data-picked="${d.picked}" `
       + `data-lat="${pos[0]}" data-lon="${pos[1]}" data-mode="${escapeHtml(d.mode)}">`
-      + `<td>${escapeHtml(d.id)}</td><td>${escapeHtml(d.type)}</td><td>${escapeHtml(modeText(d))}${d.armed ? ' armed' : ''}</td>`
+      + `<td>${escapeHtml(d.id)}</td><td>${escapeHtml(d.type)}</td><td>${escapeHtml(modeText(d))}${d.armed ? ' armed' : ''}${d.vtol ? ', ' + d.vtol : ''}</td>`
       + `<td>${d.battery == null ? '?' : d.battery + ' %'}</td><td>${d.relativeAlt.toFixed(1)} m</td>`
       + `<td>${d.item != null ? d.item + '/' + d.total : '-'}</td><td class="dolphin-link">${linkText(d)}</td>`
       + `<td>${d.readings && d.readings.length ? readingsText(d.readings) : ''}</td><td>${escapeHtml(d.task)}${d.transfer ? ' <span class="dolphin-transfer">' + escapeHtml(d.transfer.text) + '</span>' : ''}</td></tr>`;

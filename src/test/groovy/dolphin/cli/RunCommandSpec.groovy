@@ -312,7 +312,7 @@ release v
         ['run', EXAMPLE, '--link', 'carrier-pigeon:1']             | "unknown link kind 'carrier-pigeon'"
         ['run', EXAMPLE, '--link', 'udpin:0.0.0.0:99999']          | 'the port must be between 0 and 65535'
         ['run', EXAMPLE, '--speedup', '10']                        | '--speedup needs --sim'
-        ['run', EXAMPLE, '--sim', '1', '--sim-type', 'hovercraft'] | "unknown vehicle type 'hovercraft': expected copter, plane, rover, boat or sub"
+        ['run', EXAMPLE, '--sim', '1', '--sim-type', 'hovercraft'] | "unknown vehicle type 'hovercraft': expected copter, plane, rover, boat, sub, quadplane or heli"
         ['run', EXAMPLE, '--sim-home', '38.43462,-8.86118']        | '--sim-home needs --sim: it sets up the simulated fleet'
         ['run', EXAMPLE, '--sim-dive-silence', '5']                | '--sim-dive-silence needs --sim'
         ['run', EXAMPLE, '--sim-no-ftp']                           | '--sim-no-ftp needs --sim: it sets up the simulated fleet'

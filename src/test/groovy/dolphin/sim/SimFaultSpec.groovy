@@ -72,7 +72,7 @@ class SimFaultSpec extends Specification {
         text                     | kind              || message
         'motor@60'               | VehicleKind.ROVER || 'motor is not simulated on a rover, only on copter, plane'
         'motor@60'               | VehicleKind.SUB   || 'motor is not simulated on a sub, only on copter, plane'
-        'gps@60'                 | VehicleKind.PLANE || 'gps is not simulated on a plane, only on copter, rover, boat'
+        'gps@60'                 | VehicleKind.PLANE || 'gps is not simulated on a plane, only on copter, rover, boat, heli'
         'motor=5@60'             | VehicleKind.COPTER || 'motor 5: ArduCopter has 4 motors'
         'motor=2@60'             | VehicleKind.PLANE || 'motor 2: ArduPlane has 1 motor'
         'takeover=10,hover@60'   | VehicleKind.COPTER || "ArduCopter has no mode 'hover': expected one of"
@@ -97,6 +97,8 @@ class SimFaultSpec extends Specification {
         VehicleKind.ROVER  || ['gps', 'takeover', 'stall', 'reboot', 'outage']
         VehicleKind.BOAT   || ['gps', 'takeover', 'stall', 'reboot', 'outage']
         VehicleKind.SUB    || ['takeover', 'stall', 'reboot', 'outage']
+        VehicleKind.QUADPLANE || ['takeover', 'stall', 'reboot', 'outage']
+        VehicleKind.HELI   || ['gps', 'takeover', 'stall', 'reboot', 'outage']
     }
 
     def "a fault for a system id happens to that vehicle only; without one, to every vehicle"() {

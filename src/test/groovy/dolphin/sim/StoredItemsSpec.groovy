@@ -111,6 +111,9 @@ class StoredItemsSpec extends Specification {
         MAV_CMD.MAV_CMD_DO_SET_SERVO           | [9, 1500.7, 0, 0]       | MAV_FRAME.MAV_FRAME_MISSION                  | 0      | 'copter' || [9, 1500, 0, 0]     | MAV_FRAME.MAV_FRAME_GLOBAL                  | [0, 0, 0f]
         MAV_CMD.MAV_CMD_DO_MOUNT_CONTROL       | [-45, 0, 10, 3]         | MAV_FRAME.MAV_FRAME_MISSION                  | 0      | 'copter' || [-45, 0, 10, 0]     | MAV_FRAME.MAV_FRAME_GLOBAL                  | [0, 0, 2f]
         MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH   | [1, 2, 3, 4]            | MAV_FRAME.MAV_FRAME_GLOBAL_INT               | 850    | 'copter' || [0, 0, 0, 0]        | MAV_FRAME.MAV_FRAME_GLOBAL                  | [0, 0, 0f]
+        MAV_CMD.MAV_CMD_NAV_VTOL_TAKEOFF       | [1, 2, 3, NAN]          | MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT  | 30     | 'plane'  || [0, 0, 0, 0]        | MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT     | [404442336, -73752344, 30f]
+        MAV_CMD.MAV_CMD_NAV_VTOL_LAND          | [1.7, 2, NAN, NAN]      | MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT  | 0      | 'plane'  || [1, 0, 0, 0]        | MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT     | [404442336, -73752344, 0f]
+        MAV_CMD.MAV_CMD_DO_VTOL_TRANSITION     | [4, 1, 2, 3]            | MAV_FRAME.MAV_FRAME_MISSION                  | 0      | 'plane'  || [4, 0, 0, 0]        | MAV_FRAME.MAV_FRAME_GLOBAL                  | [0, 0, 0f]
     }
 
     def "CONDITION_CHANGE_ALT, which AP_Mission does not know, is UNSUPPORTED"() {

@@ -1,5 +1,6 @@
 package dolphin.web
 
+import com.MAVLink.enums.MAV_VTOL_STATE
 import com.MAVLink.enums.MISSION_STATE
 import com.MAVLink.minimal.msg_heartbeat
 import dolphin.core.Position
@@ -58,6 +59,26 @@ class FleetFeedSpec extends Specification {
         v.mode == 'AUTO' && v.armed && v.picked
         v.item == 2 && v.total == 5
         v.home == [40.444233, -7.375234, 820.0]
+    }
+
+    def "a QuadPlane's view says how it flies (#text), from EXTENDED_SYS_STATE's VTOL state; a copter's says nothing"() {
+        given:
+        def s = VehicleState.initial(VehicleFamily.PLANE).withHeartbeat(new msg_heartbeat(custom_mode: 10), 0).withExtendedState(2, vtolState)
+
+        when:
+        def v = parse(VehicleView.of('1', 'UAV', true, false, s, '').json())
+
+        then:
+        v.vtol == text
+        v.family == family
+
+        where:
+        vtolState                                     || text       | family
+        MAV_VTOL_STATE.MAV_VTOL_STATE_MC              || 'hovering' | 'ArduPlane VTOL'
+        MAV_VTOL_STATE.MAV_VTOL_STATE_TRANSITION_TO_FW || 'to plane' | 'ArduPlane VTOL'
+        MAV_VTOL_STATE.MAV_VTOL_STATE_FW              || 'plane'    | 'ArduPlane VTOL'
+        MAV_VTOL_STATE.MAV_VTOL_STATE_TRANSITION_TO_MC || 'to hover' | 'ArduPlane VTOL'
+        MAV_VTOL_STATE.MAV_VTOL_STATE_UNDEFINED       || null       | 'ArduPlane'
     }
 
     def "a vehicle's payloads and latest readings, a stale one marked, a NaN one as text"() {

@@ -1,6 +1,7 @@
 package dolphin.web
 
 import com.MAVLink.common.msg_radio_status
+import com.MAVLink.enums.PLANE_MODE
 import dolphin.core.SystemClock
 import dolphin.dsl.Engine
 import dolphin.dsl.ScriptResult
@@ -182,6 +183,28 @@ class WebViewBrowserSpec extends Specification {
 
         cleanup:
         socket?.close()
+    }
+
+    def "a QuadPlane's row says how it flies, from its VTOL state: plane in MANUAL, hovering on the ground in AUTO; a copter's says nothing of it"() {
+        given: 'a QuadPlane, vehicle 3, beside the two copters'
+        browser.get(view.address())
+        waitUntil(10) { $('#connection[data-state="live"]') }
+        def quadplane = new SimFleet(SimFleet.Config.of(1, VehicleKind.QUADPLANE,
+                new InetSocketAddress('127.0.0.1', comms.links()[0].localPort())).withFirstSysid(3), clock)
+        quadplane.start()
+
+        expect:
+        waitUntil(30) { modeCell('3') == 'MANUAL, plane' }
+        modeCell('1') == 'STABILIZE'
+
+        when:
+        quadplane.vehicle(3).setMode(PLANE_MODE.PLANE_MODE_AUTO)
+
+        then:
+        waitUntil(10) { modeCell('3') == 'AUTO, hovering' }
+
+        cleanup:
+        quadplane?.close()
     }
 
     /** The link column of a vehicle's row in the table. */

@@ -133,6 +133,9 @@ public final class StoredItems {
                 p4 = (byte) (int) i.param4();
             }
             case MAV_CMD.MAV_CMD_CONDITION_DELAY, MAV_CMD.MAV_CMD_CONDITION_DISTANCE -> p1 = i.param1();
+            // a VTOL landing keeps its options (NAV_VTOL_LAND_OPTIONS), a transition its target state; a VTOL take-off nothing
+            case MAV_CMD.MAV_CMD_NAV_VTOL_LAND -> p1 = u16(i.param1());
+            case MAV_CMD.MAV_CMD_DO_VTOL_TRANSITION -> p1 = u8(i.param1());
             case MAV_CMD.MAV_CMD_CONDITION_YAW -> {
                 p1 = i.param1();
                 p2 = i.param2();
