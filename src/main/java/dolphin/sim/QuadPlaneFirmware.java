@@ -28,7 +28,9 @@ import java.util.Set;
  */
 final class QuadPlaneFirmware extends PlaneFirmware {
 
-    private static final Performance PERFORMANCE = new Performance(25, 5, 3, 90, 60, 0, 25);
+    /** WP_RADIUS's default, which ArduPlane answers as an AP_Int16. */
+    private static final int WP_RADIUS = 90;
+    private static final Performance PERFORMANCE = new Performance(25, 5, 3, WP_RADIUS, 60, 0, 25);
     /** Q_PILOT_SPD_UP: the vertical take-off's climb (QuadPlane::do_vtol_takeoff). */
     static final double VTOL_CLIMB = 2.5;
 
@@ -42,7 +44,8 @@ final class QuadPlaneFirmware extends PlaneFirmware {
             new FirmwareParam("Q_ASSIST_SPEED", (float) VtolLift.ASSIST_SPEED, MAV_PARAM_TYPE.MAV_PARAM_TYPE_REAL32),
             new FirmwareParam("Q_TRANSITION_MS", 5000, MAV_PARAM_TYPE.MAV_PARAM_TYPE_INT16),
             new FirmwareParam("Q_LAND_FINAL_ALT", (float) VtolLanding.FINAL_ALT, MAV_PARAM_TYPE.MAV_PARAM_TYPE_REAL32),
-            new FirmwareParam("Q_RTL_ALT", 15, MAV_PARAM_TYPE.MAV_PARAM_TYPE_REAL32));
+            new FirmwareParam("Q_RTL_ALT", 15, MAV_PARAM_TYPE.MAV_PARAM_TYPE_REAL32),
+            new FirmwareParam("WP_RADIUS", WP_RADIUS, MAV_PARAM_TYPE.MAV_PARAM_TYPE_INT16));
 
     /** Modes whose quad motors are off: the transition is forced complete (QuadPlane::update). */
     private static final Set<Integer> MANUAL = Set.of(PLANE_MODE.PLANE_MODE_MANUAL, PLANE_MODE.PLANE_MODE_ACRO,

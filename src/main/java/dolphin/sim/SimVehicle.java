@@ -436,7 +436,8 @@ public final class SimVehicle {
             v.param_value = p.value();
             v.param_type = (short) p.type();
             v.param_count = params.size();
-            v.param_index = index;
+            // uint16 on the wire: ArduPilot's -1 for a read by name arrives as 65535
+            v.param_index = index & 0xFFFF;
             return v;
         });
     }

@@ -23,7 +23,7 @@ class ExamplesSpec extends Specification {
     static final List<String> COVERED = [
             'two-drones-survey', 'listing2-single-vehicle', 'listing3-two-vehicles', 'listing4-keep-two-airborne',
             'operators', 'loiters', 'survey', 'camera', 'watch-onerror', 'first-flight', 'battery-and-position', 'fleet',
-            'fence', 'from-file', 'fire-watch', 'listing1-uuv-surveys', 'mapping']
+            'fence', 'from-file', 'fire-watch', 'listing1-uuv-surveys', 'mapping', 'vtol-mapping']
 
     @Shared
     Map<String, String> commandLines = [:]
@@ -206,6 +206,11 @@ class ExamplesSpec extends Specification {
         'camera'               | ['mission photos on vehicle 1: uploading 11 items', 'mission photos on vehicle 1: done', 'camera: DONE']
         'mapping'              | ['mission mapping on vehicle 1: uploading 40 items', 'mission mapping on vehicle 1: item 24 of 39 reached',
                                   'mission mapping on vehicle 1: done', 'mapping: DONE']
+        'vtol-mapping'         | ['mission vtol mapping on vehicle 1: item 39 added: NAV_WAYPOINT, the approach to the landing after it',
+                                  'mission vtol mapping on vehicle 1: item 40 added: NAV_WAYPOINT, the approach to the landing after it',
+                                  'mission vtol mapping on vehicle 1: armed', 'mission vtol mapping on vehicle 1: item 40 of 41 reached',
+                                  "mission vtol mapping on vehicle 1: QLOITER, which ends ArduPlane's landing sequence",
+                                  'mission vtol mapping on vehicle 1: done', 'mapping: DONE']
         'survey'               | ['mission survey on vehicle 1: cut short: RTL', 'mission return home on vehicle 1: done']
         'first-flight'         | ['mission first flight on vehicle 1: done', 'the flight ended DONE, battery *']
         'from-file'            | ['read 5 mission items, a fence of 1 region (inclusion polygon of 4 vertices), return point,'

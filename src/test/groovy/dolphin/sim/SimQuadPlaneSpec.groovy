@@ -125,7 +125,7 @@ class SimQuadPlaneSpec extends Specification {
         kind << [VehicleKind.PLANE, VehicleKind.COPTER]
     }
 
-    def "PARAM_REQUEST_READ of #name by name is answered with #value as #type, index -1 and the count of its parameters"() {
+    def "PARAM_REQUEST_READ of #name by name is answered with #value as #type, index -1 (65535 as a uint16) and the count of its parameters"() {
         given:
         def d = quadplane()
         int from = d.mark()
@@ -140,7 +140,7 @@ class SimQuadPlaneSpec extends Specification {
             getParam_Id() == name
             param_value == value as float
             param_type == type
-            param_index == -1
+            param_index == 65535
             param_count == QuadPlaneFirmware.PARAMS.size()
         }
 

@@ -160,6 +160,7 @@ final class VtolItems {
 
     private static IllegalArgumentException missing(String parameter) {
         return new IllegalArgumentException(String.format(Locale.ROOT, "the vehicle did not give its %s parameter, which its"
-                + " landing approach is planned with (ArduPlane 4.5 or later names it so)", parameter));
+                + " take-offs and landings are planned with%s", parameter,
+                parameter.equals(AIRSPEED_CRUISE) ? " (ArduPlane before 4.5 named it TRIM_ARSPD_CM, which is not read)" : ""));
     }
 }

@@ -125,7 +125,7 @@ public final class StoredItems {
             }
             case MAV_CMD.MAV_CMD_NAV_TAKEOFF, MAV_CMD.MAV_CMD_NAV_CONTINUE_AND_CHANGE_ALT, MAV_CMD.MAV_CMD_NAV_SPLINE_WAYPOINT,
                     MAV_CMD.MAV_CMD_DO_SET_HOME, MAV_CMD.MAV_CMD_DO_SET_ROI, MAV_CMD.MAV_CMD_DO_SET_ROI_NONE,
-                    MAV_CMD.MAV_CMD_DO_PARACHUTE, MAV_CMD.MAV_CMD_IMAGE_STOP_CAPTURE, MAV_CMD.MAV_CMD_NAV_VTOL_LAND -> p1 = u16(i.param1());
+                    MAV_CMD.MAV_CMD_DO_PARACHUTE, MAV_CMD.MAV_CMD_IMAGE_STOP_CAPTURE -> p1 = u16(i.param1());
             case MAV_CMD.MAV_CMD_NAV_DELAY -> {
                 p1 = i.param1();
                 p2 = (byte) (int) i.param2();

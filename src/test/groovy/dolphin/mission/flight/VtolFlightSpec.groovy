@@ -198,7 +198,8 @@ class VtolFlightSpec extends MissionFlights {
 
         then:
         end.message.endsWith('vehicle 1 (ArduPlane VTOL) cannot fly the mission: the vehicle did not give its AIRSPEED_CRUISE'
-                + ' parameter, which its landing approach is planned with (ArduPlane 4.5 or later names it so)')
+                + ' parameter, which its take-offs and landings are planned with (ArduPlane before 4.5 named it TRIM_ARSPD_CM,'
+                + ' which is not read)')
         vehicle.transfers.empty
     }
 
