@@ -204,7 +204,7 @@ surveyNorth = mission {
     def "an unclosed block in a script that does not parse: completion still knows where it is"() {
         expect:
         beginning('x = (1 +\nm = mission {\n    takeOff location(1, 2, 3)\n    ret|') ==
-                ['returnHome', 'returnHomeAndLand', 'returnHomeAndLoiter']
+                ['returnHome', 'returnHomeAndLand', 'returnHomeAndLandOnRunway', 'returnHomeAndLandVertically', 'returnHomeAndLoiter']
     }
 
     def "mv|oe inside mission { }: move and the mission's other move words first, each replacing the whole word"() {

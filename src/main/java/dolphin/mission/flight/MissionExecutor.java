@@ -287,9 +287,6 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                         + e.getMessage());
             }
             List<MissionItem> items = boarded.items();
-            for (int seq : boarded.added()) {
-                progress("item " + seq + " added: " + items.get(seq).commandName() + ", the approach to the landing after it");
-            }
             for (MissionItem item : items) {
                 var why = rules.cannotFly(item);
                 if (why.isPresent()) {
@@ -309,6 +306,9 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             }
             if (waitingFor != null) {
                 progress("vehicle ready after " + (now - since) / 1_000_000_000L + " s");
+            }
+            for (int seq : boarded.added()) {
+                progress("item " + seq + " added: " + items.get(seq).commandName() + ", the approach to the landing after it");
             }
             Deque<Map.Entry<MissionType, List<MissionItem>>> lists = new ArrayDeque<>();
             if (!mission.fence().isEmpty()) {
