@@ -105,6 +105,27 @@ class SitlHarness implements AutoCloseable {
         }
     }
 
+    /**
+     * Sets each vehicle's battery to {@code percent} (MAV_CMD_BATTERY_RESET) once it flies its
+     * mission's second item, after the take-off, until {@code vehicles} of them are set; their answers
+     * go in {@code resets}, by system id. Interrupt the thread when the feature is over.
+     */
+    Thread setBatteriesOnSurvey(Map<Integer, CommandResult> resets, int vehicles, float percent) {
+        Thread.start('battery reset') {
+            try {
+                while (resets.size() < vehicles) {
+                    comms.nodes().findAll { !resets.containsKey(it.mavLinkId) && it.armed && it.state().missionSeq() >= 2 }.each {
+                        // param1: battery mask (the first battery, the one SYS_STATUS reports), param2: percentage
+                        resets[it.mavLinkId] = command(it, com.MAVLink.enums.MAV_CMD.MAV_CMD_BATTERY_RESET, 1, percent, 0, 0, 0, 0, 0)
+                    }
+                    Thread.sleep(100)
+                }
+            } catch (InterruptedException ignored) {
+                // the feature is over: its cleanup ends the watch
+            }
+        }
+    }
+
     /** Sends a COMMAND_LONG and waits for its COMMAND_ACK (the sender retries on its own). */
     CommandResult command(MAVLinkNode node, int command, float... params) {
         comms.command(node, command, params).get(30, TimeUnit.SECONDS)

@@ -64,19 +64,7 @@ class SitlSpec extends Specification {
     def "started with the vehicles, as a user would: the recorded two-vehicle scenario waits for them to be ready, surveys cut below 70 % (battery set to 72 % on the survey), RTL, return missions, landed at home"() {
         given: 'a watcher that sets each battery to 72 % once its vehicle flies the survey (item 2 on, after the take-off)'
         Map<Integer, CommandResult> resets = new ConcurrentHashMap<>()
-        Thread watcher = Thread.start('battery reset') {
-            try {
-                while (resets.size() < 2) {
-                    sitl.comms.nodes().findAll { !resets.containsKey(it.mavLinkId) && it.armed && it.state().missionSeq() >= 2 }.each {
-                        // param1: battery mask (the first battery, the one SYS_STATUS reports), param2: percentage
-                        resets[it.mavLinkId] = sitl.command(it, MAV_CMD.MAV_CMD_BATTERY_RESET, 1, CUT_BATTERY, 0, 0, 0, 0, 0)
-                    }
-                    Thread.sleep(100)
-                }
-            } catch (InterruptedException ignored) {
-                // the feature is over: its cleanup ends the watch
-            }
-        }
+        Thread watcher = sitl.setBatteriesOnSurvey(resets, 2, CUT_BATTERY)
 
         when: 'the script starts as soon as the SITL processes do (setupSpec)'
         scenario = sitl.run(new File('dsl-examples/two-drones-survey.dolphin').text, 'dsl-examples/two-drones-survey.dolphin', RUN_DEADLINE)

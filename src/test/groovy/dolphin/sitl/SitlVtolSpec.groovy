@@ -52,18 +52,7 @@ class SitlVtolSpec extends Specification {
     def "the report's two-vehicle scenario flown by two QuadPlanes: vertical take-offs, surveys cut below 70 % by QRTL, return missions landing vertically at home"() {
         given: 'a watcher that sets each battery to 72 % once its vehicle flies the survey'
         Map<Integer, CommandResult> resets = new ConcurrentHashMap<>()
-        Thread watcher = Thread.start('battery reset') {
-            try {
-                while (resets.size() < 2) {
-                    sitl.comms.nodes().findAll { !resets.containsKey(it.mavLinkId) && it.armed && it.state().missionSeq() >= 2 }.each {
-                        resets[it.mavLinkId] = sitl.command(it, MAV_CMD.MAV_CMD_BATTERY_RESET, 1, CUT_BATTERY, 0, 0, 0, 0, 0)
-                    }
-                    Thread.sleep(100)
-                }
-            } catch (InterruptedException ignored) {
-                // the feature is over: its cleanup ends the watch
-            }
-        }
+        Thread watcher = sitl.setBatteriesOnSurvey(resets, 2, CUT_BATTERY)
 
         when: 'the script starts as soon as the SITL processes do'
         def r = sitl.run(new File('dsl-examples/two-drones-survey.dolphin').text, 'dsl-examples/two-drones-survey.dolphin', RUN_DEADLINE)
