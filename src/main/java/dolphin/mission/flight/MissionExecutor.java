@@ -287,6 +287,13 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                         + e.getMessage());
             }
             List<MissionItem> items = boarded.items();
+            for (int seq : boarded.added()) {
+                var breached = mission.fence().breachedBy(items.get(seq).position());
+                if (breached.isPresent()) {
+                    return fail("item " + seq + ", the approach waypoint the landing after it needs, is outside the mission's fence ("
+                            + breached.get().describe() + "): write the approach in the mission (docs/vtol.md)");
+                }
+            }
             for (MissionItem item : items) {
                 var why = rules.cannotFly(item);
                 if (why.isPresent()) {

@@ -311,4 +311,35 @@ class VtolFlightSpec extends MissionFlights {
         where:
         family << [VehicleFamily.VTOL, VehicleFamily.PLANE]
     }
+
+    def "an approach waypoint outside the mission's fence is refused before upload; inside it, the mission flies"() {
+        given:
+        quadplane()
+        def task = MissionDsl.mission {
+            name 'fenced'
+            home 40.444233, -7.375234, 820
+            fence {
+                inclusion circle(HOME, radius)
+            }
+            takeOff HOME.atHeight(850)
+            goPos HOME.displace(300, 0, -40)
+            goPos HOME.displace(60, 0, -40)
+            returnHomeAndLand()
+        }
+
+        when:
+        launch(task)
+        def end = runTo(1)
+
+        then:
+        refused ? end.message.endsWith("item 4, the approach waypoint the landing after it needs, is outside the mission's fence"
+                + ' (inclusion circle of 400 m): write the approach in the mission (docs/vtol.md)')
+                : end == CompletionState.IN_PROGRESS && vehicle.stored[MissionType.MISSION].size() == 7
+        refused == vehicle.transfers.empty
+
+        where:
+        radius || refused
+        400    || true
+        500    || false
+    }
 }
