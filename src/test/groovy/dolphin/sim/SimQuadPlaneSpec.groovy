@@ -90,12 +90,12 @@ class SimQuadPlaneSpec extends Specification {
                 .collect { it.replaceAll(/ (v|d|sd|h|dc|airspeed|reached|dist)[= ][-0-9.]+m?/, ' $1') }
     }
 
-    def "it says FIXED_WING, as ArduPlane does with Q_MAV_TYPE 0, boots in MANUAL, and tells its VTOL state: FW in MANUAL, MC on the ground in AUTO"() {
+    def "it says FIXED_WING, as ArduPlane does with Q_MAV_TYPE 0, boots in FLY_BY_WIRE_A (SITL's mode switch), and tells its VTOL state: FW in FLY_BY_WIRE_A, MC on the ground in AUTO"() {
         given:
         def d = quadplane()
         d.run(1)
         def hb = d.since(0, msg_heartbeat).first()
-        def inManual = d.since(0, msg_extended_sys_state).last()
+        def atBoot = d.since(0, msg_extended_sys_state).last()
 
         when:
         d.upload(good())
@@ -104,11 +104,11 @@ class SimQuadPlaneSpec extends Specification {
 
         then:
         hb.type == MAV_TYPE.MAV_TYPE_FIXED_WING
-        hb.custom_mode == PLANE_MODE.PLANE_MODE_MANUAL
+        hb.custom_mode == PLANE_MODE.PLANE_MODE_FLY_BY_WIRE_A
         VehicleKind.QUADPLANE.family() == VehicleFamily.VTOL
         VehicleKind.QUADPLANE.family().firmware() == VehicleFamily.PLANE
-        inManual.vtol_state == MAV_VTOL_STATE.MAV_VTOL_STATE_FW
-        inManual.landed_state == MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND
+        atBoot.vtol_state == MAV_VTOL_STATE.MAV_VTOL_STATE_FW
+        atBoot.landed_state == MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND
         d.since(0, msg_extended_sys_state).last().vtol_state == MAV_VTOL_STATE.MAV_VTOL_STATE_MC
     }
 
