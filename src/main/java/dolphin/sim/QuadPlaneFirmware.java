@@ -73,6 +73,12 @@ final class QuadPlaneFirmware extends PlaneFirmware {
         return PERFORMANCE;
     }
 
+    /** NAVL1_PERIOD: quadplane.parm's. */
+    @Override
+    double l1Period() {
+        return 14;
+    }
+
     /**
      * quadplane.parm's flight mode switch (FLTMODE_CH 5, FLTMODE4 FLY_BY_WIRE_A) at SITL's RC 5 of
      * 1500 (position 4): SITL's QuadPlane was in FLY_BY_WIRE_A from the recordings' first heartbeat.
