@@ -113,7 +113,7 @@ class CopterFirmware implements Firmware {
     }
 
     @Override
-    public double acceptanceRadius(MissionItem waypoint) {
+    public double acceptanceRadius(MissionItem waypoint, double turn) {
         return PERFORMANCE.waypointRadius();
     }
 

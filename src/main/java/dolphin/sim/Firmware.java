@@ -143,8 +143,8 @@ interface Firmware {
         return itemAltitude;
     }
 
-    /** How close a NAV_WAYPOINT counts as reached. */
-    double acceptanceRadius(MissionItem waypoint);
+    /** How close a NAV_WAYPOINT counts as reached, {@code turn} radians (0 to pi) the turn onto the leg after it. */
+    double acceptanceRadius(MissionItem waypoint, double turn);
 
     /**
      * Moves the craft towards {@code target} for {@code dt} seconds, to come within {@code radius} of
@@ -195,6 +195,15 @@ interface Firmware {
 
     /** The STATUSTEXT on arriving at waypoint {@code seq}, {@code distance} metres from it. */
     Optional<String> arrivalText(int seq, double distance, double holdSeconds);
+
+    /**
+     * Plane::verify_nav_wp's other way to a waypoint: past the line through it square to the leg, not
+     * yet within its acceptance distance; the STATUSTEXT that says so. Empty: this firmware does not
+     * take a waypoint that way.
+     */
+    default Optional<String> passedText(int seq, double distance) {
+        return Optional.empty();
+    }
 
     /** The STATUSTEXT when a waypoint (or LOITER_TIME) is complete. */
     Optional<String> completionText(MissionItem item);

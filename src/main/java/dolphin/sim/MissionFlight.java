@@ -19,7 +19,8 @@ import java.util.function.Supplier;
  * How a simulated vehicle flies its stored mission in AUTO, and RTL and LAND, on the fleet's tick in
  * clock time, by AP_Mission's rules: each item started says so ("Mission: 3 WP"); a nav item runs
  * until it completes; the DO items after it run when it does, in the same loop, so their
- * MISSION_ITEM_REACHED coalesces with its; CONDITION_DELAY runs beside the next nav item; DO_JUMP
+ * MISSION_ITEM_REACHED coalesces with its, and the next nav item starts, to be verified from the next
+ * loop on; CONDITION_DELAY runs beside the next nav item; DO_JUMP
  * loops. Where the mission stands and whether it runs is its {@link MissionCursor}. Which nav items
  * the vehicle starts, how it takes off, reaches a point, holds, lands, returns and ends the mission,
  * and whether it waits for MISSION_START, runs its mission disarmed or resets it when disarmed, is
@@ -90,6 +91,15 @@ final class MissionFlight {
     private double timer;
     private Manoeuvre manoeuvre;
     private double exitSpeed;
+    /** The turn at the active waypoint from the leg to it onto the leg after it, in radians (0 to pi); pi when none follows. */
+    private double turn;
+    /**
+     * Where the leg to the nav item started next begins (Plane::set_next_WP's prev_WP_loc): the
+     * waypoint just completed; null, where the vehicle is, after anything else.
+     */
+    private Position legFrom;
+    /** Where the leg to the active nav item began. */
+    private Position legStart;
     // RTL and LAND modes
     private Manoeuvre modeManoeuvre;
     // a pause before the mode's manoeuvre moves (ArduCopter's land_with_pause), holding where it began
@@ -471,6 +481,7 @@ final class MissionFlight {
             groundSeconds = 0;
         }
         conditionStep(dt);
+        boolean verified = false;
         for (int guard = 0; guard < store.count() + 1; guard++) {
             MissionItem item = item();
             if (item == null) {
@@ -497,6 +508,9 @@ final class MissionFlight {
                 }
                 continue;
             }
+            if (verified) {
+                return; // AP_Mission::update verifies one nav item a loop: the one it starts waits for the next
+            }
             if (!body.armed() && firmware.runsMissionDisarmed()) {
                 if (item.command() == MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM) {
                     return;
@@ -515,6 +529,8 @@ final class MissionFlight {
             cursor.next(item.seq() + 1);
             dropActive();
             dt = 0;
+            verified = true;
+            legFrom = item.command() == MAV_CMD.MAV_CMD_NAV_WAYPOINT ? target(item) : null;
             if (!body.armed()) {
                 // landed and disarmed by the item: the mission goes on only through its DO items
                 while (cursor.next() < store.count() && !nav(store.get(cursor.next()).command())
@@ -649,7 +665,10 @@ final class MissionFlight {
             return false;
         }
         active = item;
-        exitSpeed = exitSpeed(item);
+        legStart = legFrom != null ? legFrom : body.craft().position();
+        legFrom = null;
+        turn = turn(item, legStart);
+        exitSpeed = exitSpeed(item, turn(item, body.craft().position()));
         phase = Phase.APPROACH;
         timer = 0;
         modeManoeuvre = null;
@@ -690,13 +709,16 @@ final class MissionFlight {
         boolean plainWaypoint = item.command() != MAV_CMD.MAV_CMD_NAV_LOITER_TIME
                 && item.command() != MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM;
         if (phase == Phase.APPROACH) {
-            double radius = item.command() == MAV_CMD.MAV_CMD_NAV_WAYPOINT ? firmware.acceptanceRadius(item)
+            double radius = item.command() == MAV_CMD.MAV_CMD_NAV_WAYPOINT ? firmware.acceptanceRadius(item, turn)
                     : firmware.performance().waypointRadius();
-            if (!firmware.reach(body.craft(), t, radius, exitSpeed, dt)) {
+            boolean within = firmware.reach(body.craft(), t, radius, exitSpeed, dt);
+            Optional<String> passed = within || !plainWaypoint || !pastFinishLine(legStart, t, body.craft().position())
+                    ? Optional.empty() : firmware.passedText(item.seq(), body.craft().distanceTo(t));
+            if (!within && passed.isEmpty()) {
                 return false;
             }
             if (plainWaypoint) {
-                firmware.arrivalText(item.seq(), body.craft().distanceTo(t), holdSeconds)
+                passed.or(() -> firmware.arrivalText(item.seq(), body.craft().distanceTo(t), holdSeconds))
                         .ifPresent(s -> body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, s));
             }
             phase = Phase.HOLD;
@@ -759,21 +781,46 @@ final class MissionFlight {
      * The speed at which it leaves a waypoint: 0, stopping on it, when the waypoint holds (p1 > 0),
      * no nav item follows or its firmware stops before that one; else slowed for the turn to the next.
      */
-    private double exitSpeed(MissionItem item) {
-        boolean waypoint = item.command() == MAV_CMD.MAV_CMD_NAV_WAYPOINT || item.command() == MAV_CMD.MAV_CMD_NAV_SPLINE_WAYPOINT;
-        int after = waypoint && item.param1() <= 0 ? cursor.navFrom(item.seq() + 1) : -1;
-        MissionItem next = after < 0 ? null : store.get(after);
+    private double exitSpeed(MissionItem item, double turnFromHere) {
+        MissionItem next = passedOnTo(item);
         if (next == null || !firmware.passesOn(next)) {
             return 0;
         }
-        Position here = body.craft().position();
+        return firmware.performance().passingSpeed(body.craft().speed(), turnFromHere);
+    }
+
+    /** The nav item it flies on to from a waypoint without a hold time; null if none, or it holds. */
+    private MissionItem passedOnTo(MissionItem item) {
+        boolean waypoint = item.command() == MAV_CMD.MAV_CMD_NAV_WAYPOINT || item.command() == MAV_CMD.MAV_CMD_NAV_SPLINE_WAYPOINT;
+        int after = waypoint && item.param1() <= 0 ? cursor.navFrom(item.seq() + 1) : -1;
+        return after < 0 ? null : store.get(after);
+    }
+
+    /**
+     * Location::past_interval_finish_line: {@code here} is past the line through {@code to} square to
+     * the leg from {@code from}, or within a millimetre of it, as the simulated plane is when it has
+     * flown onto the point itself; a leg under a millimetre long is passed at once.
+     */
+    private static boolean pastFinishLine(Position from, Position to, Position here) {
+        double[] leg = from.displacementTo(to);
+        double[] gone = from.displacementTo(here);
+        double length = Math.hypot(leg[0], leg[1]);
+        return length < 1e-3 || (gone[0] * leg[0] + gone[1] * leg[1]) / length >= length - 1e-3;
+    }
+
+    /** The turn at {@code item} from the leg to it from {@code from} onto the leg after it; pi if it holds or none follows. */
+    private double turn(MissionItem item, Position from) {
+        MissionItem next = passedOnTo(item);
+        if (next == null) {
+            return Math.PI;
+        }
         Position at = target(item);
-        double[] in = here.displacementTo(at);
+        double[] in = from.displacementTo(at);
         double[] out = at.displacementTo(target(next, at));
-        double turn = Math.hypot(in[0], in[1]) < 1 || Math.hypot(out[0], out[1]) < 1 ? Math.PI
-                : Math.atan2(out[1], out[0]) - Math.atan2(in[1], in[0]);
-        turn = Math.abs(Math.IEEEremainder(turn, 2 * Math.PI));
-        return firmware.performance().passingSpeed(body.craft().speed(), turn);
+        if (Math.hypot(in[0], in[1]) < 1 || Math.hypot(out[0], out[1]) < 1) {
+            return Math.PI;
+        }
+        return Math.abs(Math.IEEEremainder(Math.atan2(out[1], out[0]) - Math.atan2(in[1], in[0]), 2 * Math.PI));
     }
 
     private double altitude(MissionItem item) {

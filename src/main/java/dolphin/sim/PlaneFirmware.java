@@ -26,6 +26,8 @@ import java.util.Set;
 class PlaneFirmware implements Firmware {
 
     private static final Performance PERFORMANCE = new Performance(20, 5, 3, 55, 60, 0, 20);
+    /** NAVL1_DAMPING's default. */
+    private static final double L1_DAMPING = 0.75;
     /** ArduPlane's modes that navigate by themselves (Mode::does_auto_navigation), and AUTO. */
     private static final Set<Integer> AUTO_NAVIGATION = Set.of(PLANE_MODE.PLANE_MODE_AUTO, PLANE_MODE.PLANE_MODE_GUIDED,
             PLANE_MODE.PLANE_MODE_CIRCLE, PLANE_MODE.PLANE_MODE_LOITER, PLANE_MODE.PLANE_MODE_RTL, PLANE_MODE.PLANE_MODE_TAKEOFF,
@@ -124,9 +126,23 @@ class PlaneFirmware implements Firmware {
         return true;
     }
 
+    /**
+     * Plane::verify_nav_wp: p2, or AP_L1_Control::turn_distance: the lesser of WP_RADIUS and the L1
+     * distance at cruise, in proportion to a turn of less than 90 degrees, so that a waypoint straight
+     * ahead is flown over.
+     */
     @Override
-    public double acceptanceRadius(MissionItem waypoint) {
-        return waypoint.param2() > 0 ? waypoint.param2() : performance().waypointRadius();
+    public double acceptanceRadius(MissionItem waypoint, double turn) {
+        if (waypoint.param2() > 0) {
+            return waypoint.param2();
+        }
+        double distance = Math.min(performance().waypointRadius(), L1_DAMPING * l1Period() * performance().speed() / Math.PI);
+        return distance * Math.min(1, turn / (Math.PI / 2));
+    }
+
+    /** NAVL1_PERIOD: models/plane.parm's. */
+    double l1Period() {
+        return 15;
     }
 
     /** Within the radius horizontally; the height is only flown towards. */
@@ -160,6 +176,11 @@ class PlaneFirmware implements Firmware {
     @Override
     public Optional<String> arrivalText(int seq, double distance, double holdSeconds) {
         return Optional.of(String.format(Locale.ROOT, "Reached waypoint #%d dist %dm", seq, Math.round(distance)));
+    }
+
+    @Override
+    public Optional<String> passedText(int seq, double distance) {
+        return Optional.of(String.format(Locale.ROOT, "Passed waypoint #%d dist %dm", seq, Math.round(distance)));
     }
 
     @Override

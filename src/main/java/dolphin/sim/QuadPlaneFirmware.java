@@ -15,7 +15,7 @@ import java.util.Set;
 
 /**
  * ArduPlane with Q_ENABLE 1 as SITL runs it with {@code --model quadplane} and quadplane.parm: a plane
- * (heartbeat MAV_TYPE_FIXED_WING, boots in MANUAL, 1 Hz streams) that cruises at AIRSPEED_CRUISE
+ * (heartbeat MAV_TYPE_FIXED_WING, boots in FLY_BY_WIRE_A, 1 Hz streams) that cruises at AIRSPEED_CRUISE
  * 25 m/s, reaches waypoints within WP_RADIUS's default 90 m and takes off and lands on its lift
  * motors. NAV_TAKEOFF and NAV_VTOL_TAKEOFF climb straight up at Q_PILOT_SPD_UP to their altitude above
  * where it is, and are reached there; on the next leg it transitions ({@link VtolLift}). NAV_LAND and
@@ -71,6 +71,21 @@ final class QuadPlaneFirmware extends PlaneFirmware {
     @Override
     public Performance performance() {
         return PERFORMANCE;
+    }
+
+    /** NAVL1_PERIOD: quadplane.parm's. */
+    @Override
+    double l1Period() {
+        return 14;
+    }
+
+    /**
+     * quadplane.parm's flight mode switch (FLTMODE_CH 5, FLTMODE4 FLY_BY_WIRE_A) at SITL's RC 5 of
+     * 1500 (position 4): SITL's QuadPlane was in FLY_BY_WIRE_A from the recordings' first heartbeat.
+     */
+    @Override
+    public int bootMode() {
+        return PLANE_MODE.PLANE_MODE_FLY_BY_WIRE_A;
     }
 
     @Override

@@ -111,7 +111,7 @@ final class RoverFirmware implements Firmware {
 
     /** AR_WPNav takes WP_RADIUS whatever the item's param2 says (a plane's acceptance radius, 50 m in our waypoints). */
     @Override
-    public double acceptanceRadius(MissionItem waypoint) {
+    public double acceptanceRadius(MissionItem waypoint, double turn) {
         return PERFORMANCE.waypointRadius();
     }
 

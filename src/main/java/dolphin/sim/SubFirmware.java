@@ -191,7 +191,7 @@ final class SubFirmware implements Firmware {
     }
 
     @Override
-    public double acceptanceRadius(MissionItem waypoint) {
+    public double acceptanceRadius(MissionItem waypoint, double turn) {
         return PERFORMANCE.waypointRadius();
     }
 

@@ -21,12 +21,22 @@ import groovy.transform.EqualsAndHashCode
  * mode), MISSION_CURRENT (seq, total, state), MISSION_ITEM_REACHED, EXTENDED_SYS_STATE (landed
  * state), COMMAND_ACK (command, result; not SET_MESSAGE_INTERVAL's), MISSION_ACK, the STATUSTEXTs in
  * {@link #TEXTS}, cut to those words, AUTOPILOT_VERSION (capabilities, version) and
- * FILE_TRANSFER_PROTOCOL (each reply whole: header, addressee, and the bytes it carries).
+ * FILE_TRANSFER_PROTOCOL (each reply whole: header, addressee, and the bytes it carries). A
+ * QuadPlane's transition and VTOL landing texts are its stages, which the runtime follows; the
+ * airspeeds, distances and heights they end with (QuadPlane::vtol_position_controller's v, d, sd, h,
+ * dc) come from SITL's physics, so they are cut off. Not kept: "Reached waypoint" and "Passed
+ * waypoint" (which of the two, and the distance, depend on the turn), "Mission: N" (it names every
+ * item, also those MISSION_CURRENT never shows), "Throttle armed" and "Arming motors" (the arming's
+ * ACK and heartbeat say it).
  */
 class KeyFrames {
 
     static final List<String> TEXTS = ['SIM Hit ground', 'Disarming motors', 'Mission complete, changing mode to RTL',
-                                       'Mode change failed: Auto requires position', 'Bad alt frame', 'Internal Errors']
+                                       'Mode change failed: Auto requires position', 'Bad alt frame', 'Internal Errors',
+                                       'Transition started', 'Transition airspeed reached', 'Transition done',
+                                       'VTOL approach', 'VTOL airbrake', 'VTOL position1', 'VTOL position2 started',
+                                       'Land descend started', 'Land final started', 'Land complete', 'Throttle disarmed',
+                                       'In landing sequence: mission reset', 'Mode change to Auto failed: runup not complete']
 
     /** MAV_FTP_OPCODE names, of the requests a reply answers and of the reply itself. */
     static final Map<Integer, String> FTP_OPCODES = [0: 'None', 1: 'TerminateSession', 2: 'ResetSessions', 3: 'ListDirectory',

@@ -24,7 +24,14 @@ import spock.lang.Specification
  * the mission; dolphin's AMSL items refused by a sub ("Bad alt frame"), on DO_SET_MISSION_CURRENT and
  * again on AUTO, the mission COMPLETE at once; the fence flight and the survey again with their fence,
  * rally points and mission written over MAVLink FTP and read back, the survey's in a burst of five
- * ACKs (docs/mavlink.md, "The simulated fleet and real ArduPilot").
+ * ACKs; a QuadPlane's hop, booted in FLY_BY_WIRE_A (quadplane.parm's mode switch), armed in AUTO:
+ * the VTOL take-off reached, the transition's texts, the landing's stages from the airbrake on, the
+ * disarm in AUTO at the landing item, then QLOITER, "In landing sequence: mission reset" and the
+ * mission NOT_STARTED at 0; a helicopter's first flight: the motor interlock off (DO_AUX_FUNCTION),
+ * GUIDED, armed, the interlock on, AUTO refused FAILED ("Mode change to Auto failed: runup not
+ * complete") then accepted once the rotor has run up, the copter's flight, landing, disarm and
+ * mission started over, and the interlock off again (docs/mavlink.md, "The simulated fleet and real
+ * ArduPilot").
  *
  * <p>An FTP reply is compared whole (opcode, the request's, addressee, session, seq, size, offset,
  * burst_complete, its data: the file as the vehicle stores it, or a NAK's error), and so are
@@ -123,6 +130,24 @@ class RecordingConformanceSpec extends Specification {
                                                                'MISSION_CURRENT seq=24 total=24 state=3', 'EXTENDED_SYS_STATE landed_state=4',
                                                                'STATUSTEXT SIM Hit ground', 'STATUSTEXT Disarming motors',
                                                                'MISSION_CURRENT seq=1 total=24 state=3', 'HEARTBEAT armed=0 mode=3']
+        'quadplane-hop'               | VehicleKind.QUADPLANE || ['HEARTBEAT armed=1 mode=10', 'MISSION_ITEM_REACHED seq=1',
+                                                                  'STATUSTEXT Transition started', 'STATUSTEXT Transition airspeed reached',
+                                                                  'STATUSTEXT Transition done', 'MISSION_ITEM_REACHED seq=6',
+                                                                  'STATUSTEXT VTOL airbrake', 'MISSION_CURRENT seq=7 total=7 state=3', 'STATUSTEXT VTOL position1',
+                                                                  'STATUSTEXT VTOL position2 started', 'STATUSTEXT Land descend started',
+                                                                  'EXTENDED_SYS_STATE landed_state=4', 'STATUSTEXT Land final started',
+                                                                  'STATUSTEXT Land complete', 'STATUSTEXT Throttle disarmed',
+                                                                  'HEARTBEAT armed=0 mode=10', 'COMMAND_ACK command=176 result=0',
+                                                                  'HEARTBEAT armed=0 mode=19', 'STATUSTEXT In landing sequence: mission reset',
+                                                                  'MISSION_CURRENT seq=0 total=7 state=2']
+        'heli-first-flight'           | VehicleKind.HELI      || ['COMMAND_ACK command=218 result=0', 'COMMAND_ACK command=400 result=0',
+                                                                  'COMMAND_ACK command=218 result=0', 'COMMAND_ACK command=176 result=4',
+                                                                  'STATUSTEXT Mode change to Auto failed: runup not complete',
+                                                                  'COMMAND_ACK command=176 result=0', 'HEARTBEAT armed=1 mode=3',
+                                                                  'MISSION_CURRENT seq=4 total=4 state=3', 'EXTENDED_SYS_STATE landed_state=4',
+                                                                  'STATUSTEXT SIM Hit ground', 'STATUSTEXT Disarming motors',
+                                                                  'MISSION_CURRENT seq=1 total=4 state=3', 'HEARTBEAT armed=0 mode=3',
+                                                                  'COMMAND_ACK command=218 result=0']
     }
 
     /** Whether {@code expected} occur in {@code lines} in this order, others between them allowed. */

@@ -90,12 +90,12 @@ class SimQuadPlaneSpec extends Specification {
                 .collect { it.replaceAll(/ (v|d|sd|h|dc|airspeed|reached|dist)[= ][-0-9.]+m?/, ' $1') }
     }
 
-    def "it says FIXED_WING, as ArduPlane does with Q_MAV_TYPE 0, boots in MANUAL, and tells its VTOL state: FW in MANUAL, MC on the ground in AUTO"() {
+    def "it says FIXED_WING, as ArduPlane does with Q_MAV_TYPE 0, boots in FLY_BY_WIRE_A (SITL's mode switch), and tells its VTOL state: FW in FLY_BY_WIRE_A, MC on the ground in AUTO"() {
         given:
         def d = quadplane()
         d.run(1)
         def hb = d.since(0, msg_heartbeat).first()
-        def inManual = d.since(0, msg_extended_sys_state).last()
+        def atBoot = d.since(0, msg_extended_sys_state).last()
 
         when:
         d.upload(good())
@@ -104,11 +104,11 @@ class SimQuadPlaneSpec extends Specification {
 
         then:
         hb.type == MAV_TYPE.MAV_TYPE_FIXED_WING
-        hb.custom_mode == PLANE_MODE.PLANE_MODE_MANUAL
+        hb.custom_mode == PLANE_MODE.PLANE_MODE_FLY_BY_WIRE_A
         VehicleKind.QUADPLANE.family() == VehicleFamily.VTOL
         VehicleKind.QUADPLANE.family().firmware() == VehicleFamily.PLANE
-        inManual.vtol_state == MAV_VTOL_STATE.MAV_VTOL_STATE_FW
-        inManual.landed_state == MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND
+        atBoot.vtol_state == MAV_VTOL_STATE.MAV_VTOL_STATE_FW
+        atBoot.landed_state == MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND
         d.since(0, msg_extended_sys_state).last().vtol_state == MAV_VTOL_STATE.MAV_VTOL_STATE_MC
     }
 
@@ -201,7 +201,7 @@ class SimQuadPlaneSpec extends Specification {
         d.texts().contains('Mission: 1 VTOLTakeoff')
         d.texts().contains('Mission: 4 VTOLLand')
         d.texts().contains('Transition started airspeed 0.0')
-        d.texts().contains('VTOL approach d=492.4')
+        d.texts().contains('VTOL approach d=498.1') // SITL: 506.6; item 3 taken at the L1 distance, 84 m, SITL's at 85 to 88 m
 
         and: 'its states as SITL reported them: MC, TRANSITION_TO_FW, FW, TRANSITION_TO_MC, MC; TAKEOFF, IN_AIR, LANDING, ON_GROUND'
         changes(d, 0) { it.vtol_state } == [MAV_VTOL_STATE.MAV_VTOL_STATE_FW, MAV_VTOL_STATE.MAV_VTOL_STATE_MC,
@@ -221,6 +221,25 @@ class SimQuadPlaneSpec extends Specification {
         d.vehicle.position().horizontalDistanceTo(HOME) < 0.5
         heightOf(d) == 0
         flight > 100 && flight < 130
+    }
+
+    def "as a plane it takes a waypoint as ArduPlane does: flown over when the next leg goes straight on, at the L1 distance (84 m) before a turn of 90 degrees, in proportion before a smaller one; one a loop"() {
+        given: 'item 3 two metres past item 2, within its acceptance distance when item 2 is reached'
+        def d = armedInAuto([home(), takeoff(), item(2, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 400, 0, 40),
+                             item(3, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 402, 0, 40), item(4, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 402, 400, 40),
+                             item(5, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 802, 400, 40), item(6, MAV_CMD.MAV_CMD_NAV_VTOL_LAND, 1202, 800, 0)])
+
+        when:
+        d.runUntil(120, 'the landing') { d.vehicle.missionCurrent() == 6 }
+
+        then: 'Plane::verify_nav_wp with AP_L1_Control::turn_distance (NAVL1_PERIOD 14, NAVL1_DAMPING 0.75, 25 m/s), or past the finish line'
+        d.texts().findAll { it ==~ /(Reached|Passed) waypoint.*/ } == ['Passed waypoint #2 dist 0m', 'Reached waypoint #3 dist 1m',
+                                                                      'Reached waypoint #4 dist 83m', 'Reached waypoint #5 dist 41m']
+
+        and: 'AP_Mission verifies one nav item a loop: items 2 and 3 are reported one after the other, each on its own'
+        def reached = d.sent.findAll { it.message instanceof msg_mission_item_reached }
+        reached*.message*.seq == [1, 2, 3, 4, 5]
+        reached[2].at - reached[1].at == SimDriver.TICK
     }
 
     def "the take-off climbs straight up at Q_PILOT_SPD_UP to 30 m above where it stands and is reached there, before the transition"() {

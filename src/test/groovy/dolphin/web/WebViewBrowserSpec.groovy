@@ -185,7 +185,7 @@ class WebViewBrowserSpec extends Specification {
         socket?.close()
     }
 
-    def "a QuadPlane's row says how it flies, from its VTOL state: plane in MANUAL, hovering on the ground in AUTO; a copter's says nothing of it"() {
+    def "a QuadPlane's row says how it flies, from its VTOL state: plane in FLY_BY_WIRE_A, hovering on the ground in AUTO; a copter's says nothing of it"() {
         given: 'a QuadPlane, vehicle 3, beside the two copters'
         browser.get(view.address())
         waitUntil(10) { $('#connection[data-state="live"]') }
@@ -194,7 +194,7 @@ class WebViewBrowserSpec extends Specification {
         quadplane.start()
 
         expect:
-        waitUntil(30) { modeCell('3') == 'MANUAL, plane' }
+        waitUntil(30) { modeCell('3') == 'FLY_BY_WIRE_A, plane' }
         modeCell('1') == 'STABILIZE'
 
         when:
