@@ -214,8 +214,9 @@ class WebViewBrowserSpec extends Specification {
     }
 
     /** The mode column of a vehicle's row in the table. */
+    /** The mode column of a vehicle's row, or null before the row is drawn (a wait asks again). */
     private String modeCell(String id) {
-        browser.executeScript('return document.querySelector(`#vehicles tr[data-vehicle="${arguments[0]}"] td:nth-child(3)`).innerText', id)
+        browser.executeScript('return document.querySelector(`#vehicles tr[data-vehicle="${arguments[0]}"] td:nth-child(3)`)?.innerText', id)
     }
 
     /** The vehicles' labels on the map. */

@@ -102,7 +102,7 @@ final class VtolItems {
 
     /**
      * The approach a landing needs when the navigation item before it is a waypoint nearer than the
-     * stopping distance plus WP_RADIUS: ArduPlane counts a waypoint reached up to WP_RADIUS before it,
+     * stopping distance plus WP_RADIUS: ArduPlane counts a waypoint reached up to WP_RADIUS before it (at most),
      * so it may start its landing that much nearer, and heading away. The approach is a leg straight
      * to the landing: its far waypoint three WP_RADIUS beyond the near one, so that the vehicle turns
      * towards the near one before it reaches it; the near one the stopping distance out. Both are on
