@@ -104,14 +104,6 @@ public interface FlightRules {
         return false;
     }
 
-    /**
-     * Whether the first item is made current before arming, for a family armed in AUTO: armed there,
-     * it starts at once from its current item, which may be a previous flight's.
-     */
-    default boolean setsFirstItemBeforeArming() {
-        return false;
-    }
-
     /** Whether AUTO must be followed by MAV_CMD_MISSION_START before the vehicle moves; by default AUTO starts it. */
     default boolean needsMissionStart() {
         return false;
@@ -285,11 +277,6 @@ public interface FlightRules {
             @Override
             public Optional<String> armMode() {
                 return Optional.of("AUTO");
-            }
-
-            @Override
-            public boolean setsFirstItemBeforeArming() {
-                return true;
             }
 
             @Override

@@ -516,7 +516,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             super(FlightState.ARM, config.arm());
             this.plan = plan;
             nextAttempt = clock().nanoTime();
-            if (rules.setsFirstItemBeforeArming()) {
+            if (armsInAuto()) {
                 before.add(firstItemCurrent());
             }
         }
@@ -610,7 +610,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                         MAV_CMD.MAV_CMD_DO_FENCE_ENABLE, 1, 0), st -> false));
             }
             rules.afterArming().forEach(c -> steps.add(familyStep(c)));
-            if (!rules.setsFirstItemBeforeArming()) {
+            if (!armsInAuto()) {
                 steps.add(firstItemCurrent());
             }
             steps.add(new CommandSteps.Step("AUTO", () -> {
@@ -826,6 +826,11 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             }
             return jumping;
         }
+    }
+
+    /** Armed in AUTO, a vehicle starts at once from its current item, which may be a previous flight's: item 1 is made current first. */
+    private boolean armsInAuto() {
+        return rules.armMode().filter("AUTO"::equals).isPresent();
     }
 
     private CommandSteps.Step firstItemCurrent() {
