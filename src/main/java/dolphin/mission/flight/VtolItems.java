@@ -76,10 +76,10 @@ final class VtolItems {
         return command == MAV_CMD.MAV_CMD_NAV_LAND || command == MAV_CMD.MAV_CMD_NAV_VTOL_LAND;
     }
 
-    /** A climb to the take-off's height above home, where the vehicle stands. */
+    /** A climb to the take-off's height above home (or above the ground, in a terrain frame), where the vehicle stands. */
     private static MissionItem vtolTakeoff(MissionItem t, MissionItem home) {
-        boolean aboveHome = MissionItem.altitudeReference(t.frame()) == MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT;
-        float climb = aboveHome ? t.z() : t.z() - home.z();
+        boolean aboveSeaLevel = MissionItem.altitudeReference(t.frame()) == MAV_FRAME.MAV_FRAME_GLOBAL;
+        float climb = aboveSeaLevel ? t.z() - home.z() : t.z();
         return new MissionItem(t.seq(), MAV_CMD.MAV_CMD_NAV_VTOL_TAKEOFF, MAV_FRAME.MAV_FRAME_GLOBAL_RELATIVE_ALT_INT, 0, 0, 0,
                 t.param4(), t.x(), t.y(), climb, t.autocontinue());
     }
