@@ -275,13 +275,14 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                     return fail(wrongVehicle.get());
                 }
                 List<MissionItem> written = mission.items(vehicleHome);
-                Optional<String> wrongWay = wrongWay(written);
+                Map<Integer, FlightWay> ways = mission.ways();
+                Optional<String> wrongWay = wrongWay(written, ways);
                 if (wrongWay.isPresent()) {
                     return fail(wrongWay.get());
                 }
                 Map<String, OptionalDouble> values = new LinkedHashMap<>();
                 parameters.forEach((name, value) -> values.put(name, value.join()));
-                boarded = rules.onBoard(written, new Boarding(mission.underwater().orElse(null), mission::wayOf, values));
+                boarded = rules.onBoard(written, new Boarding(mission.underwater().orElse(null), ways, values));
             } catch (RuntimeException e) {
                 return fail("vehicle " + vehicle.vehicleId() + " (" + vehicle.state().family() + ") cannot fly the mission: "
                         + e.getMessage());
@@ -356,12 +357,12 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         }
 
         /** A take-off or landing the script says to fly in a way the vehicle does not (a plane that is no VTOL, vertically). */
-        private Optional<String> wrongWay(List<MissionItem> items) {
-            for (MissionItem item : items) {
-                FlightWay way = mission.wayOf(item.seq());
-                if (!rules.flightWays().contains(way)) {
-                    return Optional.of("item " + item.seq() + " (" + item.commandName() + ") is to be flown " + way + ", which vehicle "
-                            + vehicle.vehicleId() + " (" + vehicle.state().family() + ") does not do");
+        private Optional<String> wrongWay(List<MissionItem> items, Map<Integer, FlightWay> ways) {
+            for (Map.Entry<Integer, FlightWay> e : ways.entrySet()) {
+                if (!rules.flightWays().contains(e.getValue())) {
+                    return Optional.of("item " + e.getKey() + " (" + items.get(e.getKey()).commandName() + ") is to be flown "
+                            + e.getValue() + ", which vehicle " + vehicle.vehicleId() + " (" + vehicle.state().family()
+                            + ") does not do");
                 }
             }
             return Optional.empty();

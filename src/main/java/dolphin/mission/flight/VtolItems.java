@@ -51,7 +51,7 @@ final class VtolItems {
         List<MissionItem> out = new ArrayList<>();
         List<Integer> added = new ArrayList<>();
         for (MissionItem item : items) {
-            FlightWay way = boarding.wayOf().apply(item.seq());
+            FlightWay way = boarding.way(item.seq());
             MissionItem flown = switch (item.command()) {
                 case MAV_CMD.MAV_CMD_NAV_TAKEOFF -> way == FlightWay.RUNWAY ? allowed(item, ALLOW_FW_TAKEOFF, "take-offs")
                         : vtolTakeoff(item, home);

@@ -8,6 +8,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.TreeMap;
 
 /**
  * A MAVLink mission: the commands of a {@code mission { }} block (or of a file), turned into the
@@ -159,21 +160,20 @@ public final class Mission {
     }
 
     /**
-     * How the take-off or landing at item {@code seq} of {@link #items} is to be flown; AS_THE_VEHICLE_DOES
-     * for any other item, and for items read from a file, which say it by their command.
+     * The take-offs and landings of {@link #items} that say how they are to be flown, by seq; any
+     * other item is flown as the vehicle does, as are items read from a file, which say it by their
+     * command. One pass over the points: a survey's items are not made again per item.
      */
-    public FlightWay wayOf(int seq) {
-        int first = 1;
-        for (DroneCommand c : droneCommands) {
-            if (c instanceof MissionPoint p) {
-                int count = p.messageCount();
-                if (seq >= first && seq < first + count) {
-                    return p instanceof TakeOffPoint t ? t.way() : p instanceof LandingPoint l ? l.way() : FlightWay.AS_THE_VEHICLE_DOES;
-                }
-                first += count;
+    public Map<Integer, FlightWay> ways() {
+        Map<Integer, FlightWay> ways = new TreeMap<>();
+        for (NumberedPoint n : numberedPoints()) {
+            FlightWay way = n.point() instanceof TakeOffPoint t ? t.way()
+                    : n.point() instanceof LandingPoint l ? l.way() : FlightWay.AS_THE_VEHICLE_DOES;
+            if (way != FlightWay.AS_THE_VEHICLE_DOES) {
+                ways.put(n.firstSeq(), way);
             }
         }
-        return FlightWay.AS_THE_VEHICLE_DOES;
+        return ways;
     }
 
     private Position placeholderHome(Position vehicleHome) {
