@@ -81,9 +81,9 @@ public interface FlightRules {
     }
 
     /**
-     * Sent to a disarmed vehicle before it is judged ready, each until accepted: what its pre-arm
-     * checks need that only the ground station gives (a helicopter's motor interlock off). Never to
-     * an armed one: a helicopter's interlock off in flight is autorotation.
+     * Sent to a disarmed vehicle that has a position estimate, before its pre-arm checks are judged,
+     * each until accepted: what those checks need that only the ground station gives (a helicopter's
+     * motor interlock off). Never to an armed one: a helicopter's interlock off in flight is autorotation.
      */
     default List<FamilyCommand> onTheGround() {
         return List.of();

@@ -217,7 +217,11 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     private final class Preparing extends Stage {
         private final long since;
         private final CommandSteps steps;
-        /** The family's commands to a disarmed vehicle before it can pass its pre-arm checks. */
+        /**
+         * The family's commands to a disarmed vehicle before it can pass its pre-arm checks, once it has a
+         * position estimate: sent at boot, ArduCopter's first read of its RC inputs undid a helicopter's
+         * interlock switched off (SITL, started with the script).
+         */
         private final CommandSteps grounded;
         private boolean ready;
         /** The vehicle's parameters its family needs, once asked; each read completes empty when unanswered. */
@@ -237,10 +241,15 @@ public final class MissionExecutor extends PlatformTaskExecutor {
 
         @Override
         CompletionState step(long now) {
-            if (!grounded.run(now)) {
-                return grounded.failure() != null ? fail(grounded.failure()) : CompletionState.IN_PROGRESS;
-            }
             if (!ready) {
+                var unlocated = Readiness.unlocated(vehicle.state(), mission.getHome() == null);
+                if (unlocated.isPresent()) {
+                    waitFor(unlocated.get());
+                    return CompletionState.IN_PROGRESS;
+                }
+                if (!grounded.run(now)) {
+                    return grounded.failure() != null ? fail(grounded.failure()) : CompletionState.IN_PROGRESS;
+                }
                 var missing = Readiness.missing(vehicle.state(), mission.getHome() == null);
                 if (missing.isPresent()) {
                     waitFor(missing.get());

@@ -22,6 +22,21 @@ final class Readiness {
 
     /** What the vehicle still lacks, or empty when it is ready. */
     static Optional<String> missing(VehicleState s, boolean needsHome) {
+        Optional<String> unlocated = unlocated(s, needsHome);
+        if (unlocated.isPresent()) {
+            return unlocated;
+        }
+        if (!s.armed() && prearmFailing(s.systemStatus())) {
+            return Optional.of(prearmText(s).orElse("pre-arm checks failing"));
+        }
+        return Optional.empty();
+    }
+
+    /**
+     * What the vehicle lacks apart from its pre-arm checks: a position estimate, and a home when the
+     * mission names none. A vehicle that has them has booted and read its RC inputs.
+     */
+    static Optional<String> unlocated(VehicleState s, boolean needsHome) {
         if (s.position() == null) {
             return Optional.of(prearmText(s).orElse("no position estimate yet"));
         }
@@ -30,9 +45,6 @@ final class Readiness {
         }
         if (needsHome && s.home() == null) {
             return Optional.of(prearmText(s).orElse("no home position yet"));
-        }
-        if (!s.armed() && prearmFailing(s.systemStatus())) {
-            return Optional.of(prearmText(s).orElse("pre-arm checks failing"));
         }
         return Optional.empty();
     }

@@ -342,4 +342,25 @@ class VtolFlightSpec extends MissionFlights {
         400    || true
         500    || false
     }
+
+    def "a helicopter's interlock goes off once it has a position estimate, not at boot, when ArduCopter has not read its RC yet"() {
+        given:
+        vehicle = new FakeFlightVehicle(clock, '1', VehicleFamily.HELI)
+        vehicle.autopilot = true
+
+        when:
+        launch(hop())
+        runTo(1)
+
+        then:
+        vehicle.commands.empty
+        messages == ['waiting for vehicle 1: no position estimate yet']
+
+        when:
+        vehicle.ready()
+        runTo(2)
+
+        then:
+        vehicle.commands*.text.first() == 'DO_AUX_FUNCTION 32 0'
+    }
 }
