@@ -622,11 +622,12 @@ public final class MAVLinkCommunications implements AutoCloseable {
         // is SYSID@LINK, LINK counting the links from 1 in the order they were given.
         String plain = String.valueOf(frame.sysid());
         String id = nodesById.containsKey(plain) ? plain + "@" + (link.index() + 1) : plain;
+        Autopilot autopilot = Autopilot.of(hb.autopilot);
         VehicleFamily family = VehicleFamily.of(hb.type, hb.autopilot);
-        MAVLinkNode node = new MAVLinkNode(id, type, this, link, peer, frame.sysid(), frame.compid(), family, clock);
+        MAVLinkNode node = new MAVLinkNode(id, type, this, link, peer, frame.sysid(), frame.compid(), autopilot, family, clock);
         nodesByKey.put(link.index() + "/" + frame.sysid(), node);
         nodesById.put(id, node);
-        LOG.info("discovered vehicle {} ({}, {}) on {} at {}", id, type, family, link, peer);
+        LOG.info("discovered vehicle {} ({}, {}) on {} at {}", id, type, autopilot.label(family), link, peer);
         telemetry.discovered(node, clock.nanoTime());
         capabilities.ask(node, clock.nanoTime());
         return node;

@@ -49,14 +49,14 @@ public final class MAVLinkNode extends AbstractNode {
     boolean wasConnected = true;
 
     MAVLinkNode(String id, String type, MAVLinkCommunications comms, Link link, SocketAddress address, int sysid,
-                int autopilotCompid, VehicleFamily family, Clock clock) {
+                int autopilotCompid, Autopilot autopilot, VehicleFamily family, Clock clock) {
         super(id, type, Payload.NONE);
         this.comms = comms;
         this.links = new VehicleLinks(link, address, clock.nanoTime());
         this.sysid = sysid;
         this.autopilotCompid = autopilotCompid;
         this.clock = clock;
-        this.state = new AtomicReference<>(VehicleState.initial(family));
+        this.state = new AtomicReference<>(VehicleState.initial(autopilot, family));
         this.contact = new Contact(id, clock);
     }
 

@@ -1,59 +1,51 @@
 package dolphin.mavlink;
 
-import com.MAVLink.enums.COPTER_MODE;
-import com.MAVLink.enums.MAV_AUTOPILOT;
 import com.MAVLink.enums.MAV_TYPE;
 import com.MAVLink.enums.MAV_VTOL_STATE;
-import com.MAVLink.enums.PLANE_MODE;
-import com.MAVLink.enums.ROVER_MODE;
-import com.MAVLink.enums.SUB_MODE;
-import java.util.Locale;
-import java.util.Map;
-import java.util.OptionalLong;
 
 /**
- * The kind of ArduPilot vehicle, which decides its mode numbers and how a mission starts, flies and
- * ends (docs/mavlink.md, "How each family flies a mission"). A QuadPlane (VTOL) runs ArduPlane and a
- * traditional helicopter (HELI) ArduCopter, with their modes, but take off, land and start
- * differently (docs/vtol.md). Other autopilots are OTHER: discovered and usable, modes shown as numbers.
+ * The kind of vehicle, which with its {@link Autopilot} decides its mode numbers and how a mission
+ * starts, flies and ends (docs/mavlink.md, "How each family flies a mission"). On ArduPilot a
+ * QuadPlane (VTOL) runs ArduPlane and a traditional helicopter (HELI) ArduCopter, with their modes,
+ * but take off, land and start differently (docs/vtol.md). A vehicle of another autopilot than
+ * ArduPilot and PX4, or of a kind neither flies, is OTHER: discovered and usable, modes shown as numbers.
  */
 public enum VehicleFamily {
-    COPTER("ArduCopter", null, COPTER_MODE.class, "COPTER_MODE_"),
-    HELI("ArduCopter helicopter", COPTER, COPTER_MODE.class, "COPTER_MODE_"),
-    PLANE("ArduPlane", null, PLANE_MODE.class, "PLANE_MODE_"),
-    VTOL("ArduPlane VTOL", PLANE, PLANE_MODE.class, "PLANE_MODE_"),
-    ROVER("Rover", null, ROVER_MODE.class, "ROVER_MODE_"),
-    SUB("ArduSub", null, SUB_MODE.class, "SUB_MODE_"),
-    OTHER("other", null, null, null);
+    COPTER("multicopter", null),
+    HELI("helicopter", COPTER),
+    PLANE("fixed-wing", null),
+    VTOL("VTOL", PLANE),
+    ROVER("rover", null),
+    SUB("submarine", null),
+    OTHER("vehicle", null);
 
-    private final String label;
+    private final String noun;
     private final VehicleFamily firmware;
-    private final Class<?> modes;
-    private final String prefix;
 
-    VehicleFamily(String label, VehicleFamily firmware, Class<?> modes, String prefix) {
-        this.label = label;
+    VehicleFamily(String noun, VehicleFamily firmware) {
+        this.noun = noun;
         this.firmware = firmware;
-        this.modes = modes;
-        this.prefix = prefix;
     }
 
-    /** The family whose firmware this one runs: ArduPlane for a VTOL, ArduCopter for a helicopter, else itself. */
+    /** The family whose ArduPilot firmware this one runs: ArduPlane for a VTOL, ArduCopter for a helicopter, else itself. */
     public VehicleFamily firmware() {
         return firmware != null ? firmware : this;
     }
 
-    public String label() {
-        return label;
+    /** What the family is called whatever its autopilot, e.g. "multicopter". */
+    public String noun() {
+        return noun;
     }
 
+    /** The family of a HEARTBEAT's MAV_TYPE from ArduPilot or PX4; OTHER from any other autopilot. */
     public static VehicleFamily of(int mavType, int autopilot) {
-        if (autopilot != MAV_AUTOPILOT.MAV_AUTOPILOT_ARDUPILOTMEGA) {
+        if (Autopilot.of(autopilot) == Autopilot.OTHER) {
             return OTHER;
         }
         return switch (mavType) {
             case MAV_TYPE.MAV_TYPE_FIXED_WING -> PLANE;
-            // ArduPlane reports these only when Q_MAV_TYPE says so; by default a QuadPlane is FIXED_WING (withVtolState)
+            // ArduPlane reports these only when Q_MAV_TYPE says so, by default a QuadPlane is FIXED_WING (withVtolState);
+            // PX4 always (VTOL_RESERVED2 is its standard VTOL, MAV_TYPE_VTOL_FIXEDROTOR in newer dialects)
             case MAV_TYPE.MAV_TYPE_VTOL_DUOROTOR, MAV_TYPE.MAV_TYPE_VTOL_QUADROTOR,
                  MAV_TYPE.MAV_TYPE_VTOL_TILTROTOR, MAV_TYPE.MAV_TYPE_VTOL_RESERVED2, MAV_TYPE.MAV_TYPE_VTOL_RESERVED3,
                  MAV_TYPE.MAV_TYPE_VTOL_RESERVED4, MAV_TYPE.MAV_TYPE_VTOL_RESERVED5 -> VTOL;
@@ -74,26 +66,5 @@ public enum VehicleFamily {
      */
     public VehicleFamily withVtolState(int vtolState) {
         return this == PLANE && vtolState != MAV_VTOL_STATE.MAV_VTOL_STATE_UNDEFINED ? VTOL : this;
-    }
-
-    /** All modes of the family, number to name (e.g. 3 -> "AUTO"); empty for OTHER. */
-    public Map<Long, String> modes() {
-        return modes == null ? Map.of() : EnumNames.of(modes, prefix);
-    }
-
-    public String modeName(long customMode) {
-        String n = modes().get(customMode);
-        return n != null ? n : "mode " + customMode;
-    }
-
-    public OptionalLong modeNumber(String name) {
-        String wanted = name.toUpperCase(Locale.ROOT);
-        return modes().entrySet().stream().filter(e -> e.getValue().equals(wanted))
-                .mapToLong(Map.Entry::getKey).findFirst();
-    }
-
-    @Override
-    public String toString() {
-        return label;
     }
 }

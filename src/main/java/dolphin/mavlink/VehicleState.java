@@ -14,6 +14,8 @@ import java.util.List;
  *
  * @param heartbeat the last autopilot heartbeat; null before the first
  * @param heartbeatNanos clock time of that heartbeat
+ * @param autopilot the autopilot the vehicle runs, from its first heartbeat
+ * @param family its kind, from the same heartbeat, and for an ArduPlane its EXTENDED_SYS_STATE
  * @param systemStatus the last SYS_STATUS; null before the first
  * @param position the last GLOBAL_POSITION_INT, height above mean sea level; null before the first
  * @param relativeAlt metres above home from the same message
@@ -21,8 +23,9 @@ import java.util.List;
  * @param home the vehicle's home from HOME_POSITION; null until reported
  * @param landedState MAV_LANDED_STATE from EXTENDED_SYS_STATE (0 = undefined)
  * @param vtolState MAV_VTOL_STATE from EXTENDED_SYS_STATE: how a QuadPlane flies (0 = undefined: not a VTOL)
- * @param missionSeq the current mission item (MISSION_CURRENT.seq), -1 before the first
- * @param missionTotal MISSION_CURRENT.total (items excluding home), -1 when unknown
+ * @param missionSeq the current mission item (MISSION_CURRENT.seq) numbered as the runtime numbers items, home 0
+ *        and the first item 1 ({@link Autopilot#missionSeq}), -1 before the first
+ * @param missionTotal MISSION_CURRENT.total (items excluding home), 0 when the vehicle has no mission, -1 when unknown
  * @param missionState MISSION_CURRENT.mission_state (MISSION_STATE), 0 when unknown
  * @param statusTexts the last STATUSTEXT lines, oldest first
  * @param ekfFlags EKF_STATUS_REPORT.flags (ArduPilot's EKF_STATUS_FLAGS), -1 before the first
@@ -31,7 +34,7 @@ import java.util.List;
  * @param bootMillis the vehicle's time since boot (GLOBAL_POSITION_INT.time_boot_ms), -1 before the first
  * @param reboots how often that time went back by more than {@link #REBOOT_STEP_MILLIS}: the vehicle rebooted
  */
-public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, VehicleFamily family,
+public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Autopilot autopilot, VehicleFamily family,
                            msg_sys_status systemStatus, long systemStatusNanos,
                            Position position, double relativeAlt, double heading, long positionNanos, Position home,
                            int landedState, int vtolState, int missionSeq, int missionTotal, int missionState,
@@ -45,8 +48,16 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
     public static final long REBOOT_STEP_MILLIS = 5_000;
     private static final int ARMED_FLAG = 128;
 
+    /** MISSION_CURRENT.total of a vehicle that holds no mission. */
+    private static final int NO_MISSION = 65535;
+
+    /** Before an ArduPilot vehicle's first message. */
     public static VehicleState initial(VehicleFamily family) {
-        return new VehicleState(null, 0, family, null, 0, null, 0, Double.NaN, 0, null, 0, 0, -1, -1, 0, List.of(), -1, false, -1, 0);
+        return initial(Autopilot.ARDUPILOT, family);
+    }
+
+    public static VehicleState initial(Autopilot autopilot, VehicleFamily family) {
+        return new VehicleState(null, 0, autopilot, family, null, 0, null, 0, Double.NaN, 0, null, 0, 0, -1, -1, 0, List.of(), -1, false, -1, 0);
     }
 
     public boolean armed() {
@@ -57,8 +68,23 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
         return heartbeat == null ? -1 : heartbeat.custom_mode;
     }
 
+    /** The vehicle's modes, by its autopilot and family. */
+    public ModeTable modes() {
+        return autopilot.modes(family);
+    }
+
     public String modeName() {
-        return heartbeat == null ? "unknown" : family.modeName(heartbeat.custom_mode);
+        return heartbeat == null ? "unknown" : modes().name(heartbeat.custom_mode);
+    }
+
+    /** Whether the vehicle's last heartbeat says this mode. */
+    public boolean inMode(String name) {
+        return heartbeat != null && modes().number(name).orElse(-1) == heartbeat.custom_mode;
+    }
+
+    /** What the vehicle is, e.g. "ArduCopter", "PX4 multicopter". */
+    public String kind() {
+        return autopilot.label(family);
     }
 
     /**
@@ -68,7 +94,7 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
      */
     public boolean flyingMission() {
         return missionState == MISSION_STATE.MISSION_STATE_ACTIVE || missionState == MISSION_STATE.MISSION_STATE_PAUSED
-                || missionState == MISSION_STATE.MISSION_STATE_UNKNOWN && armed() && "AUTO".equals(modeName());
+                || missionState == MISSION_STATE.MISSION_STATE_UNKNOWN && armed() && inMode(autopilot.missionMode());
     }
 
     /** Remaining battery in percent (0..100), or -1 when the vehicle does not know it or has not said. */
@@ -77,44 +103,45 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
     }
 
     public VehicleState withHeartbeat(msg_heartbeat hb, long nanos) {
-        return new VehicleState(hb, nanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
+        return new VehicleState(hb, nanos, autopilot, family, systemStatus, systemStatusNanos, position, relativeAlt,
                 heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     public VehicleState withSystemStatus(msg_sys_status s, long nanos) {
-        return new VehicleState(heartbeat, heartbeatNanos, family, s, nanos, position, relativeAlt,
+        return new VehicleState(heartbeat, heartbeatNanos, autopilot, family, s, nanos, position, relativeAlt,
                 heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     public VehicleState withPosition(Position p, double relAlt, double hdg, long nanos) {
-        return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, p, relAlt, hdg,
+        return new VehicleState(heartbeat, heartbeatNanos, autopilot, family, systemStatus, systemStatusNanos, p, relAlt, hdg,
                 nanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     public VehicleState withHome(Position h) {
-        return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
+        return new VehicleState(heartbeat, heartbeatNanos, autopilot, family, systemStatus, systemStatusNanos, position, relativeAlt,
                 heading, positionNanos, h, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     /** EXTENDED_SYS_STATE: the landed state, and the VTOL state, which tells a QuadPlane from a plane. */
     public VehicleState withExtendedState(int landed, int vtol) {
-        return new VehicleState(heartbeat, heartbeatNanos, family.withVtolState(vtol), systemStatus, systemStatusNanos, position, relativeAlt,
+        return new VehicleState(heartbeat, heartbeatNanos, autopilot, autopilot == Autopilot.ARDUPILOT ? family.withVtolState(vtol) : family, systemStatus, systemStatusNanos, position, relativeAlt,
                 heading, positionNanos, home, landed, vtol, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
+    /** MISSION_CURRENT as the vehicle sent it: its seq is numbered the runtime's way here. */
     public VehicleState withMissionCurrent(int seq, int total, int state) {
-        return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, vtolState, seq, total, state, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
+        return new VehicleState(heartbeat, heartbeatNanos, autopilot, family, systemStatus, systemStatusNanos, position, relativeAlt,
+                heading, positionNanos, home, landedState, vtolState, autopilot.missionSeq(seq), total == NO_MISSION ? 0 : total, state, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     public VehicleState withEkfFlags(int flags) {
-        return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
+        return new VehicleState(heartbeat, heartbeatNanos, autopilot, family, systemStatus, systemStatusNanos, position, relativeAlt,
                 heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, flags, fenceBreached, bootMillis, reboots);
     }
 
     /** From FENCE_STATUS.breach_status. */
     public VehicleState withFenceBreached(boolean breached) {
-        return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
+        return new VehicleState(heartbeat, heartbeatNanos, autopilot, family, systemStatus, systemStatusNanos, position, relativeAlt,
                 heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, breached, bootMillis, reboots);
     }
 
@@ -124,14 +151,14 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Vehicle
         if (lines.size() > STATUS_LINES) {
             lines.remove(0);
         }
-        return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
+        return new VehicleState(heartbeat, heartbeatNanos, autopilot, family, systemStatus, systemStatusNanos, position, relativeAlt,
                 heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, List.copyOf(lines), ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     /** The vehicle's time since boot; going back by more than {@link #REBOOT_STEP_MILLIS} counts a reboot. */
     public VehicleState withBootTime(long millis) {
         int r = bootMillis >= 0 && millis + REBOOT_STEP_MILLIS < bootMillis ? reboots + 1 : reboots;
-        return new VehicleState(heartbeat, heartbeatNanos, family, systemStatus, systemStatusNanos, position, relativeAlt,
+        return new VehicleState(heartbeat, heartbeatNanos, autopilot, family, systemStatus, systemStatusNanos, position, relativeAlt,
                 heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags,
                 fenceBreached, millis, r);
     }

@@ -21,7 +21,7 @@ public enum FaultKind {
             return firmware -> {
                 Failures failures = firmware.failures();
                 if (motor > failures.motors()) {
-                    throw new IllegalArgumentException("motor " + motor + ": " + firmware.family().label() + " has "
+                    throw new IllegalArgumentException("motor " + motor + ": " + firmware.label() + " has "
                             + failures.motors() + (failures.motors() == 1 ? " motor" : " motors"));
                 }
                 return failures.powerLoss().orElseThrow().apply(motor);
@@ -159,10 +159,10 @@ public enum FaultKind {
 
     /** The takeover's mode: one of the family's, not AUTO, which is the mode it hands back. */
     private static int mode(Firmware firmware, String name) {
-        OptionalLong mode = firmware.family().modeNumber(name.strip());
+        OptionalLong mode = firmware.modes().number(name.strip());
         if (mode.isEmpty()) {
-            throw new IllegalArgumentException(firmware.family().label() + " has no mode '" + name + "': expected one of "
-                    + String.join(", ", firmware.family().modes().values()));
+            throw new IllegalArgumentException(firmware.label() + " has no mode '" + name + "': expected one of "
+                    + String.join(", ", firmware.modes().names().values()));
         }
         if (mode.getAsLong() == firmware.autoMode()) {
             throw new IllegalArgumentException("a takeover hands AUTO back, so its mode must be another one");

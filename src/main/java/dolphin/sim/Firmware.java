@@ -3,6 +3,8 @@ package dolphin.sim;
 import com.MAVLink.enums.MAV_RESULT;
 import com.MAVLink.enums.MAV_VTOL_STATE;
 import dolphin.core.Position;
+import dolphin.mavlink.Autopilot;
+import dolphin.mavlink.ModeTable;
 import dolphin.mavlink.VehicleFamily;
 import dolphin.mission.model.MissionItem;
 import java.util.List;
@@ -24,6 +26,16 @@ interface Firmware {
     int mavType();
 
     VehicleFamily family();
+
+    /** Its modes, as ArduPilot numbers them for its family. */
+    default ModeTable modes() {
+        return Autopilot.ARDUPILOT.modes(family());
+    }
+
+    /** What it is called, e.g. "ArduCopter". */
+    default String label() {
+        return Autopilot.ARDUPILOT.label(family());
+    }
 
     /** The custom mode it boots in. */
     int bootMode();

@@ -69,7 +69,7 @@ final class HeliFirmware extends CopterFirmware {
     @Override
     public Optional<String> modeRefusal(int mode, boolean located, boolean missionPresent, boolean armed, long now) {
         if (armed && !MANUAL_THROTTLE.contains(mode) && !runUp(now)) {
-            return Optional.of("Mode change to " + NAMES.getOrDefault(mode, family().modeName(mode)) + " failed: runup not complete");
+            return Optional.of("Mode change to " + NAMES.getOrDefault(mode, modes().name(mode)) + " failed: runup not complete");
         }
         return Optional.empty();
     }

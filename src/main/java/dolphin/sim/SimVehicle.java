@@ -152,7 +152,7 @@ public final class SimVehicle {
     }
 
     public synchronized String modeName() {
-        return firmware.family().modeName(mode);
+        return firmware.modes().name(mode);
     }
 
     public synchronized boolean armed() {
@@ -505,7 +505,7 @@ public final class SimVehicle {
     }
 
     private boolean setModeIfValid(long custom) {
-        if (!firmware.family().modes().containsKey(custom) || options.refuseModeChanges()) {
+        if (!firmware.modes().contains(custom) || options.refuseModeChanges()) {
             return false;
         }
         if (custom != mode) {

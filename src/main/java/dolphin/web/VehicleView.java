@@ -39,7 +39,7 @@ record VehicleView(String id, String type, String family, String vtol, boolean c
     /** @param transfer where a mission transfer in progress stands, or null */
     static VehicleView of(String id, String type, boolean connected, int silence, boolean picked, VehicleState s, String task,
                           List<String> payloads, List<Shown> readings, TransferStatus transfer, String link) {
-        return new VehicleView(id, type, s.family().label(), vtolText(s.vtolState()), connected, silence, picked, s.position(), s.relativeAlt(), s.heading(),
+        return new VehicleView(id, type, s.kind(), vtolText(s.vtolState()), connected, silence, picked, s.position(), s.relativeAlt(), s.heading(),
                 s.modeName(), s.armed(), s.batteryPercent(), s.home(), s.flyingMission() ? s.missionSeq() : -1, s.missionTotal(),
                 s.fenceBreached(), task, payloads, readings, transfer, link);
     }

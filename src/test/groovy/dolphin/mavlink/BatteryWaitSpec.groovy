@@ -15,7 +15,7 @@ class BatteryWaitSpec extends Specification {
 
     ManualClock clock = ManualClock.autoAdvancing()
     MAVLinkNode node = new MAVLinkNode('1', 'UAV', new MAVLinkCommunications(MAVLinkConfig.of('udpin:127.0.0.1:0'), clock),
-            null, null, 1, 1, VehicleFamily.COPTER, clock)
+            null, null, 1, 1, dolphin.mavlink.Autopilot.ARDUPILOT, VehicleFamily.COPTER, clock)
 
     void report(int percent) {
         node.update { it.withSystemStatus(new msg_sys_status(battery_remaining: percent as byte), clock.nanoTime()) }

@@ -11,7 +11,7 @@ class CapabilityRequestsSpec extends Specification {
     ManualClock clock = new ManualClock()
     List<Double> asks = []
     CapabilityRequests requests = new CapabilityRequests({ node -> asks << clock.seconds() } as CapabilityRequests.Asker)
-    MAVLinkNode node = new MAVLinkNode('1', 'UAV', null, null, null, 1, 1, VehicleFamily.COPTER, clock)
+    MAVLinkNode node = new MAVLinkNode('1', 'UAV', null, null, null, 1, 1, dolphin.mavlink.Autopilot.ARDUPILOT, VehicleFamily.COPTER, clock)
 
     private void heartbeat() {
         node.update { it.withHeartbeat(new msg_heartbeat(), clock.nanoTime()) }

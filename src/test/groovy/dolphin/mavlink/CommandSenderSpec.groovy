@@ -15,7 +15,7 @@ class CommandSenderSpec extends Specification {
     List<Integer> sent = []
     CommandSender sender = new CommandSender({ node, command -> sent << command.command } as CommandSender.Transmit,
             1_000_000_000L, 3)
-    MAVLinkNode node = new MAVLinkNode('1', 'UAV', null, null, null, 1, 1, VehicleFamily.COPTER, clock)
+    MAVLinkNode node = new MAVLinkNode('1', 'UAV', null, null, null, 1, 1, dolphin.mavlink.Autopilot.ARDUPILOT, VehicleFamily.COPTER, clock)
 
     private def ack(int command, int result) {
         new msg_command_ack(command: command, result: (short) result)

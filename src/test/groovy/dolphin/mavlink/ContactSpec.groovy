@@ -26,7 +26,7 @@ class ContactSpec extends Specification {
 
     ManualClock clock = new ManualClock()
     MAVLinkCommunications comms = new MAVLinkCommunications(MAVLinkConfig.of('udpin:127.0.0.1:0'), clock)
-    MAVLinkNode node = new MAVLinkNode('1', 'UAV', comms, null, null, 1, 1, VehicleFamily.COPTER, clock)
+    MAVLinkNode node = new MAVLinkNode('1', 'UAV', comms, null, null, 1, 1, dolphin.mavlink.Autopilot.ARDUPILOT, VehicleFamily.COPTER, clock)
     List<VehicleEvent> events = []
 
     /** A message from the vehicle's autopilot, now. */

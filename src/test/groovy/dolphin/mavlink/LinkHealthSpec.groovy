@@ -220,7 +220,7 @@ class LinkHealthSpec extends Specification {
 
     def "a node on no link of the communications (a spec's) has a health with nothing counted"() {
         given:
-        def node = new MAVLinkNode('9', 'UAV', comms, null, null, 9, 1, VehicleFamily.COPTER, clock)
+        def node = new MAVLinkNode('9', 'UAV', comms, null, null, 9, 1, dolphin.mavlink.Autopilot.ARDUPILOT, VehicleFamily.COPTER, clock)
 
         expect:
         node.linkHealth() == new LinkHealth('', 0, 0, 0, 0, 0, 0, 0, null, null)

@@ -16,7 +16,7 @@ class ParameterReadsSpec extends Specification {
     List<String> sent = []
     ParameterReads reads = new ParameterReads({ node, msg_param_request_read m -> sent << "${m.target_system} ${m.getParam_Id()} ${m.param_index}".toString() }
             as ParameterReads.Request, SECOND, 3)
-    MAVLinkNode node = new MAVLinkNode('1', 'UAV', null, null, null, 1, 1, VehicleFamily.PLANE, clock)
+    MAVLinkNode node = new MAVLinkNode('1', 'UAV', null, null, null, 1, 1, dolphin.mavlink.Autopilot.ARDUPILOT, VehicleFamily.PLANE, clock)
 
     static paramValue(String name, float v) {
         def m = new msg_param_value(param_value: v, param_count: 1200, param_index: -1)

@@ -23,9 +23,17 @@ class VehicleFamilySpec extends Specification {
         MAV_TYPE.MAV_TYPE_SUBMARINE        || VehicleFamily.SUB    | VehicleFamily.SUB
     }
 
-    def "a VTOL heartbeat of another autopilot is OTHER"() {
+    def "PX4's MAV_TYPE #type is #family; any type of another autopilot is OTHER"() {
         expect:
-        VehicleFamily.of(MAV_TYPE.MAV_TYPE_VTOL_QUADROTOR, MAV_AUTOPILOT.MAV_AUTOPILOT_PX4) == VehicleFamily.OTHER
+        VehicleFamily.of(type, MAV_AUTOPILOT.MAV_AUTOPILOT_PX4) == family
+        VehicleFamily.of(type, MAV_AUTOPILOT.MAV_AUTOPILOT_GENERIC) == VehicleFamily.OTHER
+
+        where:
+        type                               || family
+        MAV_TYPE.MAV_TYPE_QUADROTOR        || VehicleFamily.COPTER
+        MAV_TYPE.MAV_TYPE_FIXED_WING       || VehicleFamily.PLANE
+        MAV_TYPE.MAV_TYPE_VTOL_RESERVED2   || VehicleFamily.VTOL
+        MAV_TYPE.MAV_TYPE_GROUND_ROVER     || VehicleFamily.ROVER
     }
 
     def "an ArduPlane whose VTOL state is #vtolState is #family; no other family changes with it"() {
@@ -42,10 +50,16 @@ class VehicleFamilySpec extends Specification {
         MAV_VTOL_STATE.MAV_VTOL_STATE_TRANSITION_TO_FW || VehicleFamily.VTOL
     }
 
-    def "a VTOL and a helicopter have their firmware's modes"() {
+    def "a VTOL and a helicopter have their firmware's modes on ArduPilot"() {
         expect:
-        VehicleFamily.VTOL.modeNumber('QRTL').asLong == 21
-        VehicleFamily.VTOL.modes() == VehicleFamily.PLANE.modes()
-        VehicleFamily.HELI.modes() == VehicleFamily.COPTER.modes()
+        Autopilot.ARDUPILOT.modes(VehicleFamily.VTOL).number('QRTL').asLong == 21
+        Autopilot.ARDUPILOT.modes(VehicleFamily.VTOL) == Autopilot.ARDUPILOT.modes(VehicleFamily.PLANE)
+        Autopilot.ARDUPILOT.modes(VehicleFamily.HELI) == Autopilot.ARDUPILOT.modes(VehicleFamily.COPTER)
+    }
+
+    def "an ArduPlane's VTOL state makes it a VTOL; a PX4 plane's does not (PX4 says VTOL in its heartbeat)"() {
+        expect:
+        VehicleState.initial(Autopilot.ARDUPILOT, VehicleFamily.PLANE).withExtendedState(1, MAV_VTOL_STATE.MAV_VTOL_STATE_FW).family() == VehicleFamily.VTOL
+        VehicleState.initial(Autopilot.PX4, VehicleFamily.PLANE).withExtendedState(1, MAV_VTOL_STATE.MAV_VTOL_STATE_FW).family() == VehicleFamily.PLANE
     }
 }

@@ -25,7 +25,7 @@ class PayloadDiscoverySpec extends Specification {
 
     ManualClock clock = new ManualClock()
     MAVLinkNode node = new MAVLinkNode('1', 'UAV', new MAVLinkCommunications(MAVLinkConfig.of('udpin:127.0.0.1:0'), clock),
-            null, null, 1, 1, VehicleFamily.COPTER, clock)
+            null, null, 1, 1, dolphin.mavlink.Autopilot.ARDUPILOT, VehicleFamily.COPTER, clock)
     List<List> asked = []
     PayloadDiscovery discovery = new PayloadDiscovery(new PayloadDiscovery.Questions() {
         void request(MAVLinkNode n, int messageId) { asked << [clock.seconds(), messageId] }

@@ -30,7 +30,7 @@ class SensorReadingsSpec extends Specification {
 
     ManualClock clock = ManualClock.autoAdvancing()
     MAVLinkCommunications comms = new MAVLinkCommunications(MAVLinkConfig.of('udpin:127.0.0.1:0'), clock)
-    MAVLinkNode node = new MAVLinkNode('1', 'UAV', comms, null, null, 1, 1, VehicleFamily.COPTER, clock)
+    MAVLinkNode node = new MAVLinkNode('1', 'UAV', comms, null, null, 1, 1, dolphin.mavlink.Autopilot.ARDUPILOT, VehicleFamily.COPTER, clock)
     SensorService service = SensorService.of(comms)
     SensorWords words = new SensorWords(new dolphin.dsl.ScriptContext(null, null, false), service.&add, service.&declared)
 

@@ -217,13 +217,13 @@ class FaultRecordingConformanceSpec extends Specification {
                 def m = sent.message
                 boolean after = sent.bootNanos >= from
                 if (after && result.before == null) {
-                    result.before = "${armed ? 'armed' : 'disarmed'}, ${family.modeName(mode)}, landed state ${LANDED[landed]}"
+                    result.before = "${armed ? 'armed' : 'disarmed'}, ${dolphin.mavlink.Autopilot.ARDUPILOT.modes(family).name(mode)}, landed state ${LANDED[landed]}"
                 }
                 double seconds = (sent.bootNanos - injected) / 1e9
                 if (m instanceof msg_heartbeat) {
                     boolean a = (m.base_mode & MAV_MODE_FLAG.MAV_MODE_FLAG_SAFETY_ARMED) != 0
                     if (after && mode != null && m.custom_mode != mode) {
-                        result.add(seconds, "mode ${family.modeName(m.custom_mode)}")
+                        result.add(seconds, "mode ${dolphin.mavlink.Autopilot.ARDUPILOT.modes(family).name(m.custom_mode)}")
                     }
                     if (after && armed != null && a != armed) {
                         result.add(seconds, a ? 'armed' : 'disarmed')

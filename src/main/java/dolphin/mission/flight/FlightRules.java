@@ -3,7 +3,9 @@ package dolphin.mission.flight;
 import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_FRAME;
 import com.MAVLink.enums.MAV_MODE_FLAG;
+import dolphin.mavlink.Autopilot;
 import dolphin.mavlink.VehicleFamily;
+import dolphin.mavlink.VehicleState;
 import dolphin.mission.model.FlightWay;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.Underwater;
@@ -12,14 +14,19 @@ import java.util.Optional;
 import java.util.Set;
 
 /**
- * What differs between ArduPilot families when a mission is flown (docs/mavlink.md, "How each
- * family flies a mission"): how the vehicle is armed and started, which mode holds it, and which
- * missions end with the vehicle on the ground. The executor asks these questions and never names a
- * family itself.
+ * What differs between autopilots and their families when a mission is flown (docs/mavlink.md, "How
+ * each family flies a mission"; docs/px4.md): how the vehicle is armed and started, which mode flies
+ * the mission and which holds it, and which missions end with the vehicle on the ground. The
+ * executor asks these questions and never names an autopilot or a family itself.
  */
 public interface FlightRules {
 
-    /** The rules for a family; other autopilots fly as Rover does (arm, AUTO, done at COMPLETE). */
+    /** The rules for the vehicle's autopilot and family. */
+    static FlightRules of(VehicleState vehicle) {
+        return vehicle.autopilot() == Autopilot.PX4 ? Px4Rules.of(vehicle.family()) : of(vehicle.family());
+    }
+
+    /** The rules for an ArduPilot family; other autopilots fly as Rover does (arm, AUTO, done at COMPLETE). */
     static FlightRules of(VehicleFamily family) {
         return switch (family) {
             case COPTER -> Copter.MULTIROTOR;
@@ -68,6 +75,11 @@ public interface FlightRules {
     /** Why the family cannot fly this item, or empty when it can. */
     default Optional<String> cannotFly(MissionItem item) {
         return Optional.empty();
+    }
+
+    /** The mode the vehicle flies its mission in: ArduPilot's AUTO, by default. */
+    default String missionMode() {
+        return "AUTO";
     }
 
     /** The mode a flight cut short ends in: back to its launch, by default. */
@@ -299,7 +311,7 @@ public interface FlightRules {
         /** QLOITER, which ends a landed mission's landing sequence (Plane::set_mode) and holds the vehicle if armed by hand. */
         private static final FamilyCommand LANDING_SEQUENCE_ENDED = new FamilyCommand("QLOITER, which ends ArduPlane's landing"
                 + " sequence", MAV_CMD.MAV_CMD_DO_SET_MODE, MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED,
-                VehicleFamily.VTOL.modeNumber("QLOITER").orElseThrow());
+                Autopilot.ARDUPILOT.modes(VehicleFamily.VTOL).number("QLOITER").orElseThrow());
 
         @Override
         public Set<FlightWay> flightWays() {

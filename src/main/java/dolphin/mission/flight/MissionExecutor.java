@@ -5,7 +5,6 @@ import com.MAVLink.common.msg_mission_item_reached;
 import com.MAVLink.common.msg_statustext;
 import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_LANDED_STATE;
-import com.MAVLink.enums.MAV_MODE_FLAG;
 import com.MAVLink.enums.MAV_RESULT;
 import com.MAVLink.enums.MISSION_STATE;
 import dolphin.core.CompletionState;
@@ -14,6 +13,7 @@ import dolphin.core.PlatformTaskExecutor;
 import dolphin.core.Position;
 import dolphin.core.VehicleEvent.EventKind;
 import dolphin.mavlink.CommandResult;
+import dolphin.mavlink.Autopilot;
 import dolphin.mavlink.VehicleFamily;
 import dolphin.mavlink.VehicleState;
 import dolphin.mission.model.DroneCommand;
@@ -89,10 +89,11 @@ public final class MissionExecutor extends PlatformTaskExecutor {
 
     /** MISSION_ITEM_REACHED, on the communications thread: "reached at least seq". */
     public void consume(msg_mission_item_reached message) {
-        reached.reached(message.seq);
+        int seq = autopilot().missionSeq(message.seq);
+        reached.reached(seq);
         ItemRefusals r = refusals;
         if (r != null) {
-            r.reached(message.seq);
+            r.reached(seq);
         }
     }
 
@@ -100,7 +101,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     public void consume(msg_mission_current message) {
         ItemRefusals r = refusals;
         if (r != null) {
-            r.current(message.seq, message.mission_state, clock().nanoTime());
+            r.current(autopilot().missionSeq(message.seq), message.mission_state, clock().nanoTime());
         }
     }
 
@@ -123,7 +124,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             return;
         }
         config = vehicle.executorConfig().with(mission.limits());
-        rules = FlightRules.of(vehicle.state().family());
+        rules = FlightRules.of(vehicle.state());
         vehicle.flying(this);
         enter(new Preparing(clock().nanoTime()));
     }
@@ -260,7 +261,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                     return CompletionState.IN_PROGRESS;
                 }
                 ready = true;
-                rules = FlightRules.of(vehicle.state().family());
+                rules = FlightRules.of(vehicle.state());
                 hold();
                 parameters = new LinkedHashMap<>();
                 rules.parameters().forEach(name -> parameters.put(name, watch(vehicle.parameter(name))));
@@ -293,7 +294,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 parameters.forEach((name, value) -> values.put(name, value.join()));
                 boarded = rules.onBoard(written, new Boarding(mission.underwater().orElse(null), ways, values));
             } catch (RuntimeException e) {
-                return fail("vehicle " + vehicle.vehicleId() + " (" + vehicle.state().family() + ") cannot fly the mission: "
+                return fail("vehicle " + vehicle.vehicleId() + " (" + vehicle.state().kind() + ") cannot fly the mission: "
                         + e.getMessage());
             }
             List<MissionItem> items = boarded.items();
@@ -308,7 +309,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 var why = rules.cannotFly(item);
                 if (why.isPresent()) {
                     return fail("item " + item.seq() + " (" + item.commandName() + ") cannot be flown by vehicle "
-                            + vehicle.vehicleId() + " (" + vehicle.state().family() + "): " + why.get());
+                            + vehicle.vehicleId() + " (" + vehicle.state().kind() + "): " + why.get());
                 }
             }
             TreeMap<Integer, List<DroneCommand>> keyed = new TreeMap<>();
@@ -346,16 +347,16 @@ public final class MissionExecutor extends PlatformTaskExecutor {
          * it is given {@link #VTOL_STATE_WAIT} from the start for one, which the runtime asks for at discovery.
          */
         private boolean vtolStateUnheard(VehicleState s, long now) {
-            return s.family() == VehicleFamily.PLANE && s.landedState() == MAV_LANDED_STATE.MAV_LANDED_STATE_UNDEFINED
+            return s.autopilot() == Autopilot.ARDUPILOT && s.family() == VehicleFamily.PLANE && s.landedState() == MAV_LANDED_STATE.MAV_LANDED_STATE_UNDEFINED
                     && now - since < VTOL_STATE_WAIT.toNanos();
         }
 
         private void hold() {
             VehicleState s = vehicle.state();
-            if (s.armed() && isMode(s, "AUTO")) {
+            if (s.armed() && s.inMode(rules.missionMode())) {
                 String hold = rules.holdMode();
-                steps.add(new CommandSteps.Step("leaving AUTO for " + hold + " before the new mission", () -> setMode(hold),
-                        st -> isMode(st, hold)));
+                steps.add(new CommandSteps.Step("leaving " + rules.missionMode() + " for " + hold + " before the new mission", () -> setMode(hold),
+                        st -> st.inMode(hold)));
             }
             if (mission.getHome() != null) {
                 var h = mission.getHome();
@@ -370,7 +371,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             for (Map.Entry<Integer, FlightWay> e : ways.entrySet()) {
                 if (!rules.flightWays().contains(e.getValue())) {
                     return Optional.of("item " + e.getKey() + " (" + items.get(e.getKey()).commandName() + ") is to be flown "
-                            + e.getValue() + ", which vehicle " + vehicle.vehicleId() + " (" + vehicle.state().family()
+                            + e.getValue() + ", which vehicle " + vehicle.vehicleId() + " (" + vehicle.state().kind()
                             + ") does not do");
                 }
             }
@@ -382,7 +383,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
          * stops for its photos on one that cannot stop.
          */
         private Optional<String> wrongVehicle() {
-            String v = "vehicle " + vehicle.vehicleId() + " (" + vehicle.state().family() + ")";
+            String v = "vehicle " + vehicle.vehicleId() + " (" + vehicle.state().kind() + ")";
             if (!rules.stops()) {
                 for (DroneCommand c : mission.getCommandList()) {
                     if (c instanceof PolygonSurvey s && s.hoversToShoot()) {
@@ -551,7 +552,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 if (r == null) {
                     return CompletionState.IN_PROGRESS;
                 }
-                if (!commands.tookEffect(r, st -> isMode(st, mode))) {
+                if (!commands.tookEffect(r, st -> st.inMode(mode))) {
                     return fail(commands.refusal(mode, r));
                 }
                 armModeSet = true;
@@ -623,13 +624,14 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             if (!armsInAuto()) {
                 steps.add(firstItemCurrent());
             }
-            steps.add(new CommandSteps.Step("AUTO", () -> {
+            String auto = rules.missionMode();
+            steps.add(new CommandSteps.Step(auto, () -> {
                 refusals.begin();
                 if (autoAsked < 0) {
                     autoAsked = clock().nanoTime();
                 }
-                return setMode("AUTO");
-            }, st -> isMode(st, "AUTO"), rules.autoWaitsAfterArming()));
+                return setMode(auto);
+            }, st -> st.inMode(auto), rules.autoWaitsAfterArming()));
             if (rules.needsMissionStart()) {
                 steps.add(new CommandSteps.Step("MAV_CMD_MISSION_START", () -> vehicle.command(MAV_CMD.MAV_CMD_MISSION_START, 0, 0),
                         st -> st.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE));
@@ -707,7 +709,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 // The flight goes back: what the vehicle said before the jump no longer tells its end.
                 return CompletionState.IN_PROGRESS;
             }
-            boolean auto = isMode(s, "AUTO");
+            boolean auto = s.inMode(rules.missionMode());
             MissionEnd.Verdict verdict = plan.end().judge(s, r, auto, now);
             var refused = refusals.refusal();
             if (verdict.error() == null && refused.isPresent()) {
@@ -739,8 +741,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 case FAILED -> {
                     return fail(look.text());
                 }
-                case TAKEN_OVER -> report(EventKind.TAKEN_OVER, look.text() + ", mission " + mission.getId() + " paused until AUTO is"
-                        + " back, for " + config.takeoverTimeout().toSeconds() + " s at most");
+                case TAKEN_OVER -> report(EventKind.TAKEN_OVER, look.text() + ", mission " + mission.getId() + " paused until " + rules.missionMode()
+                        + " is back, for " + config.takeoverTimeout().toSeconds() + " s at most");
                 case HANDED_BACK -> report(EventKind.HANDED_BACK, look.text() + ", mission " + mission.getId() + " goes on");
                 default -> { }
             }
@@ -840,12 +842,12 @@ public final class MissionExecutor extends PlatformTaskExecutor {
 
     /** Armed in AUTO, a vehicle starts at once from its current item, which may be a previous flight's: item 1 is made current first. */
     private boolean armsInAuto() {
-        return rules.armMode().filter("AUTO"::equals).isPresent();
+        return rules.armMode().filter(rules.missionMode()::equals).isPresent();
     }
 
     private CommandSteps.Step firstItemCurrent() {
         return new CommandSteps.Step("MAV_CMD_DO_SET_MISSION_CURRENT 1", () -> vehicle.command(
-                MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT, 1, 1), st -> st.missionSeq() == 1);
+                MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT, autopilot().vehicleSeq(1), 1), st -> st.missionSeq() == 1);
     }
 
     /** A family's command, done once accepted: what it changes is not in the vehicle's telemetry. */
@@ -857,20 +859,23 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         return new CommandSteps(vehicle.vehicleId(), vehicle::state, config.retry(), waiting, this::watch);
     }
 
+    /** A ground-side command; a jump names its item the way the vehicle numbers them. */
     private void send(DroneCommand command) {
-        command.messages(vehicle.system(), vehicle.component()).forEach(vehicle::send);
+        DroneCommand sent = command instanceof JumpToItem jump ? jump.numbered(autopilot().vehicleSeq(jump.item())) : command;
+        sent.messages(vehicle.system(), vehicle.component()).forEach(vehicle::send);
+    }
+
+    private Autopilot autopilot() {
+        return vehicle.state().autopilot();
     }
 
     private CompletableFuture<CommandResult> setMode(String name) {
-        OptionalLong mode = vehicle.state().family().modeNumber(name);
+        VehicleState s = vehicle.state();
+        OptionalLong mode = s.modes().number(name);
         if (mode.isEmpty()) {
             return CompletableFuture.completedFuture(new CommandResult(MAV_CMD.MAV_CMD_DO_SET_MODE, MAV_RESULT.MAV_RESULT_UNSUPPORTED, 0));
         }
-        return vehicle.command(MAV_CMD.MAV_CMD_DO_SET_MODE, MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED, mode.getAsLong());
-    }
-
-    private static boolean isMode(VehicleState s, String name) {
-        return s.heartbeat() != null && s.family().modeNumber(name).orElse(-1) == s.customMode();
+        return vehicle.command(MAV_CMD.MAV_CMD_DO_SET_MODE, s.autopilot().setModeParams(mode.getAsLong()));
     }
 
     /** Steps the task tree as soon as the operation completes, not at the next tick. */

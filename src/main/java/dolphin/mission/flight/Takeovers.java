@@ -80,7 +80,7 @@ final class Takeovers {
             sawAuto = true;
             AutoPhase was = phase;
             phase = new InAuto();
-            return was instanceof Paused p ? new Look(Look.Hand.HANDED_BACK, "back in AUTO after " + seconds(now - p.since)
+            return was instanceof Paused p ? new Look(Look.Hand.HANDED_BACK, "back in " + rules.missionMode() + " after " + seconds(now - p.since)
                     + " s: " + names.item(current)) : Look.FLYING;
         }
         if (!sawAuto) {
@@ -130,7 +130,7 @@ final class Takeovers {
             String item = names.item(current);
             if (fenceBreached(s)) {
                 return new Look(Look.Hand.FAILED, "vehicle " + vehicle + " breached its fence during " + item
-                        + " and left AUTO for " + mode + " (its fence action)" + ItemNames.where(s));
+                        + " and left " + rules.missionMode() + " for " + mode + " (its fence action)" + ItemNames.where(s));
             }
             String said = words.quote(since, now);
             if (rules.takeoverModes().contains(mode) && !words.failsafeAround(since, now)) {
@@ -141,7 +141,7 @@ final class Takeovers {
                 phase = new Paused(since);
                 return new Look(Look.Hand.TAKEN_OVER, "taken over: " + mode + " during " + item);
             }
-            return new Look(Look.Hand.FAILED, "vehicle " + vehicle + " left AUTO for " + mode + " during " + item
+            return new Look(Look.Hand.FAILED, "vehicle " + vehicle + " left " + rules.missionMode() + " for " + mode + " during " + item
                     + ", before the mission ended" + (said.isEmpty() ? ItemNames.where(s)
                     : ", saying " + said + ItemNames.whereWithout(s)));
         }
@@ -163,7 +163,7 @@ final class Takeovers {
             }
             if (now - since > timeout.toNanos()) {
                 return new Look(Look.Hand.FAILED, "vehicle " + vehicle + " taken over: " + s.modeName() + " for "
-                        + seconds(now - since) + " s during " + names.item(current) + ", not handed back to AUTO within"
+                        + seconds(now - since) + " s during " + names.item(current) + ", not handed back to " + rules.missionMode() + " within"
                         + " the takeover timeout of " + timeout.toSeconds() + " s" + ItemNames.where(s));
             }
             return Look.PAUSED;

@@ -12,6 +12,7 @@ import dolphin.mavlink.LinkHealth;
 import dolphin.mavlink.LinkRequests;
 import dolphin.mavlink.MAVLinkNode;
 import dolphin.mavlink.RoundTrip;
+import dolphin.mavlink.Autopilot;
 import dolphin.mavlink.VehicleFamily;
 import dolphin.mavlink.VehicleState;
 import dolphin.mission.model.MissionItem;
@@ -198,6 +199,11 @@ public final class VehicleMissions implements MissionVehicle {
     @Override
     public void askHome() {
         node.communications().command(node, MAV_CMD.MAV_CMD_REQUEST_MESSAGE, msg_home_position.MAVLINK_MSG_ID_HOME_POSITION);
+    }
+
+    @Override
+    public Autopilot autopilot() {
+        return node.state().autopilot();
     }
 
     @Override

@@ -27,6 +27,11 @@ public final class JumpToItem extends DroneCommand {
         return repetitions;
     }
 
+    /** This jump with its item as a vehicle numbers it, when that is not as the runtime does (no home item: one less). */
+    public JumpToItem numbered(int vehicleSeq) {
+        return vehicleSeq == item ? this : new JumpToItem(vehicleSeq, repetitions);
+    }
+
     @Override
     public String name() {
         return "jumpToItem";

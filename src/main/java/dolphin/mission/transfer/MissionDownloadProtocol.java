@@ -48,7 +48,13 @@ public final class MissionDownloadProtocol {
     public CompletableFuture<TransferResult> download(MissionType type, MissionTransferConfig config, TransferProgress progress) {
         Download d = new Download(transfers.vehicle(), transfers.timers(), config, progress, type);
         transfers.submit(d);
-        return d.result;
+        VehicleChannel vehicle = transfers.vehicle();
+        if (MissionNumbering.offset(vehicle.autopilot(), type) == 0) {
+            return d.result;
+        }
+        return d.result.thenApply(r -> !r.success() ? r : new TransferResult(true, null,
+                MissionNumbering.fromVehicle(vehicle.autopilot(), type, r.items(), vehicle.home()), r.resends(), r.ignoredAcks(),
+                r.verified(), r.note()));
     }
 
     /** A float MISSION_ITEM as an item: latitude and longitude to degE7 in global frames. */

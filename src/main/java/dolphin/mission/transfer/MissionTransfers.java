@@ -202,6 +202,9 @@ public final class MissionTransfers {
         if (ftpUnanswered) {
             return PathChoice.items("item by item, as MAVLink FTP went unanswered before");
         }
+        if (!vehicle.autopilot().missionFtp()) {
+            return PathChoice.items("item by item: " + vehicle.autopilot() + " keeps no mission in MAVLink FTP");
+        }
         Optional<Boolean> offers = vehicle.offersFtp();
         if (offers.isPresent()) {
             return offers.get() ? new PathChoice(true, "", false) : PathChoice.items(NO_FTP);

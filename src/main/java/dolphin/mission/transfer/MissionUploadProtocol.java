@@ -52,7 +52,9 @@ public final class MissionUploadProtocol {
 
     public CompletableFuture<TransferResult> upload(MissionType type, List<MissionItem> items, MissionTransferConfig config,
                                                     TransferProgress progress) {
-        Upload u = new Upload(transfers.vehicle(), transfers.timers(), config, progress, type, List.copyOf(items));
+        var autopilot = transfers.vehicle().autopilot();
+        Upload u = new Upload(transfers.vehicle(), transfers.timers(), config, progress, type,
+                List.copyOf(MissionNumbering.toVehicle(autopilot, type, items)), MissionNumbering.offset(autopilot, type));
         transfers.submit(u, u.items);
         return u.result;
     }
@@ -109,6 +111,8 @@ public final class MissionUploadProtocol {
         private static final long VEHICLE_REPEAT_NANOS = 1_000_000_000L;
 
         private final List<MissionItem> items;
+        /** How many items the runtime's list has before the vehicle's first, for naming items the runtime's way. */
+        private final int offset;
         private final int[] sends;      // sends of each item
         private final long[] sentAt;    // when each item was last sent
         private int countSends;
@@ -121,9 +125,10 @@ public final class MissionUploadProtocol {
         private boolean earlyErrorIgnored;  // a MAV_MISSION_ERROR before any request was taken for a late one
 
         Upload(VehicleChannel vehicle, ProtocolTimers timers, MissionTransferConfig config, TransferProgress progress,
-               MissionType type, List<MissionItem> items) {
+               MissionType type, List<MissionItem> items, int offset) {
             super(vehicle, timers, config, progress, type);
             this.items = items;
+            this.offset = offset;
             this.sends = new int[items.size()];
             this.sentAt = new long[items.size()];
         }
@@ -142,6 +147,11 @@ public final class MissionUploadProtocol {
                 }
             }
             sendCount();
+        }
+
+        /** The item as the runtime numbers it, for an error's text. */
+        private MissionItem named(MissionItem item) {
+            return item.withSeq(item.seq() + offset);
         }
 
         private void sendCount() {
@@ -278,9 +288,9 @@ public final class MissionUploadProtocol {
             } else if (result == MAV_MISSION_RESULT.MAV_MISSION_ERROR && last >= 0 && sends[last] > 0) {
                 // ArduPilot's answer to an item when no upload is in progress: the last item repeated after a lost
                 // final ACK, or a refused last item; reading the list back tells which
-                settle(describe(result, items.get(last), items.size()));
+                settle(describe(result, named(items.get(last)), items.size()));
             } else {
-                fail(describe(result, lastSent < 0 ? null : items.get(lastSent), items.size()));
+                fail(describe(result, lastSent < 0 ? null : named(items.get(lastSent)), items.size()));
             }
         }
 

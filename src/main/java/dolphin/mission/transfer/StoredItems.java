@@ -36,7 +36,7 @@ public final class StoredItems {
             MAV_CMD.MAV_CMD_DO_LAND_START, MAV_CMD.MAV_CMD_NAV_VTOL_TAKEOFF, MAV_CMD.MAV_CMD_NAV_VTOL_LAND);
 
     /** Item 0 of a vehicle whose home is not set. */
-    private static final MissionItem UNSET_HOME = new MissionItem(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_FRAME.MAV_FRAME_GLOBAL,
+    static final MissionItem UNSET_HOME = new MissionItem(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_FRAME.MAV_FRAME_GLOBAL,
             0, 0, 0, 0, 0, 0, 0, true);
 
     private StoredItems() {

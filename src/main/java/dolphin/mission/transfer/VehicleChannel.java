@@ -2,6 +2,7 @@ package dolphin.mission.transfer;
 
 import com.MAVLink.Messages.MAVLinkMessage;
 import dolphin.core.Position;
+import dolphin.mavlink.Autopilot;
 import dolphin.mavlink.LinkRequests;
 import dolphin.mavlink.RoundTrip;
 import dolphin.mavlink.VehicleFamily;
@@ -61,6 +62,9 @@ public interface VehicleChannel {
 
     /** Asks the vehicle for its home now (MAV_CMD_REQUEST_MESSAGE HOME_POSITION), not waiting for its stream. */
     void askHome();
+
+    /** The vehicle's autopilot: how it numbers a mission's items ({@link MissionNumbering}) and whether it has missions over FTP. */
+    Autopilot autopilot();
 
     /** The vehicle's firmware family: what it keeps of an item depends on it ({@link StoredItems}). */
     VehicleFamily family();

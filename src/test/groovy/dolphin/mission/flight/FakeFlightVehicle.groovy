@@ -20,6 +20,8 @@ import dolphin.core.Payload
 import dolphin.core.Position
 import dolphin.core.VehicleEvent
 import dolphin.mavlink.CommandResult
+import dolphin.mavlink.Autopilot
+import dolphin.mavlink.Px4Modes
 import dolphin.mavlink.VehicleFamily
 import dolphin.mavlink.VehicleState
 import dolphin.mission.model.MissionItem
@@ -128,15 +130,16 @@ class FakeFlightVehicle implements MissionVehicle {
     int wakes
     private MissionExecutor current
 
-    FakeFlightVehicle(ManualClock clock, String id = '1', VehicleFamily family = VehicleFamily.COPTER) {
+    FakeFlightVehicle(ManualClock clock, String id = '1', VehicleFamily family = VehicleFamily.COPTER,
+                      Autopilot firmware = Autopilot.ARDUPILOT) {
         this.clock = clock
         this.id = id
         this.system = id as int
         this.family = family
         this.node = new VehicleNode(id)
-        this.state = VehicleState.initial(family)
-        heartbeat(false, family.firmware() == VehicleFamily.COPTER ? 'STABILIZE' : 'MANUAL')
-        if (family.firmware() == VehicleFamily.PLANE) {
+        this.state = VehicleState.initial(firmware, family)
+        heartbeat(false, firmware == Autopilot.PX4 ? 'AUTO.LOITER' : family.firmware() == VehicleFamily.COPTER ? 'STABILIZE' : 'MANUAL')
+        if (firmware == Autopilot.ARDUPILOT && family.firmware() == VehicleFamily.PLANE) {
             // ArduPlane's EXTENDED_SYS_STATE, which the executor awaits to tell a QuadPlane
             state = state.withExtendedState(MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND, family == VehicleFamily.VTOL
                     ? MAV_VTOL_STATE.MAV_VTOL_STATE_MC : MAV_VTOL_STATE.MAV_VTOL_STATE_UNDEFINED)
@@ -181,6 +184,9 @@ class FakeFlightVehicle implements MissionVehicle {
 
     @Override
     VehicleFamily family() { family }
+
+    @Override
+    Autopilot autopilot() { state.autopilot() }
 
     @Override
     void askWhatItOffers() { }
@@ -318,19 +324,25 @@ class FakeFlightVehicle implements MissionVehicle {
     void effect(Command c) {
         float[] p = c.params
         switch (c.command) {
-            case MAV_CMD.MAV_CMD_DO_SET_MODE: heartbeat(state.armed(), family.modeName(p[1] as long)); break
+            case MAV_CMD.MAV_CMD_DO_SET_MODE: heartbeat(state.armed(), requestedMode(p)); break
             case MAV_CMD.MAV_CMD_COMPONENT_ARM_DISARM: heartbeat(p[0] == 1f, state.modeName()); break
             case MAV_CMD.MAV_CMD_DO_SET_HOME: state = state.withHome(Position.fromDegrees(p[4], p[5], p[6])); break
-            case MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT: missionCurrent(p[0] as int, state.missionState()); break
+            case MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT: missionCurrent(state.autopilot().missionSeq(p[0] as int), state.missionState()); break
             case MAV_CMD.MAV_CMD_MISSION_START: missionCurrent(Math.max(1, state.missionSeq()), MISSION_STATE.MISSION_STATE_ACTIVE); break
             default: break
         }
     }
 
+    /** The mode DO_SET_MODE asks for, by the autopilot's way of asking. */
+    String requestedMode(float[] p) {
+        long custom = state.autopilot() == Autopilot.PX4 ? Px4Modes.customMode(p[1] as int, p[2] as int) : p[1] as long
+        state.modes().name(custom)
+    }
+
     /** "DO_SET_MODE GUIDED", "ARM", "DO_SET_HOME 40.444233 -7.375234 820.0", "DO_SET_MISSION_CURRENT 1", "MISSION_START". */
     String describe(int command, float[] p) {
         switch (command) {
-            case MAV_CMD.MAV_CMD_DO_SET_MODE: return "DO_SET_MODE ${family.modeName(p[1] as long)}"
+            case MAV_CMD.MAV_CMD_DO_SET_MODE: return "DO_SET_MODE ${requestedMode(p)}"
             case MAV_CMD.MAV_CMD_COMPONENT_ARM_DISARM: return p[0] == 1f ? 'ARM' : 'DISARM'
             case MAV_CMD.MAV_CMD_DO_SET_HOME: return "DO_SET_HOME ${p[4]} ${p[5]} ${p[6]}"
             case MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT: return "DO_SET_MISSION_CURRENT ${p[0] as int}"
@@ -380,7 +392,7 @@ class FakeFlightVehicle implements MissionVehicle {
     void heartbeat(boolean armed, String mode) {
         def hb = new msg_heartbeat()
         hb.base_mode = (short) ((armed ? 128 : 0) | 1)
-        hb.custom_mode = family.modeNumber(mode).asLong
+        hb.custom_mode = state.modes().number(mode).asLong
         state = state.withHeartbeat(hb, clock.nanoTime())
     }
 
@@ -420,21 +432,22 @@ class FakeFlightVehicle implements MissionVehicle {
 
     void landedState(int landed) { state = state.withExtendedState(landed, 0) }
 
-    /** MISSION_CURRENT. */
+    /** MISSION_CURRENT of item {@code seq} as the runtime numbers items (home 0), sent as the autopilot numbers them. */
     void missionCurrent(int seq, int missionState = MISSION_STATE.MISSION_STATE_ACTIVE) {
         int total = (stored[MissionType.MISSION]?.size() ?: 1) - 1
-        state = state.withMissionCurrent(seq, total, missionState)
+        int sent = state.autopilot().vehicleSeq(seq)
+        state = state.withMissionCurrent(sent, total, missionState)
         def m = new msg_mission_current()
-        m.seq = seq
+        m.seq = sent
         m.total = total
         m.mission_state = (short) missionState
         current?.consume(m)
     }
 
-    /** MISSION_ITEM_REACHED, to the executor flying on the vehicle (as MissionService routes it). */
+    /** MISSION_ITEM_REACHED, to the executor flying on the vehicle (as MissionService routes it), numbered as the autopilot does. */
     void reached(int seq) {
         def m = new msg_mission_item_reached()
-        m.seq = seq
+        m.seq = state.autopilot().vehicleSeq(seq)
         current?.consume(m)
     }
 

@@ -37,7 +37,7 @@ class FlightAlarmsSpec extends Specification {
     static VehicleState state(VehicleFamily family, boolean armed, int landed, double up) {
         def hb = new msg_heartbeat()
         hb.base_mode = (short) ((armed ? 128 : 0) | 1)
-        hb.custom_mode = family.modeNumber('AUTO').asLong
+        hb.custom_mode = dolphin.mavlink.Autopilot.ARDUPILOT.modes(family).number('AUTO').asLong
         VehicleState.initial(family).withHeartbeat(hb, 0).withExtendedState(landed, 0)
                 .withPosition(HOME.displace(100, 0, -up), up, Double.NaN, 0)
     }

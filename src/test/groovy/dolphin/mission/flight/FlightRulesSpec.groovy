@@ -15,8 +15,8 @@ class FlightRulesSpec extends Specification {
         rules.armMode().orElse('its mode') == armMode
         rules.needsMissionStart() == start
         rules.holdMode() == hold
-        family.modeNumber(hold).present || family == VehicleFamily.OTHER
-        family.modeNumber(rules.cutShortMode()).present || family == VehicleFamily.OTHER || family == VehicleFamily.SUB
+        dolphin.mavlink.Autopilot.ARDUPILOT.modes(family).number(hold).present || family == VehicleFamily.OTHER
+        dolphin.mavlink.Autopilot.ARDUPILOT.modes(family).number(rules.cutShortMode()).present || family == VehicleFamily.OTHER || family == VehicleFamily.SUB
         rules.landsAfter(MAV_CMD.MAV_CMD_NAV_LAND) == land
         rules.landsAfter(MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH) == rtl
         !rules.landsAfter(MAV_CMD.MAV_CMD_NAV_WAYPOINT)

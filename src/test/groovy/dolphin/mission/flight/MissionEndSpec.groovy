@@ -44,7 +44,7 @@ class MissionEndSpec extends Specification {
     static VehicleState state(VehicleFamily family, Map m) {
         def hb = new msg_heartbeat()
         hb.base_mode = (short) ((m.armed ? 128 : 0) | 1)
-        hb.custom_mode = family.modeNumber(m.mode as String).asLong
+        hb.custom_mode = dolphin.mavlink.Autopilot.ARDUPILOT.modes(family).number(m.mode as String).asLong
         double up = (m.up ?: 0) as double
         def s = VehicleState.initial(family).withHeartbeat(hb, 0)
                 .withMissionCurrent((m.seq ?: 0) as int, 4, (m.mission ?: ACTIVE) as int)

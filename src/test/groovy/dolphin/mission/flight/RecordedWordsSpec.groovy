@@ -28,7 +28,7 @@ class RecordedWordsSpec extends Specification {
                 continue
             }
             if (m instanceof msg_heartbeat) {
-                auto |= VehicleFamily.of(m.type, m.autopilot).modeName(m.custom_mode) == 'AUTO'
+                auto |= dolphin.mavlink.Autopilot.ARDUPILOT.modes(VehicleFamily.of(m.type, m.autopilot)).name(m.custom_mode) == 'AUTO'
             } else if (m instanceof msg_statustext && auto) {
                 said << new VehicleWords.Said(m.severity, m.getText(), r.micros * 1000)
             }

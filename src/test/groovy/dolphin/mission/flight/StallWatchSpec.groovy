@@ -37,7 +37,7 @@ class StallWatchSpec extends Specification {
     static VehicleState at(VehicleFamily family, double north, double up, long t = 0) {
         def hb = new msg_heartbeat()
         hb.base_mode = (short) 129
-        hb.custom_mode = family.modeNumber('AUTO').asLong
+        hb.custom_mode = dolphin.mavlink.Autopilot.ARDUPILOT.modes(family).number('AUTO').asLong
         VehicleState.initial(family).withHeartbeat(hb, 0).withPosition(HOME.displace(north, 0, -up), up, Double.NaN, t * S)
     }
 

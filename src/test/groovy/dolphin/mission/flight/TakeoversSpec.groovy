@@ -39,7 +39,7 @@ class TakeoversSpec extends Specification {
     static VehicleState in(VehicleFamily family, String mode) {
         def hb = new msg_heartbeat()
         hb.base_mode = (short) 129
-        hb.custom_mode = family.modeNumber(mode).asLong
+        hb.custom_mode = dolphin.mavlink.Autopilot.ARDUPILOT.modes(family).number(mode).asLong
         VehicleState.initial(family).withHeartbeat(hb, 0).withPosition(HOME.displace(100, 0, -30), 30, Double.NaN, 0)
     }
 

@@ -49,6 +49,8 @@ class RecordingChannel implements VehicleChannel {
     /** The vehicle's home as it reported it (null: not yet), and its family. */
     dolphin.core.Position home
     dolphin.mavlink.VehicleFamily family = dolphin.mavlink.VehicleFamily.COPTER
+    /** The vehicle's autopilot, which numbers its missions. */
+    dolphin.mavlink.Autopilot firmware = dolphin.mavlink.Autopilot.ARDUPILOT
     /** Whether the vehicle is reached through a telemetry radio. */
     boolean throughRadio
     /** Our radio's free buffer in percent, -1: no radio reports. */
@@ -103,6 +105,9 @@ class RecordingChannel implements VehicleChannel {
 
     @Override
     dolphin.mavlink.VehicleFamily family() { family }
+
+    @Override
+    dolphin.mavlink.Autopilot autopilot() { firmware }
 
     @Override
     void askWhatItOffers() {
