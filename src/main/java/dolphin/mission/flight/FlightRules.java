@@ -121,6 +121,22 @@ public interface FlightRules {
         return false;
     }
 
+    /**
+     * Whether MAV_CMD_MISSION_START makes the first item current itself (PX4, by its param1), so the
+     * first item needs no MAV_CMD_DO_SET_MISSION_CURRENT, which PX4 does not take.
+     */
+    default boolean missionStartFromFirstItem() {
+        return false;
+    }
+
+    /**
+     * Whether the vehicle checks a mission after its upload, and takes no mode or start for it until it
+     * shows it NOT_STARTED in MISSION_CURRENT (PX4's feasibility check: an infeasible mission stays NO_MISSION).
+     */
+    default boolean checksMissionAfterUpload() {
+        return false;
+    }
+
     /** The mode that holds the vehicle where it is, e.g. before its mission is replaced. */
     String holdMode();
 

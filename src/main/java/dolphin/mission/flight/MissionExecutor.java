@@ -54,6 +54,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     private static final Duration JUMP_RESEND = Duration.ofSeconds(1);
     /** How long an ArduPlane's first EXTENDED_SYS_STATE is awaited: its stream is asked for at 0.5 Hz at least. */
     private static final Duration VTOL_STATE_WAIT = Duration.ofSeconds(5);
+    /** How long a vehicle that checks a mission after its upload is given to find it feasible (PX4 SITL: about 1 s). */
+    private static final Duration MISSION_CHECK_WAIT = Duration.ofSeconds(10);
     /** How often a long upload says how far it is, in clock time (a lossy link can make it last a minute). */
     private static final long TRANSFER_REPORT_NANOS = 5_000_000_000L;
 
@@ -492,7 +494,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 return fail(uploadError != null ? uploadError : "verifying the upload failed: " + r.error());
             }
             MissionType type = lists.peek().getKey();
-            var difference = MissionVerification.firstDifference(type, lists.peek().getValue(), r.items());
+            var difference = MissionVerification.firstDifference(autopilot(), type, lists.peek().getValue(), r.items());
             if (difference.isPresent()) {
                 return fail(uploadError != null ? uploadError
                         : "the vehicle holds another " + type.label() + " than the one uploaded: " + difference.get());
@@ -519,6 +521,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         private final Plan plan;
         private final CommandSteps commands = commandSteps(what -> { });
         private final CommandSteps before = commandSteps(what -> { });
+        private final long checkedBy;
         private boolean armModeSet;
         private CompletableFuture<CommandResult> pending;
         private long nextAttempt;
@@ -527,6 +530,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             super(FlightState.ARM, config.arm());
             this.plan = plan;
             nextAttempt = clock().nanoTime();
+            checkedBy = nextAttempt + MISSION_CHECK_WAIT.toNanos();
             if (armsInAuto()) {
                 before.add(firstItemCurrent());
             }
@@ -541,6 +545,12 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         CompletionState step(long now) {
             if (!before.run(now)) {
                 return before.failure() != null ? fail(before.failure()) : CompletionState.IN_PROGRESS;
+            }
+            if (rules.checksMissionAfterUpload() && !missionChecked(vehicle.state())) {
+                return now < checkedBy ? CompletionState.IN_PROGRESS : fail("vehicle " + vehicle.vehicleId()
+                        + " did not find the mission feasible within " + MISSION_CHECK_WAIT.toSeconds() + " s (MISSION_CURRENT "
+                        + "still says no mission)" + vehicle.state().statusTexts().stream().reduce((a, b) -> b)
+                        .map(t -> "; it said last: " + t.strip()).orElse(""));
             }
             var armMode = rules.armMode();
             if (armMode.isPresent() && !armModeSet) {
@@ -578,6 +588,11 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             }
             nextAttempt = now + config.retry().toNanos();
             return CompletionState.IN_PROGRESS;
+        }
+
+        /** The vehicle holds the uploaded mission and found it feasible: NOT_STARTED with all its items. */
+        private boolean missionChecked(VehicleState s) {
+            return s.missionState() == MISSION_STATE.MISSION_STATE_NOT_STARTED && s.missionTotal() == plan.items().size() - 1;
         }
 
         private CommandResult answer() {
@@ -621,7 +636,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                         MAV_CMD.MAV_CMD_DO_FENCE_ENABLE, 1, 0), st -> false));
             }
             rules.afterArming().forEach(c -> steps.add(familyStep(c)));
-            if (!armsInAuto()) {
+            if (!armsInAuto() && !rules.missionStartFromFirstItem()) {
                 steps.add(firstItemCurrent());
             }
             String auto = rules.missionMode();

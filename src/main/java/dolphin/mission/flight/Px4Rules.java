@@ -150,6 +150,16 @@ enum Px4Rules implements FlightRules {
     }
 
     @Override
+    public boolean checksMissionAfterUpload() {
+        return true;
+    }
+
+    @Override
+    public boolean missionStartFromFirstItem() {
+        return true;
+    }
+
+    @Override
     public String holdMode() {
         return "AUTO.LOITER";
     }

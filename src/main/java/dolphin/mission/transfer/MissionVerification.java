@@ -2,9 +2,12 @@ package dolphin.mission.transfer;
 
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
+import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_FRAME;
+import dolphin.mavlink.Autopilot;
 import java.util.List;
 import java.util.Optional;
+import java.util.Set;
 
 /**
  * Compares the items sent with those downloaded back, skipping item 0 (ArduPilot replaces it with
@@ -18,6 +21,11 @@ import java.util.Optional;
  * only its command, param1 (vertex count or radius; none for the return point) and position, and of
  * a rally point its position, altitude reference and height as whole metres (docs/airspace.md): the
  * rest is not compared, and a rally point's height may come back up to 1 m off.
+ *
+ * <p>PX4 keeps every param of a command without a position (MAV_FRAME_MISSION), but of one with a
+ * position only the params its navigator uses (MavlinkMissionManager::format_mavlink_mission_item):
+ * param1 only of a waypoint (its hold time), a timed loiter and a loiter to altitude. The runtime
+ * numbers a PX4 mission with home as item 0 too ({@link MissionNumbering}), so item 0 is skipped alike.
  */
 public final class MissionVerification {
 
@@ -27,13 +35,23 @@ public final class MissionVerification {
     private MissionVerification() {
     }
 
+    /** The commands with a position whose param1 PX4 keeps. */
+    private static final Set<Integer> PX4_PARAM1 = Set.of(MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_CMD.MAV_CMD_NAV_LOITER_TIME,
+            MAV_CMD.MAV_CMD_NAV_LOITER_TO_ALT);
+
     /** The first difference, e.g. "item 2 (NAV_WAYPOINT): z sent 20.0, vehicle has 25.0"; empty when they match. */
     public static Optional<String> firstDifference(List<MissionItem> sent, List<MissionItem> downloaded) {
         return firstDifference(MissionType.MISSION, sent, downloaded);
     }
 
-    /** The same for a mission, a fence or rally points. */
+    /** The same for a mission, a fence or rally points held by ArduPilot. */
     public static Optional<String> firstDifference(MissionType type, List<MissionItem> sent, List<MissionItem> downloaded) {
+        return firstDifference(Autopilot.ARDUPILOT, type, sent, downloaded);
+    }
+
+    /** The same for a list held by the autopilot. */
+    public static Optional<String> firstDifference(Autopilot autopilot, MissionType type, List<MissionItem> sent,
+                                                   List<MissionItem> downloaded) {
         if (sent.size() != downloaded.size()) {
             return Optional.of("the vehicle has " + downloaded.size() + " items" + (type.hasHome() ? " (home included), " : ", ")
                     + sent.size() + " were sent");
@@ -42,7 +60,7 @@ public final class MissionVerification {
             MissionItem s = sent.get(i);
             MissionItem d = downloaded.get(i);
             String diff = switch (type) {
-                case MISSION -> difference(s, d);
+                case MISSION -> difference(s, d, keepsParam1(autopilot, s));
                 case FENCE -> fenceDifference(s, d);
                 case RALLY -> rallyDifference(s, d);
             };
@@ -57,7 +75,7 @@ public final class MissionVerification {
         if (s.command() != d.command()) {
             return "command sent " + s.commandName() + ", vehicle has " + d.commandName();
         }
-        if (s.command() != com.MAVLink.enums.MAV_CMD.MAV_CMD_NAV_FENCE_RETURN_POINT && s.param1() != d.param1()) {
+        if (s.command() != MAV_CMD.MAV_CMD_NAV_FENCE_RETURN_POINT && s.param1() != d.param1()) {
             return "param1 sent " + s.param1() + ", vehicle has " + d.param1();
         }
         return position(s, d);
@@ -86,7 +104,11 @@ public final class MissionVerification {
         return null;
     }
 
-    private static String difference(MissionItem s, MissionItem d) {
+    private static boolean keepsParam1(Autopilot autopilot, MissionItem item) {
+        return autopilot != Autopilot.PX4 || item.frame() == MAV_FRAME.MAV_FRAME_MISSION || PX4_PARAM1.contains(item.command());
+    }
+
+    private static String difference(MissionItem s, MissionItem d, boolean param1Kept) {
         if (s.command() != d.command()) {
             return "command sent " + s.commandName() + ", vehicle has " + d.commandName();
         }
@@ -94,7 +116,7 @@ public final class MissionVerification {
                 && MissionItem.altitudeReference(s.frame()) != MissionItem.altitudeReference(d.frame())) {
             return "frame sent " + s.frameName() + ", vehicle has " + d.frameName();
         }
-        if (Float.compare(s.param1(), d.param1()) != 0 && !(s.param1() == d.param1())) {
+        if (param1Kept && Float.compare(s.param1(), d.param1()) != 0 && !(s.param1() == d.param1())) {
             return "param1 sent " + s.param1() + ", vehicle has " + d.param1();
         }
         String where = position(s, d);
