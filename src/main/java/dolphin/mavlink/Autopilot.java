@@ -22,7 +22,7 @@ public enum Autopilot {
      * home as item 0 of every mission, which MAVLink FTP transfers as the file @MISSION/mission.dat.
      */
     ARDUPILOT("ArduPilot", Autopilot::arduPilotModes, mode -> new float[] {MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED, mode},
-            "AUTO", true, true) {
+            "AUTO", true, true, true) {
         @Override
         public String label(VehicleFamily family) {
             return switch (family) {
@@ -41,10 +41,10 @@ public enum Autopilot {
      * seq 0, with no home before it; no mission over MAVLink FTP.
      */
     PX4("PX4", family -> Px4Modes.TABLE, mode -> new float[] {MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED,
-            Px4Modes.main(mode), Px4Modes.sub(mode)}, "AUTO.MISSION", false, false),
+            Px4Modes.main(mode), Px4Modes.sub(mode)}, "AUTO.MISSION", false, false, false),
     /** Any other autopilot: discovered and usable, its modes shown as numbers, missions as ArduPilot numbers them. */
     OTHER("other", family -> ModeTable.NONE, mode -> new float[] {MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED, mode},
-            "AUTO", true, false);
+            "AUTO", true, false, false);
 
     private final String name;
     private final Function<VehicleFamily, ModeTable> modes;
@@ -52,15 +52,17 @@ public enum Autopilot {
     private final String missionMode;
     private final boolean homeItem;
     private final boolean missionFtp;
+    private final boolean requestsAhead;
 
     Autopilot(String name, Function<VehicleFamily, ModeTable> modes, LongFunction<float[]> setMode, String missionMode,
-              boolean homeItem, boolean missionFtp) {
+              boolean homeItem, boolean missionFtp, boolean requestsAhead) {
         this.name = name;
         this.modes = modes;
         this.setMode = setMode;
         this.missionMode = missionMode;
         this.homeItem = homeItem;
         this.missionFtp = missionFtp;
+        this.requestsAhead = requestsAhead;
     }
 
     /** The autopilot of a HEARTBEAT's autopilot field. */
@@ -99,6 +101,15 @@ public enum Autopilot {
     /** Whether the vehicle's mission may go over MAVLink FTP, when the vehicle offers FTP at all. */
     public boolean missionFtp() {
         return missionFtp;
+    }
+
+    /**
+     * Whether a download may ask for several items at once: ArduPilot answers any request in range;
+     * PX4 only the next one or the last again, and aborts the transfer on any other
+     * (MavlinkMissionManager::handle_mission_request_both), so its items are asked for one at a time.
+     */
+    public boolean requestsAhead() {
+        return requestsAhead;
     }
 
     /**

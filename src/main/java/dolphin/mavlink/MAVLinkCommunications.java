@@ -652,7 +652,8 @@ public final class MAVLinkCommunications implements AutoCloseable {
             capabilities.answered(n);
         });
         handler.on(msg_statustext.class, (n, m) -> {
-            String text = m.getText();
+            // PX4 ends its texts with a tab
+            String text = m.getText().strip();
             LOG.info("vehicle {}: {}", n.getId(), text);
             changed(n, s -> s.withStatusText(text));
         });

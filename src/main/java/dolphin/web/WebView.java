@@ -103,7 +103,7 @@ public final class WebView implements EngineListener, AutoCloseable {
         // MessageHandler keeps its consumers: a closed view ignores what still comes.
         comms.messageHandler().on(msg_statustext.class, (n, m) -> {
             if (running) {
-                log.add(now(), "vehicle", n.getId(), m.getText());
+                log.add(now(), "vehicle", n.getId(), m.getText().strip());
             }
         });
         this.sampler = new Thread(this::sampleLoop, "dolphin web sampler");

@@ -110,10 +110,12 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     /** STATUSTEXT, on the communications thread, in the order the vehicle sent it. */
     public void consume(msg_statustext message) {
         long now = clock().nanoTime();
-        words.heard(message.severity, message.getText(), now);
+        // PX4 ends its texts with a tab
+        String text = message.getText().strip();
+        words.heard(message.severity, text, now);
         ItemRefusals r = refusals;
         if (r != null) {
-            r.text(message.severity, message.getText(), now);
+            r.text(message.severity, text, now);
         }
     }
 
@@ -521,7 +523,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         private final Plan plan;
         private final CommandSteps commands = commandSteps(what -> { });
         private final CommandSteps before = commandSteps(what -> { });
-        private final long checkedBy;
+        /** When the lists were on the vehicle: from then on a vehicle that checks the mission may refuse it. */
+        private final long uploaded;
         private boolean armModeSet;
         private CompletableFuture<CommandResult> pending;
         private long nextAttempt;
@@ -530,7 +533,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             super(FlightState.ARM, config.arm());
             this.plan = plan;
             nextAttempt = clock().nanoTime();
-            checkedBy = nextAttempt + MISSION_CHECK_WAIT.toNanos();
+            uploaded = nextAttempt;
             if (armsInAuto()) {
                 before.add(firstItemCurrent());
             }
@@ -547,10 +550,13 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 return before.failure() != null ? fail(before.failure()) : CompletionState.IN_PROGRESS;
             }
             if (rules.checksMissionAfterUpload() && !missionChecked(vehicle.state())) {
-                return now < checkedBy ? CompletionState.IN_PROGRESS : fail("vehicle " + vehicle.vehicleId()
-                        + " did not find the mission feasible within " + MISSION_CHECK_WAIT.toSeconds() + " s (MISSION_CURRENT "
-                        + "still says no mission)" + vehicle.state().statusTexts().stream().reduce((a, b) -> b)
-                        .map(t -> "; it said last: " + t.strip()).orElse(""));
+                var refused = words.firstSevere(uploaded);
+                if (refused.isPresent()) {
+                    return fail("vehicle " + vehicle.vehicleId() + " found the mission infeasible: '" + refused.get().text() + "'");
+                }
+                return now < uploaded + MISSION_CHECK_WAIT.toNanos() ? CompletionState.IN_PROGRESS : fail("vehicle "
+                        + vehicle.vehicleId() + " did not find the mission feasible within " + MISSION_CHECK_WAIT.toSeconds()
+                        + " s: MISSION_CURRENT still says no mission");
             }
             var armMode = rules.armMode();
             if (armMode.isPresent() && !armModeSet) {

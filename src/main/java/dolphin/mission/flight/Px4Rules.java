@@ -55,10 +55,26 @@ enum Px4Rules implements FlightRules {
             return 80;
         }
     },
+    /**
+     * A take-off and a landing become NAV_VTOL_TAKEOFF and NAV_VTOL_LAND: PX4 flies a whole mission
+     * as a multicopter after a NAV_TAKEOFF (it transitions only after NAV_VTOL_TAKEOFF, Mission::set_mission_items),
+     * and lands as one after a NAV_VTOL_LAND, back-transitioning on the way (MissionBase::handleLanding).
+     */
     VTOL {
         @Override
         public Set<FlightWay> flightWays() {
             return Set.of(FlightWay.AS_THE_VEHICLE_DOES, FlightWay.VERTICAL);
+        }
+
+        @Override
+        MissionItem flown(MissionItem i) {
+            int command = switch (i.command()) {
+                case MAV_CMD.MAV_CMD_NAV_TAKEOFF -> MAV_CMD.MAV_CMD_NAV_VTOL_TAKEOFF;
+                case MAV_CMD.MAV_CMD_NAV_LAND -> MAV_CMD.MAV_CMD_NAV_VTOL_LAND;
+                default -> i.command();
+            };
+            return command == i.command() || i.seq() == 0 ? i : new MissionItem(i.seq(), command, i.frame(), 0, 0, 0, i.param4(),
+                    i.x(), i.y(), i.z(), i.autocontinue());
         }
 
         @Override
@@ -111,12 +127,17 @@ enum Px4Rules implements FlightRules {
         };
     }
 
-    /** Commands without a position go in MAV_FRAME_MISSION: PX4 refuses them in a global frame. */
+    /** Each item as this kind of vehicle flies it; commands without a position in MAV_FRAME_MISSION, as PX4 takes them only. */
     @Override
     public Boarded onBoard(List<MissionItem> items, Boarding boarding) {
-        return new Boarded(items.stream().map(i -> i.seq() == 0 || POSITIONAL.contains(i.command())
+        return new Boarded(items.stream().map(this::flown).map(i -> i.seq() == 0 || POSITIONAL.contains(i.command())
                 || i.frame() == MAV_FRAME.MAV_FRAME_MISSION ? i : new MissionItem(i.seq(), i.command(), MAV_FRAME.MAV_FRAME_MISSION,
                 i.param1(), i.param2(), i.param3(), i.param4(), i.x(), i.y(), i.z(), i.autocontinue())).toList(), List.of());
+    }
+
+    /** The item as this kind of vehicle must be told to fly it; as written, by default. */
+    MissionItem flown(MissionItem i) {
+        return i;
     }
 
     @Override

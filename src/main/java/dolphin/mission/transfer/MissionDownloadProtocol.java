@@ -1,5 +1,6 @@
 package dolphin.mission.transfer;
 
+import dolphin.mavlink.Autopilot;
 import dolphin.mavlink.ProtocolTimers;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
@@ -49,11 +50,11 @@ public final class MissionDownloadProtocol {
         Download d = new Download(transfers.vehicle(), transfers.timers(), config, progress, type);
         transfers.submit(d);
         VehicleChannel vehicle = transfers.vehicle();
-        if (MissionNumbering.offset(vehicle.autopilot(), type) == 0) {
+        if (AutopilotLists.offset(vehicle.autopilot(), type) == 0) {
             return d.result;
         }
         return d.result.thenApply(r -> !r.success() ? r : new TransferResult(true, null,
-                MissionNumbering.fromVehicle(vehicle.autopilot(), type, r.items(), vehicle.home()), r.resends(), r.ignoredAcks(),
+                AutopilotLists.fromVehicle(vehicle.autopilot(), type, r.items(), vehicle.home()), r.resends(), r.ignoredAcks(),
                 r.verified(), r.note()));
     }
 
@@ -75,12 +76,14 @@ public final class MissionDownloadProtocol {
      * read its list back. Up to {@link #WINDOW} MISSION_REQUEST_INTs outstanding, lowest seqs first
      * (ArduPilot answers any request in range, in any order): items may come lost, twice or out of
      * order; each arrives once into its place, and each request unanswered for a timeout goes
-     * again.
+     * again. From an autopilot that answers only the next request or the last again (PX4, which
+     * aborts the transfer on any other), one at a time ({@link Autopilot#requestsAhead}).
      */
     static final class Download extends Transfer {
         /** Requests outstanding at most: hides most of the round trip, while a slow radio's queue stays short. */
         static final int WINDOW = 4;
 
+        private final int window;
         private MissionItem[] got;
         private int[] sends;           // sends of each request
         private long[] sentAt;         // when each request was last sent
@@ -94,6 +97,7 @@ public final class MissionDownloadProtocol {
         Download(VehicleChannel vehicle, ProtocolTimers timers, MissionTransferConfig config, TransferProgress progress,
                  MissionType type) {
             super(vehicle, timers, config, progress, type);
+            window = vehicle.autopilot().requestsAhead() ? WINDOW : 1;
         }
 
         @Override
@@ -139,9 +143,9 @@ public final class MissionDownloadProtocol {
             send(m);
         }
 
-        /** Requests the next seqs while fewer than WINDOW are outstanding, and times the oldest outstanding. */
+        /** Requests the next seqs while fewer than the window are outstanding, and times the oldest outstanding. */
         private void fill() {
-            while (next < count && next - received < WINDOW) {
+            while (next < count && next - received < window) {
                 request(next++);
             }
             long oldest = Long.MAX_VALUE;

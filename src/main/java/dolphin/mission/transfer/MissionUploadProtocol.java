@@ -54,7 +54,7 @@ public final class MissionUploadProtocol {
                                                     TransferProgress progress) {
         var autopilot = transfers.vehicle().autopilot();
         Upload u = new Upload(transfers.vehicle(), transfers.timers(), config, progress, type,
-                List.copyOf(MissionNumbering.toVehicle(autopilot, type, items)), MissionNumbering.offset(autopilot, type));
+                List.copyOf(AutopilotLists.toVehicle(autopilot, type, items)), AutopilotLists.offset(autopilot, type));
         transfers.submit(u, u.items);
         return u.result;
     }

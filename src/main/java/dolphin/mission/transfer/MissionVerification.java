@@ -25,7 +25,7 @@ import java.util.Set;
  * <p>PX4 keeps every param of a command without a position (MAV_FRAME_MISSION), but of one with a
  * position only the params its navigator uses (MavlinkMissionManager::format_mavlink_mission_item):
  * param1 only of a waypoint (its hold time), a timed loiter and a loiter to altitude. The runtime
- * numbers a PX4 mission with home as item 0 too ({@link MissionNumbering}), so item 0 is skipped alike.
+ * numbers a PX4 mission with home as item 0 too ({@link AutopilotLists}), so item 0 is skipped alike.
  */
 public final class MissionVerification {
 

@@ -63,7 +63,7 @@ public interface VehicleChannel {
     /** Asks the vehicle for its home now (MAV_CMD_REQUEST_MESSAGE HOME_POSITION), not waiting for its stream. */
     void askHome();
 
-    /** The vehicle's autopilot: how it numbers a mission's items ({@link MissionNumbering}) and whether it has missions over FTP. */
+    /** The vehicle's autopilot: how it numbers a mission's items ({@link AutopilotLists}) and whether it has missions over FTP. */
     Autopilot autopilot();
 
     /** The vehicle's firmware family: what it keeps of an item depends on it ({@link StoredItems}). */

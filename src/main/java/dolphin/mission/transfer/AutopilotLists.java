@@ -9,14 +9,16 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * A mission as the runtime numbers it, home as item 0, and as a vehicle whose autopilot keeps no
- * home item numbers it (PX4: the first item is seq 0). Uploads leave item 0 out and renumber the
- * rest, DO_JUMP targets with them; downloads put the vehicle's home back in front. Fences and rally
- * points, and every list of an autopilot with a home item, pass unchanged.
+ * A list as the runtime writes it and as the vehicle's autopilot holds it. The runtime numbers a
+ * mission with home as item 0; an autopilot that keeps no home item (PX4) numbers its first item 0:
+ * uploads leave item 0 out and renumber the rest, DO_JUMP targets with them, and downloads put the
+ * vehicle's home back in front. PX4's return reads a rally point's frame as sent, and only
+ * MAV_FRAME_GLOBAL and GLOBAL_RELATIVE_ALT ("RTL: unsupported MAV_FRAME" otherwise, on its SITL):
+ * its rally points go in those. Every list of ArduPilot passes unchanged.
  */
-final class MissionNumbering {
+final class AutopilotLists {
 
-    private MissionNumbering() {
+    private AutopilotLists() {
     }
 
     /** The number of items the runtime's list has before the vehicle's first: 1 when home is left out. */
@@ -26,6 +28,10 @@ final class MissionNumbering {
 
     /** The items as the vehicle numbers them. */
     static List<MissionItem> toVehicle(Autopilot autopilot, MissionType type, List<MissionItem> items) {
+        if (type == MissionType.RALLY && autopilot == Autopilot.PX4) {
+            return items.stream().map(i -> new MissionItem(i.seq(), i.command(), MissionItem.altitudeReference(i.frame()), i.param1(),
+                    i.param2(), i.param3(), i.param4(), i.x(), i.y(), i.z(), i.autocontinue())).toList();
+        }
         int offset = offset(autopilot, type);
         if (offset == 0 || items.isEmpty()) {
             return items;
