@@ -361,11 +361,17 @@ class FakeFlightVehicle implements MissionVehicle {
         t
     }
 
-    /** The oldest waiting upload succeeds: the vehicle holds its items. */
+    /** Whether a PX4 vehicle finds an uploaded mission feasible, and says so in MISSION_CURRENT (NOT_STARTED). */
+    boolean feasible = true
+
+    /** The oldest waiting upload succeeds: the vehicle holds its items; a PX4 vehicle checks a mission then. */
     void completeUpload(Transfer t = pendingTransfer()) {
         assert t.upload
         stored[t.type] = t.items
         t.result.complete(new TransferResult(true, null, t.items, 0, 0))
+        if (t.type == MissionType.MISSION && state.autopilot() == Autopilot.PX4) {
+            missionCurrent(1, feasible ? MISSION_STATE.MISSION_STATE_NOT_STARTED : MISSION_STATE.MISSION_STATE_NO_MISSION)
+        }
     }
 
     /** The oldest waiting transfer fails with the error. */

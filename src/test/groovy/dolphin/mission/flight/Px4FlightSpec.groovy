@@ -1,0 +1,166 @@
+package dolphin.mission.flight
+
+import com.MAVLink.enums.MAV_CMD
+import com.MAVLink.enums.MAV_FRAME
+import com.MAVLink.enums.MAV_SEVERITY
+import com.MAVLink.enums.MISSION_STATE
+import dolphin.core.CompletionState
+import dolphin.core.Position
+import dolphin.mavlink.Autopilot
+import dolphin.mavlink.VehicleFamily
+import dolphin.mission.dsl.MissionDsl
+import dolphin.mission.flight.MissionExecutor.FlightState
+import dolphin.mission.model.MissionType
+
+/**
+ * How the executor flies a PX4 vehicle (Px4Rules; docs/px4.md): its modes asked for as main and sub
+ * modes, nothing asked until its feasibility check shows the mission NOT_STARTED, started from the
+ * first item by MISSION_START alone, items numbered from 0 on the vehicle, AUTO.RTL when cut short,
+ * and the commands and frames PX4 takes. A FakeFlightVehicle on a ManualClock.
+ */
+class Px4FlightSpec extends MissionFlights {
+
+    static final Position HOME = Position.fromDegrees(40.444233, -7.375234, 820)
+
+    FakeFlightVehicle px4(VehicleFamily family = VehicleFamily.COPTER) {
+        def v = new FakeFlightVehicle(clock, '1', family, Autopilot.PX4)
+        v.ready()
+        v.autopilot = true
+        v
+    }
+
+    def "a PX4 copter: armed in the mode it is in, then AUTO.MISSION asked as main mode 4, sub mode 4, and MISSION_START; no DO_SET_MISSION_CURRENT"() {
+        given:
+        vehicle = px4()
+
+        when:
+        launch(hop())
+        stepUntil(FlightState.RUNNING)
+
+        then:
+        vehicle.commands*.text == ['ARM', 'DO_SET_MODE AUTO.MISSION', 'MISSION_START']
+        vehicle.commands[1].params as List == [1f, 4f, 4f]
+        vehicle.state.inMode('AUTO.MISSION')
+    }
+
+    def "items reached and current are numbered from 0 on the vehicle, from 1 in the flight's lines; the landing ends it disarmed"() {
+        given:
+        vehicle = px4()
+        launch(hop())
+        stepUntil(FlightState.RUNNING)
+
+        when: 'the vehicle reports its seq 1 reached and seq 2 current: items 2 and 3, the landing'
+        vehicle.next(3)
+        runTo(10)
+
+        then:
+        messages.contains('mission hop on vehicle 1: item 2 of 3 reached')
+
+        when:
+        vehicle.landAndDisarm()
+
+        then:
+        runTo(30).type == CompletionState.Type.DONE
+    }
+
+    def "nothing is asked of a PX4 vehicle until it finds the mission feasible; one it refuses fails with its words, unarmed"() {
+        given:
+        vehicle = px4()
+        vehicle.feasible = false
+        launch(hop())
+        stepUntil(FlightState.ARM)
+
+        when:
+        def waiting = runTo(2)
+
+        then:
+        waiting.type == CompletionState.Type.IN_PROGRESS
+        vehicle.commands.empty
+
+        when:
+        vehicle.text('Geofence violation for waypoint 3\t', MAV_SEVERITY.MAV_SEVERITY_CRITICAL)
+        def outcome = runTo(3)
+
+        then:
+        outcome.type == CompletionState.Type.ERROR
+        outcome.message == "mission hop on vehicle 1: vehicle 1 found the mission infeasible: 'Geofence violation for waypoint 3'"
+        vehicle.commands.empty
+    }
+
+    def "a mission MISSION_CURRENT never says feasible fails after 10 s, unarmed"() {
+        given:
+        vehicle = px4()
+        vehicle.feasible = false
+        launch(hop())
+        stepUntil(FlightState.ARM)
+
+        when:
+        def outcome = runTo(12)
+
+        then:
+        outcome.type == CompletionState.Type.ERROR
+        outcome.message.endsWith('vehicle 1 did not find the mission feasible within 10 s: MISSION_CURRENT still says no mission')
+        vehicle.commands.empty
+    }
+
+    def "cut short, a PX4 vehicle returns in AUTO.RTL"() {
+        given:
+        vehicle = px4()
+        launch(hop())
+        stepUntil(FlightState.RUNNING)
+        int before = vehicle.commands.size()
+
+        when:
+        executor.stop()
+
+        then:
+        vehicle.commands.drop(before)*.text == ['DO_SET_MODE AUTO.RTL']
+        vehicle.commands.last().params as List == [1f, 4f, 5f]
+    }
+
+    def "commands without a position go in MAV_FRAME_MISSION; a PX4 VTOL's take-off and landing become VTOL items"() {
+        given:
+        vehicle = px4(family)
+        def task = MissionDsl.mission {
+            name 'hop'
+            home HOME
+            takeOff HOME.atHeight(850)
+            speed 8
+            move 100, 0
+            returnHomeAndLand()
+        }
+
+        when:
+        launch(task)
+        stepUntil(FlightState.RUNNING)
+        def uploaded = vehicle.stored[MissionType.MISSION]
+
+        then:
+        uploaded.drop(1)*.command == commands
+        uploaded.find { it.command == MAV_CMD.MAV_CMD_DO_CHANGE_SPEED }.frame == MAV_FRAME.MAV_FRAME_MISSION
+        uploaded.findAll { it.command != MAV_CMD.MAV_CMD_DO_CHANGE_SPEED }.every { it.frame != MAV_FRAME.MAV_FRAME_MISSION }
+
+        where:
+        family               || commands
+        VehicleFamily.COPTER || [MAV_CMD.MAV_CMD_NAV_TAKEOFF, MAV_CMD.MAV_CMD_DO_CHANGE_SPEED, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_CMD.MAV_CMD_NAV_LAND]
+        VehicleFamily.VTOL   || [MAV_CMD.MAV_CMD_NAV_VTOL_TAKEOFF, MAV_CMD.MAV_CMD_DO_CHANGE_SPEED, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_CMD.MAV_CMD_NAV_VTOL_LAND]
+    }
+
+    def "#what is refused before anything is uploaded: #message"() {
+        given:
+        vehicle = px4()
+
+        when:
+        launch(task)
+        def outcome = runTo(1)
+
+        then:
+        outcome.type == CompletionState.Type.ERROR
+        outcome.message == "mission ${task.mission().id} on vehicle 1: ${message}"
+        vehicle.transfers.empty
+
+        where:
+        what                   | task  || message
+        'a loiter turn'        | MissionDsl.mission { name 'turns'; takeOff HOME.atHeight(850); loiterTurns 40.4446, -7.375234, 850, 2 } || 'item 2 (NAV_LOITER_TURNS) cannot be flown by vehicle 1 (PX4 multicopter): PX4\'s missions do not fly this command: loiter for a time (NAV_LOITER_TIME) instead'
+    }
+}
