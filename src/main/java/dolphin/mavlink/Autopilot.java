@@ -1,8 +1,10 @@
 package dolphin.mavlink;
 
+import com.MAVLink.common.msg_sys_status;
 import com.MAVLink.enums.COPTER_MODE;
 import com.MAVLink.enums.MAV_AUTOPILOT;
 import com.MAVLink.enums.MAV_MODE_FLAG;
+import com.MAVLink.enums.MAV_SYS_STATUS_SENSOR;
 import com.MAVLink.enums.PLANE_MODE;
 import com.MAVLink.enums.ROVER_MODE;
 import com.MAVLink.enums.SUB_MODE;
@@ -22,7 +24,7 @@ public enum Autopilot {
      * home as item 0 of every mission, which MAVLink FTP transfers as the file @MISSION/mission.dat.
      */
     ARDUPILOT("ArduPilot", Autopilot::arduPilotModes, mode -> new float[] {MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED, mode},
-            "AUTO", true, true, true) {
+            "AUTO", true, true, true, true, "PreArm:") {
         @Override
         public String label(VehicleFamily family) {
             return switch (family) {
@@ -41,10 +43,10 @@ public enum Autopilot {
      * seq 0, with no home before it; no mission over MAVLink FTP.
      */
     PX4("PX4", family -> Px4Modes.TABLE, mode -> new float[] {MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED,
-            Px4Modes.main(mode), Px4Modes.sub(mode)}, "AUTO.MISSION", false, false, false),
+            Px4Modes.main(mode), Px4Modes.sub(mode)}, "AUTO.MISSION", false, false, false, false, "Preflight Fail:"),
     /** Any other autopilot: discovered and usable, its modes shown as numbers, missions as ArduPilot numbers them. */
     OTHER("other", family -> ModeTable.NONE, mode -> new float[] {MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED, mode},
-            "AUTO", true, false, false);
+            "AUTO", true, false, false, true, "PreArm:");
 
     private final String name;
     private final Function<VehicleFamily, ModeTable> modes;
@@ -53,9 +55,11 @@ public enum Autopilot {
     private final boolean homeItem;
     private final boolean missionFtp;
     private final boolean requestsAhead;
+    private final boolean prearmEnabledBit;
+    private final String prearmPrefix;
 
     Autopilot(String name, Function<VehicleFamily, ModeTable> modes, LongFunction<float[]> setMode, String missionMode,
-              boolean homeItem, boolean missionFtp, boolean requestsAhead) {
+              boolean homeItem, boolean missionFtp, boolean requestsAhead, boolean prearmEnabledBit, String prearmPrefix) {
         this.name = name;
         this.modes = modes;
         this.setMode = setMode;
@@ -63,6 +67,8 @@ public enum Autopilot {
         this.homeItem = homeItem;
         this.missionFtp = missionFtp;
         this.requestsAhead = requestsAhead;
+        this.prearmEnabledBit = prearmEnabledBit;
+        this.prearmPrefix = prearmPrefix;
     }
 
     /** The autopilot of a HEARTBEAT's autopilot field. */
@@ -110,6 +116,22 @@ public enum Autopilot {
      */
     public boolean requestsAhead() {
         return requestsAhead;
+    }
+
+    /**
+     * Whether SYS_STATUS says the vehicle's pre-arm checks fail. ArduPilot reports them as a sensor,
+     * enabled, and unhealthy while they fail; PX4 sets only the health bit, while it could arm in
+     * its current mode (its SYS_STATUS stream), so a clear bit is a failure there. Unknown before the first SYS_STATUS: not failing.
+     */
+    public boolean prearmFailing(msg_sys_status status) {
+        int bit = MAV_SYS_STATUS_SENSOR.MAV_SYS_STATUS_PREARM_CHECK;
+        return status != null && (!prearmEnabledBit || (status.onboard_control_sensors_enabled & bit) != 0)
+                && (status.onboard_control_sensors_health & bit) == 0;
+    }
+
+    /** How the autopilot's texts about a failing pre-arm check begin: "PreArm:" (ArduPilot), "Preflight Fail:" (PX4). */
+    public String prearmPrefix() {
+        return prearmPrefix;
     }
 
     /**

@@ -27,20 +27,41 @@ import spock.util.concurrent.PollingConditions
  * ARDUPILOT_SITL_SUB_DEFAULTS (their parameter files, comma-separated; by default ArduPilot's
  * copter.parm, plane.parm, rover.parm, rover.parm with motorboat.parm, or sub.parm, found in
  * Tools/autotest from a binary in build/sitl/bin), ARDUPILOT_SITL_SPEEDUP (SITL's --speedup,
- * default 1). Close it to stop every process.
+ * default 1); for PX4, PX4_SITL_BIN (build/px4_sitl_default/bin/px4) and PX4_SITL_SPEEDUP (its
+ * PX4_SIM_SPEED_FACTOR, default 1). Close it to stop every process.
  */
 class SitlHarness implements AutoCloseable {
 
     static final double SPEEDUP = (System.getenv('ARDUPILOT_SITL_SPEEDUP') ?: '1') as double
+    static final double PX4_SPEEDUP = (System.getenv('PX4_SITL_SPEEDUP') ?: '1') as double
 
     final MAVLinkCommunications comms
-    final List<SitlVehicle> vehicles = []
+    final List<AutoCloseable> vehicles = []
     /** The program's messages and the platform tasks' events, as `dolphin run` prints them (without times). */
     final List<String> lines = Collections.synchronizedList([])
 
     SitlHarness() {
-        comms = new MAVLinkCommunications(MAVLinkConfig.of('udpin:127.0.0.1:0'), SystemClock.REAL)
+        this('udpin:127.0.0.1:0')
+    }
+
+    /** A ground station on these links: PX4 SITL's are udpout to each vehicle ({@link #px4Links}). */
+    SitlHarness(String... links) {
+        comms = new MAVLinkCommunications(MAVLinkConfig.of(links), SystemClock.REAL)
         comms.start()
+    }
+
+    /** The links to talk to PX4 SITL instances 0 to {@code count} - 1. */
+    static String[] px4Links(int count) {
+        (0..<count).collect { "udpout:127.0.0.1:${Px4SitlVehicle.GCS_PORT + it}".toString() } as String[]
+    }
+
+    /** Starts PX4 SITL instance {@code instance} (system id instance + 1) of the SIH model, e.g. quadx, standard_vtol. */
+    Px4SitlVehicle startPx4(String model, int instance, Position home, Map<String, Object> params = [:]) {
+        String binary = new File(System.getenv('PX4_SITL_BIN')).absolutePath
+        assert new File(binary).canExecute(): "PX4_SITL_BIN=${binary} is not an executable file"
+        def v = new Px4SitlVehicle(binary, model, instance, home, PX4_SPEEDUP, params)
+        vehicles << v
+        v
     }
 
     /**
@@ -75,6 +96,17 @@ class SitlHarness implements AutoCloseable {
             guess == null ? null : ['default_params', 'models'].collect { new File(guess, "Tools/autotest/${it}/${parmFile}") }.find { it.isFile() }
         }
         found.contains(null) ? null : found*.absolutePath.join(',')
+    }
+
+    /**
+     * Waits until {@code count} vehicles are heard, then {@code seconds} more (real time). PX4's SIH at a
+     * speed factor above 1 on a busy machine can lose its baro and compass in its first seconds ("Preflight
+     * Fail: No valid data from Baro 0") after saying it may arm, and lands at once when armed then: a SITL
+     * start-up artefact, which the PX4 specs let pass before their first script.
+     */
+    void settle(int count, double seconds) {
+        within(60) { assert comms.nodes().size() == count }
+        Thread.sleep(Math.round(seconds * 1000))
     }
 
     /** Runs a script with a new Engine on this ground station; its result, or a failure after {@code deadline}. */

@@ -3,7 +3,6 @@ package dolphin.sitl
 import dolphin.core.Position
 import java.nio.file.Files
 import java.nio.file.Path
-import java.util.concurrent.TimeUnit
 
 /**
  * One ArduPilot SITL process (arducopter, arduplane, ardurover or ardusub, run directly, without
@@ -71,15 +70,7 @@ class SitlVehicle implements AutoCloseable {
      */
     @Override
     void close() {
-        List<ProcessHandle> tree = process.descendants().toList() + [process.toHandle()]
-        tree.each { it.destroy() }
-        tree.each { h ->
-            try {
-                h.onExit().get(5, TimeUnit.SECONDS)
-            } catch (java.util.concurrent.TimeoutException ignored) {
-                h.destroyForcibly()
-            }
-        }
+        SitlProcesses.end(process)
         dir.toFile().deleteDir()
     }
 

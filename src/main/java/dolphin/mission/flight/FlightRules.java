@@ -130,8 +130,16 @@ public interface FlightRules {
     }
 
     /**
-     * Whether the vehicle checks a mission after its upload, and takes no mode or start for it until it
-     * shows it NOT_STARTED in MISSION_CURRENT (PX4's feasibility check: an infeasible mission stays NO_MISSION).
+     * Whether the vehicle's fence is switched on by MAV_CMD_DO_FENCE_ENABLE (ArduPilot); PX4 takes no
+     * such command and keeps to a fence from its upload on, by its GF_ACTION.
+     */
+    default boolean fenceSwitch() {
+        return true;
+    }
+
+    /**
+     * Whether the vehicle checks a mission after its upload, and takes no mode or start for it until
+     * MISSION_CURRENT shows it valid (PX4's feasibility check: an infeasible mission is NO_MISSION).
      */
     default boolean checksMissionAfterUpload() {
         return false;

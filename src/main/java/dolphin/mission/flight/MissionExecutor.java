@@ -596,9 +596,15 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             return CompletionState.IN_PROGRESS;
         }
 
-        /** The vehicle holds the uploaded mission and found it feasible: NOT_STARTED with all its items. */
+        /**
+         * The vehicle holds the uploaded mission and found it feasible: all its items, and a state a valid mission has
+         * (NOT_STARTED; ACTIVE or PAUSED when PX4 is still in AUTO.MISSION after an earlier flight). An infeasible one
+         * is NO_MISSION; COMPLETE is the earlier mission's, which a new one clears.
+         */
         private boolean missionChecked(VehicleState s) {
-            return s.missionState() == MISSION_STATE.MISSION_STATE_NOT_STARTED && s.missionTotal() == plan.items().size() - 1;
+            int state = s.missionState();
+            return s.missionTotal() == plan.items().size() - 1 && (state == MISSION_STATE.MISSION_STATE_NOT_STARTED
+                    || state == MISSION_STATE.MISSION_STATE_ACTIVE || state == MISSION_STATE.MISSION_STATE_PAUSED);
         }
 
         private CommandResult answer() {
@@ -637,7 +643,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         Starting(Plan plan) {
             super(FlightState.START, config.start());
             this.plan = plan;
-            if (mission.fenceEnabled()) {
+            if (mission.fenceEnabled() && rules.fenceSwitch()) {
                 steps.add(new CommandSteps.Step("MAV_CMD_DO_FENCE_ENABLE 1", () -> vehicle.command(
                         MAV_CMD.MAV_CMD_DO_FENCE_ENABLE, 1, 0), st -> false));
             }

@@ -171,6 +171,11 @@ enum Px4Rules implements FlightRules {
     }
 
     @Override
+    public boolean fenceSwitch() {
+        return false;
+    }
+
+    @Override
     public boolean checksMissionAfterUpload() {
         return true;
     }

@@ -1,8 +1,6 @@
 package dolphin.mission.flight;
 
-import com.MAVLink.common.msg_sys_status;
 import com.MAVLink.enums.EKF_STATUS_FLAGS;
-import com.MAVLink.enums.MAV_SYS_STATUS_SENSOR;
 import dolphin.mavlink.VehicleState;
 import java.util.List;
 import java.util.Optional;
@@ -15,8 +13,6 @@ import java.util.Optional;
  */
 final class Readiness {
 
-    private static final String PREARM = "PreArm:";
-
     private Readiness() {
     }
 
@@ -26,7 +22,7 @@ final class Readiness {
         if (unlocated.isPresent()) {
             return unlocated;
         }
-        if (!s.armed() && prearmFailing(s.systemStatus())) {
+        if (!s.armed() && s.autopilot().prearmFailing(s.systemStatus())) {
             return Optional.of(prearmText(s).orElse("pre-arm checks failing"));
         }
         return Optional.empty();
@@ -58,18 +54,12 @@ final class Readiness {
         return flags < 0 || ((flags & EKF_STATUS_FLAGS.EKF_POS_HORIZ_ABS) != 0 && (flags & EKF_STATUS_FLAGS.EKF_CONST_POS_MODE) == 0);
     }
 
-    /** ArduPilot reports its pre-arm checks as a sensor in SYS_STATUS: enabled and unhealthy while they fail. */
-    private static boolean prearmFailing(msg_sys_status status) {
-        int bit = MAV_SYS_STATUS_SENSOR.MAV_SYS_STATUS_PREARM_CHECK;
-        return status != null && (status.onboard_control_sensors_enabled & bit) != 0
-                && (status.onboard_control_sensors_health & bit) == 0;
-    }
-
-    /** The vehicle's latest "PreArm: ..." text, if it sent one. */
+    /** The vehicle's latest text about a failing pre-arm check ("PreArm: ...", PX4's "Preflight Fail: ..."), if it sent one. */
     static Optional<String> prearmText(VehicleState s) {
         List<String> texts = s.statusTexts();
+        String prefix = s.autopilot().prearmPrefix();
         for (int i = texts.size() - 1; i >= 0; i--) {
-            if (texts.get(i).startsWith(PREARM)) {
+            if (texts.get(i).startsWith(prefix)) {
                 return Optional.of(texts.get(i));
             }
         }

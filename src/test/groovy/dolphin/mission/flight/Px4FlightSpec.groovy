@@ -87,6 +87,28 @@ class Px4FlightSpec extends MissionFlights {
         vehicle.commands.empty
     }
 
+    def "a PX4 vehicle still in AUTO.MISSION after a flight says a new mission ACTIVE once it holds it, not COMPLETE"() {
+        given:
+        vehicle = px4()
+        vehicle.feasible = false
+        launch(hop())
+        stepUntil(FlightState.ARM)
+
+        when: 'the earlier flight\'s COMPLETE, for as many items'
+        vehicle.missionCurrent(3, MISSION_STATE.MISSION_STATE_COMPLETE)
+        runTo(2)
+
+        then:
+        vehicle.commands.empty
+
+        when:
+        vehicle.missionCurrent(3, MISSION_STATE.MISSION_STATE_ACTIVE)
+        runTo(3)
+
+        then:
+        vehicle.commands*.text == ['ARM', 'DO_SET_MODE AUTO.MISSION', 'MISSION_START']
+    }
+
     def "a mission MISSION_CURRENT never says feasible fails after 10 s, unarmed"() {
         given:
         vehicle = px4()

@@ -4,6 +4,7 @@ import com.MAVLink.common.msg_sys_status
 import com.MAVLink.enums.MAV_SYS_STATUS_SENSOR
 import com.MAVLink.minimal.msg_heartbeat
 import dolphin.core.Position
+import dolphin.mavlink.Autopilot
 import dolphin.mavlink.VehicleFamily
 import dolphin.mavlink.VehicleState
 import spock.lang.Specification
@@ -56,5 +57,23 @@ class ReadinessSpec extends Specification {
         'armed and flying: the pre-arm sensor does not matter' | [armed: true, position: true, home: true, prearm: false]     | true      || null
         'ready'                                                | [position: true, home: true, prearm: true]                   | true      || null
         'no SYS_STATUS pre-arm sensor at all (not ArduPilot)'  | [position: true, home: true]                                 | true      || null
+    }
+
+    /** PX4's SYS_STATUS: the pre-arm bit in health only, set while it could arm in its mode; no bit in present or enabled. */
+    static VehicleState px4(boolean canArm, List<String> texts = []) {
+        def status = new msg_sys_status()
+        status.onboard_control_sensors_health = canArm ? PREARM : 0
+        def s = VehicleState.initial(Autopilot.PX4, VehicleFamily.COPTER).withHeartbeat(new msg_heartbeat(), 0)
+                .withPosition(HOME, 0, Double.NaN, 0).withHome(HOME).withSystemStatus(status, 0)
+        texts.each { s = s.withStatusText(it) }
+        s
+    }
+
+    def "a PX4 vehicle is ready once the pre-arm bit is healthy; its 'Preflight Fail' text is quoted while not; ArduPilot's PreArm texts are not its"() {
+        expect:
+        Readiness.missing(px4(false, ['Preflight Fail: No valid data from Baro 0', 'PreArm: not PX4']), true).get() ==
+                'Preflight Fail: No valid data from Baro 0'
+        Readiness.missing(px4(false), true).get() == 'pre-arm checks failing'
+        Readiness.missing(px4(true), true).empty
     }
 }
