@@ -24,7 +24,7 @@ public enum Autopilot {
      * home as item 0 of every mission, which MAVLink FTP transfers as the file @MISSION/mission.dat.
      */
     ARDUPILOT("ArduPilot", Autopilot::arduPilotModes, mode -> new float[] {MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED, mode},
-            "AUTO", true, true, true, true, "PreArm:") {
+            "AUTO", true, true, true, true, "PreArm:", false) {
         @Override
         public String label(VehicleFamily family) {
             return switch (family) {
@@ -43,10 +43,10 @@ public enum Autopilot {
      * seq 0, with no home before it; no mission over MAVLink FTP.
      */
     PX4("PX4", family -> Px4Modes.TABLE, mode -> new float[] {MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED,
-            Px4Modes.main(mode), Px4Modes.sub(mode)}, "AUTO.MISSION", false, false, false, false, "Preflight Fail:"),
+            Px4Modes.main(mode), Px4Modes.sub(mode)}, "AUTO.MISSION", false, false, false, false, "Preflight Fail:", true),
     /** Any other autopilot: discovered and usable, its modes shown as numbers, missions as ArduPilot numbers them. */
     OTHER("other", family -> ModeTable.NONE, mode -> new float[] {MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED, mode},
-            "AUTO", true, false, false, true, "PreArm:");
+            "AUTO", true, false, false, true, "PreArm:", false);
 
     private final String name;
     private final Function<VehicleFamily, ModeTable> modes;
@@ -57,9 +57,11 @@ public enum Autopilot {
     private final boolean requestsAhead;
     private final boolean prearmEnabledBit;
     private final String prearmPrefix;
+    private final boolean repeatsItemReached;
 
     Autopilot(String name, Function<VehicleFamily, ModeTable> modes, LongFunction<float[]> setMode, String missionMode,
-              boolean homeItem, boolean missionFtp, boolean requestsAhead, boolean prearmEnabledBit, String prearmPrefix) {
+              boolean homeItem, boolean missionFtp, boolean requestsAhead, boolean prearmEnabledBit, String prearmPrefix,
+              boolean repeatsItemReached) {
         this.name = name;
         this.modes = modes;
         this.setMode = setMode;
@@ -69,6 +71,7 @@ public enum Autopilot {
         this.requestsAhead = requestsAhead;
         this.prearmEnabledBit = prearmEnabledBit;
         this.prearmPrefix = prearmPrefix;
+        this.repeatsItemReached = repeatsItemReached;
     }
 
     /** The autopilot of a HEARTBEAT's autopilot field. */
@@ -132,6 +135,14 @@ public enum Autopilot {
     /** How the autopilot's texts about a failing pre-arm check begin: "PreArm:" (ArduPilot), "Preflight Fail:" (PX4). */
     public String prearmPrefix() {
         return prearmPrefix;
+    }
+
+    /**
+     * Whether the vehicle sends each MISSION_ITEM_REACHED again after the first: PX4 sends the latest ten
+     * more times, a second apart (MavlinkMissionManager::send), after its mission has ended too.
+     */
+    public boolean repeatsItemReached() {
+        return repeatsItemReached;
     }
 
     /**

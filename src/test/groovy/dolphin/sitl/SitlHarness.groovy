@@ -55,11 +55,15 @@ class SitlHarness implements AutoCloseable {
         (0..<count).collect { "udpout:127.0.0.1:${Px4SitlVehicle.GCS_PORT + it}".toString() } as String[]
     }
 
-    /** Starts PX4 SITL instance {@code instance} (system id instance + 1) of the SIH model, e.g. quadx, standard_vtol. */
+    /**
+     * Starts PX4 SITL instance {@code instance} (system id instance + 1) of the SIH model, e.g. quadx,
+     * standard_vtol, with these parameters and its flight log off (SDLOG_MODE -1): PX4 SITL logs from
+     * arming, and two instances starting their logs at once on a busy machine lost their baro and compass.
+     */
     Px4SitlVehicle startPx4(String model, int instance, Position home, Map<String, Object> params = [:]) {
         String binary = new File(System.getenv('PX4_SITL_BIN')).absolutePath
         assert new File(binary).canExecute(): "PX4_SITL_BIN=${binary} is not an executable file"
-        def v = new Px4SitlVehicle(binary, model, instance, home, PX4_SPEEDUP, params)
+        def v = new Px4SitlVehicle(binary, model, instance, home, PX4_SPEEDUP, [SDLOG_MODE: -1] + params)
         vehicles << v
         v
     }

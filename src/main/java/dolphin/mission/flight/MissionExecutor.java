@@ -89,9 +89,16 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         return mission;
     }
 
-    /** MISSION_ITEM_REACHED, on the communications thread: "reached at least seq". */
+    /**
+     * MISSION_ITEM_REACHED, on the communications thread: "reached at least seq". From an autopilot that
+     * repeats it (PX4: ten more times, a second apart), one past the vehicle's current item is an earlier
+     * mission's, still repeated as this one starts.
+     */
     public void consume(msg_mission_item_reached message) {
         int seq = autopilot().missionSeq(message.seq);
+        if (autopilot().repeatsItemReached() && seq > vehicle.state().missionSeq()) {
+            return;
+        }
         reached.reached(seq);
         ItemRefusals r = refusals;
         if (r != null) {

@@ -63,6 +63,28 @@ class Px4FlightSpec extends MissionFlights {
         runTo(30).type == CompletionState.Type.DONE
     }
 
+    def "the last MISSION_ITEM_REACHED of an earlier mission, which PX4 repeats for 10 s, is not this one's"() {
+        given:
+        vehicle = px4()
+        launch(hop())
+        stepUntil(FlightState.RUNNING)
+        vehicle.missionCurrent(1)
+
+        when: 'the earlier mission\'s item 3 (its seq 2), while this one flies its first item'
+        vehicle.reached(3)
+        runTo(2)
+
+        then:
+        !messages.any { it.contains('reached') }
+
+        when:
+        vehicle.next(2)
+        runTo(3)
+
+        then:
+        messages.last() == 'mission hop on vehicle 1: item 1 of 3 reached'
+    }
+
     def "nothing is asked of a PX4 vehicle until it finds the mission feasible; one it refuses fails with its words, unarmed"() {
         given:
         vehicle = px4()
