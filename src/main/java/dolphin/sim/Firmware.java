@@ -123,6 +123,21 @@ interface Firmware {
     /** Said on disarming. */
     String disarmedText();
 
+    /** Said on disarming by itself once landed. */
+    default String landedDisarmText() {
+        return disarmedText();
+    }
+
+    /** Armed on the ground and not flying a mission, it disarms itself after this many seconds; 0: never. */
+    default double preflightDisarmSeconds() {
+        return 0;
+    }
+
+    /** The STATUSTEXT (INFO) when the mission starts an item, as AP_Mission says it ("Mission: 3 WP"); empty: none. */
+    default Optional<String> startText(MissionItem item) {
+        return Optional.of("Mission: " + item.seq() + " " + CommandNames.of(item.command()));
+    }
+
     /** Armed on the ground in AUTO, it waits for MAV_CMD_MISSION_START before it starts the mission. */
     boolean waitsForMissionStart();
 

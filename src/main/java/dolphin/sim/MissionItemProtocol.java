@@ -173,8 +173,7 @@ final class MissionItemProtocol {
             return;
         }
         int result = store.check(item);
-        if (result == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED && type == MissionType.MISSION
-                && MissionCheck.jumpsNowhere(item, Math.max(store.count(), expected))) {
+        if (result == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED && store.jumpsNowhere(item, Math.max(store.count(), expected))) {
             result = MAV_MISSION_RESULT.MAV_MISSION_ERROR;
         }
         if (result != MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
@@ -193,9 +192,7 @@ final class MissionItemProtocol {
         uploading = false;
         result = store.complete();
         ack(sys, comp, result);
-        if (type == MissionType.MISSION) {
-            host.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Flight plan received");
-        }
+        store.receivedText().ifPresent(t -> host.text(MAV_SEVERITY.MAV_SEVERITY_INFO, t));
         host.changed(type);
     }
 
