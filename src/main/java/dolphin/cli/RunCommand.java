@@ -68,7 +68,7 @@ final class RunCommand implements Callable<Integer> {
             description = "copter, plane, rover, boat, sub, quadplane (vtol) or heli (helicopter) (default: ${DEFAULT-VALUE}).")
     private VehicleKind simType;
 
-    @Option(names = "--sim-autopilot", paramLabel = "AUTOPILOT", converter = SimAutopilotOption.Converter.class,
+    @Option(names = "--sim-autopilot", paramLabel = "AUTOPILOT", converter = Converters.AutopilotConverter.class,
             defaultValue = "ardupilot", description = SimAutopilotOption.HELP)
     private Autopilot simAutopilot;
 

@@ -29,17 +29,4 @@ final class SimAutopilotOption {
         }
         return autopilot;
     }
-
-    /** "ardupilot" or "px4", whatever the case. */
-    static final class Converter implements CommandLine.ITypeConverter<Autopilot> {
-        @Override
-        public Autopilot convert(String value) {
-            return switch (value.toLowerCase(Locale.ROOT)) {
-                case "ardupilot" -> Autopilot.ARDUPILOT;
-                case "px4" -> Autopilot.PX4;
-                default -> throw new CommandLine.TypeConversionException("unknown autopilot '" + value
-                        + "': expected ardupilot or px4");
-            };
-        }
-    }
 }

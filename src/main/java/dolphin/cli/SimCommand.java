@@ -47,7 +47,7 @@ final class SimCommand implements Callable<Integer> {
             description = "copter, plane, rover, boat, sub, quadplane (vtol) or heli (helicopter) (default: ${DEFAULT-VALUE}).")
     private VehicleKind type;
 
-    @Option(names = "--autopilot", paramLabel = "AUTOPILOT", converter = SimAutopilotOption.Converter.class,
+    @Option(names = "--autopilot", paramLabel = "AUTOPILOT", converter = Converters.AutopilotConverter.class,
             defaultValue = "ardupilot", description = SimAutopilotOption.HELP)
     private Autopilot autopilot;
 
