@@ -290,7 +290,7 @@ final class RunCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), "--speedup needs --sim: real vehicles run in real time");
         }
         needsSim(EquipmentOptions.OptionNames.RUN.all(), "only simulated vehicles carry simulated sensors and cameras");
-        needsSim(List.of("--sim-home", "--sim-dive-silence", "--sim-no-ftp", "--sim-fault"), "it sets up the simulated fleet");
+        needsSim(List.of("--sim-home", "--sim-dive-silence", "--sim-no-ftp", "--sim-fault", "--sim-autopilot"), "it sets up the simulated fleet");
         if (webTiles != null && web == null) {
             throw new ParameterException(spec.commandLine(), "--web-tiles needs --web");
         }

@@ -23,9 +23,8 @@ final class SimAutopilotOption {
     static Autopilot checked(CommandLine commandLine, String option, Autopilot autopilot, String typeOption, VehicleKind kind) {
         if (!kind.simulatedOn(autopilot)) {
             throw new ParameterException(commandLine, option + " " + autopilot.toString().toLowerCase(Locale.ROOT)
-                    + " simulates " + typeOption + " " + VehicleKind.simulatedFor(autopilot).stream()
-                    .map(k -> k.name().toLowerCase(Locale.ROOT)).collect(Collectors.joining(", ")) + ", got " + typeOption + " "
-                    + kind.name().toLowerCase(Locale.ROOT));
+                    + " simulates " + VehicleKind.simulatedFor(autopilot).stream().map(k -> k.name().toLowerCase(Locale.ROOT))
+                    .collect(Collectors.joining(", ")) + " only, got " + typeOption + " " + kind.name().toLowerCase(Locale.ROOT));
         }
         return autopilot;
     }
