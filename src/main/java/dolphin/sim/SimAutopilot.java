@@ -180,6 +180,11 @@ enum SimAutopilot {
         return this == PX4;
     }
 
+    /** How its side of the mission protocol differs. */
+    TransferRules transferRules() {
+        return this == PX4 ? TransferRules.PX4 : TransferRules.ARDUPILOT;
+    }
+
     /** Whether MAVLink FTP serves the mission as @MISSION files. */
     boolean missionFiles() {
         return autopilot.missionFtp();

@@ -129,7 +129,8 @@ public final class SimVehicle {
         this.missionStore = new MissionStore(() -> this.home, options.missionCapacity(),
                 firmware.family().firmware() == VehicleFamily.PLANE);
         TransferHost host = new TransferHost();
-        this.lists = new MissionLists(autopilot.missionList(missionStore), missionStore, options.missionCapacity(), host);
+        this.lists = new MissionLists(autopilot.missionList(missionStore), missionStore, options.missionCapacity(), host,
+                autopilot.transferRules());
         // PX4 serves FTP but has no @MISSION files: every list is unknown to it
         Function<MissionType, ItemStore> files = autopilot.missionFiles() ? lists::store : type -> null;
         this.ftp = new SimFtpServer(new MissionFiles(files, new MissionFileLoader(files, host)), this::send);

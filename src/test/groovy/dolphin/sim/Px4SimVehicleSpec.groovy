@@ -7,7 +7,9 @@ import com.MAVLink.common.msg_mission_item_int
 import com.MAVLink.common.msg_mission_item_reached
 import com.MAVLink.common.msg_mission_request_int
 import com.MAVLink.common.msg_mission_request_list
+import com.MAVLink.common.msg_mission_ack
 import com.MAVLink.common.msg_mission_count
+import com.MAVLink.common.msg_mission_request
 import com.MAVLink.common.msg_mission_set_current
 import com.MAVLink.common.msg_set_mode
 import com.MAVLink.common.msg_statustext
@@ -26,6 +28,7 @@ import com.MAVLink.standard.msg_autopilot_version
 import dolphin.mavlink.Autopilot
 import dolphin.mavlink.Px4Modes
 import dolphin.mission.model.MissionItem
+import dolphin.mission.model.MissionType
 import spock.lang.Specification
 
 import static dolphin.sim.MissionProtocolSpec.rel
@@ -188,6 +191,39 @@ class Px4SimVehicleSpec extends Specification {
         new MissionItem(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, MAV_FRAME.MAV_FRAME_LOCAL_NED, 0, 0, 0, 0, 10, 0, -10, true) | MAV_MISSION_RESULT.MAV_MISSION_UNSUPPORTED_FRAME
         rel(0, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 10, 0, 10)                                                          | MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
         MissionItem.command(0, MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH, 0, 0, 0, 0)                                  | MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
+    }
+
+    def "PX4's side of the protocol: a wrong seq is ignored, the last item again after the end ACCEPTED, an upload left 5 s cancelled"() {
+        given:
+        def d = px4()
+        def items = [rel(0, MAV_CMD.MAV_CMD_NAV_TAKEOFF, 0, 0, 10), rel(1, MAV_CMD.MAV_CMD_NAV_WAYPOINT, 30, 0, 10)]
+
+        when: 'item 1 before item 0 was asked for'
+        d.handle(new msg_mission_count(target_system: 1, target_component: 1, count: 2))
+        int from = d.mark()
+        d.handle(items[1].toMessage(1, 1, MissionType.MISSION))
+
+        then: 'no answer'
+        d.sent.size() == from
+
+        when: 'the upload completes and its last item comes again, as after a lost ACK'
+        d.upload(items)
+        from = d.mark()
+        d.handle(items[1].toMessage(1, 1, MissionType.MISSION))
+
+        then:
+        d.since(from, msg_mission_ack)*.type == [MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED]
+
+        when: 'another upload is left after its first item'
+        d.handle(new msg_mission_count(target_system: 1, target_component: 1, count: 2))
+        d.handle(items[0].toMessage(1, 1, MissionType.MISSION))
+        from = d.mark()
+        d.run(5.1)
+
+        then: "item 1 asked for again once more than 250 ms passed (300 ms on the fleet's 50 ms ticks), then the upload cancelled"
+        d.since(from, msg_mission_request).size() == 16
+        d.since(from, msg_mission_ack)*.type == [MAV_MISSION_RESULT.MAV_MISSION_OPERATION_CANCELLED]
+        d.texts(from) == ['Operation timeout']
     }
 
     def "MISSION_START without a valid mission is DENIED, saying so; with one it arms, enters AUTO.MISSION and flies from seq 0"() {
