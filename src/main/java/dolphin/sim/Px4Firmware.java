@@ -28,6 +28,8 @@ final class Px4Firmware implements Firmware {
     static final double DISARM_LAND = 2;
     /** COM_DISARM_PRFLT on a multicopter: armed on the ground, it disarms itself after this many seconds. */
     static final double DISARM_PREFLIGHT = 10;
+    /** NAV_ACC_RAD, metres. */
+    static final double NAV_ACC_RAD = 10;
     /** RTL_RETURN_ALT, metres above home. */
     static final double RTL_RETURN_ALT = 60;
 
@@ -141,9 +143,10 @@ final class Px4Firmware implements Firmware {
         return base.fliesAs(command);
     }
 
+    /** At least NAV_ACC_RAD: PX4 takes a waypoint within it, with no line past the waypoint to cross instead. */
     @Override
     public double acceptanceRadius(MissionItem waypoint, double turn) {
-        return base.acceptanceRadius(waypoint, turn);
+        return Math.max(NAV_ACC_RAD, base.acceptanceRadius(waypoint, turn));
     }
 
     @Override
