@@ -74,10 +74,13 @@ final class Px4Firmware implements Firmware {
         return onGround ? MAV_VTOL_STATE.MAV_VTOL_STATE_MC : base.vtolState(mode, false);
     }
 
-    /** PX4 streams from boot. */
+    /**
+     * As the family's ArduPilot vehicle: PX4 streams much from boot, which the simulation leaves out, so
+     * that a fleet of hundreds stays light; the runtime asks for what it needs with SET_MESSAGE_INTERVAL.
+     */
     @Override
     public double defaultStreamHz() {
-        return 1;
+        return base.defaultStreamHz();
     }
 
     @Override

@@ -218,7 +218,10 @@ public final class SimVehicle {
         nextDue.clear();
     }
 
-    /** The stored mission, home first (seq 0 is always the vehicle's home, as in ArduPilot). */
+    /**
+     * The stored mission, home first (seq 0 is always the vehicle's home, as in ArduPilot; a PX4
+     * vehicle's protocol leaves it out, its first item seq 0 on the wire).
+     */
     public synchronized List<MissionItem> mission() {
         return missionStore.items();
     }
