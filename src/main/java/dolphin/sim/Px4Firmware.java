@@ -217,9 +217,11 @@ final class Px4Firmware implements Firmware {
         return armed ? MAV_STATE.MAV_STATE_ACTIVE : MAV_STATE.MAV_STATE_STANDBY;
     }
 
+    /** The family's, but a pilot taking over holds in AUTO.LOITER. */
     @Override
     public Failures failures() {
-        return base.failures();
+        Failures f = base.failures();
+        return new Failures(f.motors(), f.powerLoss(), f.ekfFailsafe(), bootMode(), f.internalError());
     }
 
     /** A manoeuvre that ends on the ground, over COM_DISARM_LAND after PX4's land detector said so. */

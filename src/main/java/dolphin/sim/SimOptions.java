@@ -39,7 +39,7 @@ public record SimOptions(double warmupSeconds, double drainPercentPerMinute, boo
 
     public SimOptions {
         faults = List.copyOf(faults);
-        SimAutopilot.of(autopilot);
+        SimAutopilot.of(autopilot); // the fleet simulates ArduPilot and PX4 only: any other is refused here
         if (missionCapacity < 1) {
             throw new IllegalArgumentException("the mission capacity must hold at least home, got " + missionCapacity);
         }

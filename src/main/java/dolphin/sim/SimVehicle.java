@@ -135,7 +135,7 @@ public final class SimVehicle {
         Function<MissionType, ItemStore> files = autopilot.missionFiles() ? lists::store : type -> null;
         this.ftp = new SimFtpServer(new MissionFiles(files, new MissionFileLoader(files, host)), this::send);
         this.flight = new MissionFlight(firmware, autopilot, missionStore, new FlightBody());
-        this.faults = new FaultSchedule(options.faults(), sysid, kind);
+        this.faults = new FaultSchedule(options.faults(), sysid, kind, firmware);
         defaultStreams(now);
     }
 

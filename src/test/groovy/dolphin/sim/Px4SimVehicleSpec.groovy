@@ -414,6 +414,39 @@ class Px4SimVehicleSpec extends Specification {
         d.vehicle.missionCurrent() == 1
     }
 
+    def "a pilot's takeover holds a PX4 vehicle in AUTO.LOITER, or the PX4 mode named, and hands AUTO.MISSION back"() {
+        given:
+        def options = PX4.withFault(SimFault.parse(fault))
+        SimFault.parse(fault).checkFor(VehicleKind.COPTER, Autopilot.PX4)
+        def d = new SimDriver(VehicleKind.COPTER, options)
+        d.upload([rel(0, MAV_CMD.MAV_CMD_NAV_TAKEOFF, 0, 0, 10), rel(1, MAV_CMD.MAV_CMD_NAV_LOITER_UNLIM, 0, 0, 10)])
+        d.command(MAV_CMD.MAV_CMD_MISSION_START, [0, 0])
+        List<String> modes = []
+
+        when: 'during the takeover, 12 to 17 s after arming, and after it'
+        d.run(14)
+        modes << d.vehicle.modeName()
+        d.run(10)
+        modes << d.vehicle.modeName()
+
+        then:
+        modes == [held, 'AUTO.MISSION']
+
+        where:
+        fault                      | held
+        'takeover=5@12'            | 'AUTO.LOITER'
+        'takeover=5,posctl@12'     | 'POSCTL'
+    }
+
+    def "a takeover names a mode PX4 has"() {
+        when:
+        SimFault.parse('takeover=5,loiter@12').checkFor(VehicleKind.COPTER, Autopilot.PX4)
+
+        then:
+        def e = thrown(IllegalArgumentException)
+        e.message.startsWith("PX4 multicopter has no mode 'loiter': expected one of ")
+    }
+
     def "AUTOPILOT_VERSION has PX4's capabilities, FTP among them, but FTP has no @MISSION file"() {
         given:
         def d = px4()
