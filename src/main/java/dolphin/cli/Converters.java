@@ -1,6 +1,7 @@
 package dolphin.cli;
 
 import dolphin.core.Position;
+import dolphin.mavlink.Autopilot;
 import dolphin.mavlink.codec.SigningKey;
 import dolphin.mavlink.link.LinkUrl;
 import dolphin.mission.file.MissionFormat;
@@ -10,6 +11,7 @@ import dolphin.sim.VehicleKind;
 import dolphin.web.WebAddress;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.Locale;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.TypeConversionException;
 
@@ -51,6 +53,19 @@ final class Converters {
             } catch (IllegalArgumentException e) {
                 throw new TypeConversionException(e.getMessage());
             }
+        }
+    }
+
+    /** The autopilot of simulated vehicles: "ardupilot" or "px4", whatever the case. */
+    static final class AutopilotConverter implements ITypeConverter<Autopilot> {
+        @Override
+        public Autopilot convert(String value) {
+            return switch (value.toLowerCase(Locale.ROOT)) {
+                case "ardupilot" -> Autopilot.ARDUPILOT;
+                case "px4" -> Autopilot.PX4;
+                default -> throw new TypeConversionException("unknown autopilot '" + value
+                        + "': expected ardupilot or px4");
+            };
         }
     }
 

@@ -47,7 +47,7 @@ final class FaultOptions {
         for (SimFault fault : faults) {
             String where = option + " '" + fault + "'";
             try {
-                fault.checkFor(config.kind());
+                fault.checkFor(config.kind(), config.options().autopilot());
             } catch (IllegalArgumentException e) {
                 throw new ParameterException(cl, where + ": " + e.getMessage());
             }

@@ -5,6 +5,7 @@ import dolphin.core.Position;
 import dolphin.core.SystemClock;
 import dolphin.dsl.Engine;
 import dolphin.dsl.ScriptResult;
+import dolphin.mavlink.Autopilot;
 import dolphin.mavlink.Forwarder;
 import dolphin.mavlink.LinkTimeouts;
 import dolphin.mavlink.MAVLinkCommunications;
@@ -66,6 +67,10 @@ final class RunCommand implements Callable<Integer> {
     @Option(names = "--sim-type", paramLabel = "TYPE", converter = Converters.VehicleKindConverter.class, defaultValue = "copter",
             description = "copter, plane, rover, boat, sub, quadplane (vtol) or heli (helicopter) (default: ${DEFAULT-VALUE}).")
     private VehicleKind simType;
+
+    @Option(names = "--sim-autopilot", paramLabel = "AUTOPILOT", converter = Converters.AutopilotConverter.class,
+            defaultValue = "ardupilot", description = SimAutopilotOption.HELP)
+    private Autopilot simAutopilot;
 
     @Option(names = "--sim-home", paramLabel = "LAT,LON[,ALT]", converter = Converters.Home.class,
             description = "With --sim: home of the first simulated vehicle, the others 10 m apart to the east; ALT in metres "
@@ -285,7 +290,7 @@ final class RunCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), "--speedup needs --sim: real vehicles run in real time");
         }
         needsSim(EquipmentOptions.OptionNames.RUN.all(), "only simulated vehicles carry simulated sensors and cameras");
-        needsSim(List.of("--sim-home", "--sim-dive-silence", "--sim-no-ftp", "--sim-fault"), "it sets up the simulated fleet");
+        needsSim(List.of("--sim-home", "--sim-dive-silence", "--sim-no-ftp", "--sim-fault", "--sim-autopilot"), "it sets up the simulated fleet");
         if (webTiles != null && web == null) {
             throw new ParameterException(spec.commandLine(), "--web-tiles needs --web");
         }
@@ -381,6 +386,8 @@ final class RunCommand implements Callable<Integer> {
         if (simNoFtp) {
             options = options.withoutFtp();
         }
+        options = options.withAutopilot(SimAutopilotOption.checked(spec.commandLine(), "--sim-autopilot", simAutopilot,
+                "--sim-type", simType));
         SimFleet.Config config;
         try {
             config = SimFleet.Config.of(sim, simType, ports).withSigningKey(key).withFaults(faultModel).withOptions(options);

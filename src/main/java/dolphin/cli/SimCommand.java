@@ -2,6 +2,7 @@ package dolphin.cli;
 
 import dolphin.core.Position;
 import dolphin.core.SystemClock;
+import dolphin.mavlink.Autopilot;
 import dolphin.mavlink.codec.SigningKey;
 import dolphin.mavlink.link.LinkUrl;
 import dolphin.sim.FaultModel;
@@ -45,6 +46,10 @@ final class SimCommand implements Callable<Integer> {
     @Option(names = "--type", paramLabel = "TYPE", converter = Converters.VehicleKindConverter.class, defaultValue = "copter",
             description = "copter, plane, rover, boat, sub, quadplane (vtol) or heli (helicopter) (default: ${DEFAULT-VALUE}).")
     private VehicleKind type;
+
+    @Option(names = "--autopilot", paramLabel = "AUTOPILOT", converter = Converters.AutopilotConverter.class,
+            defaultValue = "ardupilot", description = SimAutopilotOption.HELP)
+    private Autopilot autopilot;
 
     @Option(names = "--home", paramLabel = "LAT,LON[,ALT]", converter = Converters.Home.class,
             description = "Home of the first vehicle, the others 10 m apart to the east; ALT in metres above sea level, 0 if "
@@ -107,7 +112,8 @@ final class SimCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         try (SimFleet fleet = new SimFleet(config, clock)) {
             fleet.start();
-            out.printf("simulating %d %s(s), system ids %d..%d%s, sending to %s%s%n", count, type.name().toLowerCase(java.util.Locale.ROOT),
+            out.printf("simulating %d %s%s(s), system ids %d..%d%s, sending to %s%s%n", count, autopilot == Autopilot.PX4 ? "PX4 " : "",
+                    type.name().toLowerCase(java.util.Locale.ROOT),
                     firstSysid, config.highestSysid(),
                     gcs.size() > 1 ? " (" + config.perLink() + " per link)" : "", gcs, speedup != 1 ? " at " + speedup + "x" : "");
             if (!config.options().faults().isEmpty()) {
@@ -143,6 +149,7 @@ final class SimCommand implements Callable<Integer> {
         if (noFtp) {
             options = options.withoutFtp();
         }
+        options = options.withAutopilot(SimAutopilotOption.checked(spec.commandLine(), "--autopilot", autopilot, "--type", type));
         SimFleet.Config config;
         try {
             config = new SimFleet.Config(count, type, home != null ? home : SimFleet.Config.DEFAULT_HOME, SimFleet.Config.DEFAULT_SPACING,

@@ -1,6 +1,5 @@
 package dolphin.sim;
 
-import com.MAVLink.enums.COPTER_MODE;
 import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_LANDED_STATE;
 import com.MAVLink.enums.MAV_STATE;
@@ -9,7 +8,6 @@ import dolphin.core.Position;
 import dolphin.mavlink.VehicleFamily;
 import dolphin.mission.model.MissionItem;
 import java.util.Optional;
-import java.util.OptionalInt;
 import java.util.Set;
 
 /**
@@ -40,26 +38,6 @@ class CopterFirmware implements Firmware {
     @Override
     public VehicleFamily family() {
         return VehicleFamily.COPTER;
-    }
-
-    @Override
-    public int bootMode() {
-        return COPTER_MODE.COPTER_MODE_STABILIZE;
-    }
-
-    @Override
-    public int autoMode() {
-        return COPTER_MODE.COPTER_MODE_AUTO;
-    }
-
-    @Override
-    public OptionalInt rtlMode() {
-        return OptionalInt.of(COPTER_MODE.COPTER_MODE_RTL);
-    }
-
-    @Override
-    public OptionalInt landMode() {
-        return OptionalInt.of(COPTER_MODE.COPTER_MODE_LAND);
     }
 
     @Override

@@ -17,11 +17,11 @@ final class FaultSchedule {
     private final List<Waiting> waiting = new ArrayList<>();
     private final List<Fault> running = new ArrayList<>();
 
-    /** The faults of {@code faults} that happen to vehicle {@code sysid}, a vehicle of kind {@code kind}. */
-    FaultSchedule(List<SimFault> faults, int sysid, VehicleKind kind) {
+    /** The faults of {@code faults} that happen to vehicle {@code sysid}, a vehicle of kind {@code kind} running {@code firmware}. */
+    FaultSchedule(List<SimFault> faults, int sysid, VehicleKind kind, Firmware firmware) {
         for (SimFault f : faults) {
             if (f.appliesTo(sysid)) {
-                waiting.add(new Waiting((long) (f.afterArmingSeconds() * 1e9), f.start(kind)));
+                waiting.add(new Waiting((long) (f.afterArmingSeconds() * 1e9), f.start(kind, firmware)));
             }
         }
     }

@@ -27,26 +27,38 @@ interface Firmware {
 
     VehicleFamily family();
 
-    /** Its modes, as ArduPilot numbers them for its family. */
+    /** Its modes: their table, the one it boots in, its mission's, its RTL and its LAND. */
+    default SimModes modeSet() {
+        return SimModes.of(Autopilot.ARDUPILOT, family());
+    }
+
     default ModeTable modes() {
-        return Autopilot.ARDUPILOT.modes(family());
+        return modeSet().table();
     }
 
     /** What it is called, e.g. "ArduCopter". */
     default String label() {
-        return Autopilot.ARDUPILOT.label(family());
+        return modeSet().autopilot().label(family());
     }
 
     /** The custom mode it boots in. */
-    int bootMode();
+    default int bootMode() {
+        return modeSet().boot();
+    }
 
-    int autoMode();
+    default int autoMode() {
+        return modeSet().auto();
+    }
 
     /** Its RTL mode, which a fence breach and MAV_CMD_NAV_RETURN_TO_LAUNCH switch to; empty for ArduSub, which has none. */
-    OptionalInt rtlMode();
+    default OptionalInt rtlMode() {
+        return modeSet().rtl();
+    }
 
     /** The mode MAV_CMD_NAV_LAND switches to; empty when the firmware does not take that command. */
-    OptionalInt landMode();
+    default OptionalInt landMode() {
+        return modeSet().land();
+    }
 
     /**
      * The STATUSTEXT (WARNING) with which it refuses to enter {@code mode}, given whether it has a
@@ -110,6 +122,21 @@ interface Firmware {
 
     /** Said on disarming. */
     String disarmedText();
+
+    /** Said on disarming by itself once landed. */
+    default String landedDisarmText() {
+        return disarmedText();
+    }
+
+    /** Armed on the ground and not flying a mission, it disarms itself after this many seconds; 0: never. */
+    default double preflightDisarmSeconds() {
+        return 0;
+    }
+
+    /** The STATUSTEXT (INFO) when the mission starts an item, as AP_Mission says it ("Mission: 3 WP"); empty: none. */
+    default Optional<String> startText(MissionItem item) {
+        return Optional.of("Mission: " + item.seq() + " " + CommandNames.of(item.command()));
+    }
 
     /** Armed on the ground in AUTO, it waits for MAV_CMD_MISSION_START before it starts the mission. */
     boolean waitsForMissionStart();

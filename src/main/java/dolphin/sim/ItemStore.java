@@ -2,6 +2,7 @@ package dolphin.sim;
 
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
+import java.util.Optional;
 
 /**
  * One list a simulated vehicle stores and the mission protocol transfers: its mission, fence or
@@ -24,6 +25,16 @@ interface ItemStore {
 
     /** The MAV_MISSION_RESULT for an item as it arrives. */
     int check(MissionItem item);
+
+    /** Whether an uploaded DO_JUMP leads outside a list of {@code count} items, which the upload refuses (MAV_MISSION_ERROR). */
+    default boolean jumpsNowhere(MissionItem item, int count) {
+        return false;
+    }
+
+    /** Said (INFO) once an upload completed; empty: nothing. */
+    default Optional<String> receivedText() {
+        return Optional.empty();
+    }
 
     /** The MAV_MISSION_RESULT once the last item arrived: the list as a whole. */
     int complete();

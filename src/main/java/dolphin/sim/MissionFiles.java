@@ -67,7 +67,7 @@ final class MissionFiles {
     /** A file descriptor, or -errno. */
     int open(String path, boolean readOnly, long now) {
         MissionType type = typeOf(path);
-        if (type == null) {
+        if (type == null || stores.apply(type) == null) {
             return -SimFtpPacket.ENOENT;
         }
         int fd = 0;

@@ -78,9 +78,12 @@ final class MissionFlight {
     private enum Phase { APPROACH, HOLD }
 
     private final Firmware firmware;
+    private final SimAutopilot autopilot;
     private final MissionStore store;
     private final Body body;
     private final MissionCursor cursor;
+    /** Whether the stored mission passed the autopilot's check of it (PX4's feasibility check). */
+    private boolean feasible = true;
     private boolean autoArmed;
     private boolean restartDue;
     private double groundSeconds;
@@ -113,8 +116,9 @@ final class MissionFlight {
     /** MISSION_CURRENT asked for (MSG_CURRENT_WAYPOINT), sent at the end of the tick even if unchanged. */
     private boolean currentDue;
 
-    MissionFlight(Firmware firmware, MissionStore store, Body body) {
+    MissionFlight(Firmware firmware, SimAutopilot autopilot, MissionStore store, Body body) {
         this.firmware = firmware;
+        this.autopilot = autopilot;
         this.store = store;
         this.body = body;
         this.cursor = new MissionCursor(store);
@@ -131,10 +135,11 @@ final class MissionFlight {
 
     /**
      * MISSION_STATE of the stored mission as GCS_MAVLINK::mission_state gives AP_Mission's state:
-     * NO_MISSION, or NOT_STARTED (stopped), ACTIVE (running) or COMPLETE; never PAUSED.
+     * NO_MISSION (also a mission its autopilot found infeasible), or NOT_STARTED (stopped), ACTIVE
+     * (running) or COMPLETE; never PAUSED.
      */
     int state() {
-        if (store.count() <= 1) {
+        if (store.count() <= 1 || !feasible) {
             return MISSION_STATE.MISSION_STATE_NO_MISSION;
         }
         return switch (cursor.run()) {
@@ -302,10 +307,12 @@ final class MissionFlight {
 
     /**
      * The stored mission changed: an upload leaves the mission where it was, running or not (a copter
-     * flying it goes on with the nav item under way); a cleared mission has no place.
+     * flying it goes on with the nav item under way); a cleared mission has no place. An autopilot that
+     * restarts a new mission (PX4) does so unless it flies one.
      */
     void missionChanged() {
-        if (store.count() <= 1) {
+        feasible = autopilot.feasible(store.items(), firmware);
+        if (store.count() <= 1 || autopilot.restartsOnUpload() && !flyingMission()) {
             cursor.cleared();
             dropActive();
         }
@@ -407,12 +414,8 @@ final class MissionFlight {
     }
 
     private MAVLinkMessage missionCurrent(int seq) {
-        msg_mission_current c = new msg_mission_current();
-        c.seq = seq;
-        c.total = Math.max(0, store.count() - 1);
-        c.mission_state = (short) state();
-        c.mission_mode = (short) (body.mode() == firmware.autoMode() ? 1 : 0);
-        return c;
+        boolean paused = cursor.run() == MissionCursor.MissionRun.STOPPED && cursor.nav() > 0;
+        return autopilot.missionCurrent(seq, store.count(), state(), paused, body.mode() == firmware.autoMode());
     }
 
     private void announceCurrent(boolean always) {
@@ -642,7 +645,7 @@ final class MissionFlight {
 
     /** "Mission: 3 WP"; a nav item started armed may make the firmware report its internal error (ArduRover's). */
     private void announceStart(MissionItem item) {
-        body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Mission: " + item.seq() + " " + CommandNames.of(item.command()));
+        firmware.startText(item).ifPresent(s -> body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, s));
         if (body.armed() && nav(item.command())) {
             firmware.failures().internalError().ifPresent(body::internalError);
         }

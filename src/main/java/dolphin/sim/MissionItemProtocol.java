@@ -26,12 +26,12 @@ import dolphin.mission.model.MissionType;
  * MISSION_REQUEST_INT answered with MISSION_ITEM_INT, MISSION_REQUEST with MISSION_ITEM) and
  * MISSION_CLEAR_ALL. One transfer a list (mission, fence, rally points: {@link ItemStore}), as
  * ArduPilot has one MissionItemProtocol a mission_type; a message of another mission_type is
- * UNSUPPORTED. Runs on the fleet's thread, under the vehicle's lock.
+ * UNSUPPORTED. Where PX4 differs ({@link TransferRules}: its times, an item again after the end
+ * ACCEPTED, a wrong seq ignored), it follows its autopilot's rules. Runs on the fleet's thread, under
+ * the vehicle's lock.
  */
 final class MissionItemProtocol {
 
-    static final long RESEND_NANOS = 1_000_000_000L;
-    static final long UPLOAD_TIMEOUT_NANOS = 8_000_000_000L;
 
     /** What the transfer needs from its vehicle. */
     interface Host {
@@ -49,7 +49,10 @@ final class MissionItemProtocol {
     private final ItemStore store;
     private final MissionType type;
     private final Host host;
+    private final TransferRules rules;
     private boolean uploading;
+    /** The item count of the last upload completed; -1 once another transfer began. */
+    private int completed = -1;
     private int uploaderSys;
     private int uploaderComp;
     private int expected;
@@ -58,10 +61,11 @@ final class MissionItemProtocol {
     private long lastRequest;
     private boolean floatWarned;
 
-    MissionItemProtocol(ItemStore store, Host host) {
+    MissionItemProtocol(ItemStore store, Host host, TransferRules rules) {
         this.store = store;
         this.type = store.type();
         this.host = host;
+        this.rules = rules;
     }
 
     boolean uploading() {
@@ -84,6 +88,7 @@ final class MissionItemProtocol {
             if (refuseDownload(r.sysid, r.compid, r.mission_type)) {
                 return true;
             }
+            completed = -1;
             msg_mission_count c = new msg_mission_count();
             c.count = store.count();
             c.mission_type = (short) type.wire();
@@ -109,18 +114,18 @@ final class MissionItemProtocol {
     /**
      * Re-requests the pending item once more than a second passed since the last request; cancels
      * the upload once more than 8 s passed without an item (MissionItemProtocol::update compares
-     * with {@code >}; the fleet's 50 ms ticks make these 1.05 s and 8.05 s).
+     * with {@code >}; the fleet's 50 ms ticks make these 1.05 s and 8.05 s); PX4's times are its own.
      */
     void tick(long now) {
         if (!uploading) {
             return;
         }
-        if (now - lastItem > UPLOAD_TIMEOUT_NANOS) {
+        if (now - lastItem > rules.timeoutNanos()) {
             uploading = false;
             ack(uploaderSys, uploaderComp, MAV_MISSION_RESULT.MAV_MISSION_OPERATION_CANCELLED);
-            host.text(MAV_SEVERITY.MAV_SEVERITY_WARNING, "Mission upload timeout");
+            host.text(MAV_SEVERITY.MAV_SEVERITY_WARNING, rules.timeoutText());
             host.changed(type);
-        } else if (now - lastRequest > RESEND_NANOS) {
+        } else if (now - lastRequest > rules.resendNanos()) {
             request(now);
         }
     }
@@ -146,6 +151,7 @@ final class MissionItemProtocol {
             return;
         }
         uploading = true;
+        completed = -1;
         uploaderSys = c.sysid;
         uploaderComp = c.compid;
         expected = c.count;
@@ -160,12 +166,15 @@ final class MissionItemProtocol {
             return;
         }
         if (!uploading) {
-            ack(sys, comp, MAV_MISSION_RESULT.MAV_MISSION_ERROR);
+            boolean lastAgain = rules.lastItemAgainAccepted() && item.seq() == completed - 1;
+            ack(sys, comp, lastAgain ? MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED : MAV_MISSION_RESULT.MAV_MISSION_ERROR);
             return;
         }
         // ArduPilot checks the seq before the sender
         if (item.seq() != next) {
-            ack(sys, comp, MAV_MISSION_RESULT.MAV_MISSION_INVALID_SEQUENCE);
+            if (!rules.wrongSeqIgnored()) {
+                ack(sys, comp, MAV_MISSION_RESULT.MAV_MISSION_INVALID_SEQUENCE);
+            }
             return;
         }
         if (!fromUploader(sys, comp)) {
@@ -173,8 +182,7 @@ final class MissionItemProtocol {
             return;
         }
         int result = store.check(item);
-        if (result == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED && type == MissionType.MISSION
-                && MissionCheck.jumpsNowhere(item, Math.max(store.count(), expected))) {
+        if (result == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED && store.jumpsNowhere(item, Math.max(store.count(), expected))) {
             result = MAV_MISSION_RESULT.MAV_MISSION_ERROR;
         }
         if (result != MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
@@ -192,10 +200,9 @@ final class MissionItemProtocol {
         }
         uploading = false;
         result = store.complete();
+        completed = result == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED ? expected : -1;
         ack(sys, comp, result);
-        if (type == MissionType.MISSION) {
-            host.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Flight plan received");
-        }
+        store.receivedText().ifPresent(t -> host.text(MAV_SEVERITY.MAV_SEVERITY_INFO, t));
         host.changed(type);
     }
 

@@ -27,13 +27,14 @@ final class MissionLists {
     private final AirspaceStore fenceStore;
     private final AirspaceStore rallyStore;
 
-    MissionLists(MissionStore missionStore, int capacity, MissionItemProtocol.Host host) {
+    /** {@code missionList}: the mission as the protocol transfers it, {@code missionStore} as the vehicle stores it. */
+    MissionLists(ItemStore missionList, MissionStore missionStore, int capacity, MissionItemProtocol.Host host, TransferRules rules) {
         this.missionStore = missionStore;
         this.fenceStore = new AirspaceStore(MissionType.FENCE, capacity);
         this.rallyStore = new AirspaceStore(MissionType.RALLY, capacity);
-        this.mission = new MissionItemProtocol(missionStore, host);
-        this.fence = new MissionItemProtocol(fenceStore, host);
-        this.rally = new MissionItemProtocol(rallyStore, host);
+        this.mission = new MissionItemProtocol(missionList, host, rules);
+        this.fence = new MissionItemProtocol(fenceStore, host, rules);
+        this.rally = new MissionItemProtocol(rallyStore, host, rules);
     }
 
     /** Handles a mission-protocol message addressed to {@code sysid}; false if it is not one. */

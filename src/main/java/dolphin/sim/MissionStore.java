@@ -9,6 +9,7 @@ import dolphin.mission.model.MissionType;
 import dolphin.mission.transfer.StoredItems;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.function.Supplier;
 
 /**
@@ -50,6 +51,16 @@ final class MissionStore implements ItemStore {
     @Override
     public int check(MissionItem item) {
         return MissionCheck.result(item, plane);
+    }
+
+    @Override
+    public boolean jumpsNowhere(MissionItem item, int count) {
+        return MissionCheck.jumpsNowhere(item, count);
+    }
+
+    @Override
+    public Optional<String> receivedText() {
+        return Optional.of("Flight plan received");
     }
 
     /** Each item was checked as it came: the mission is stored as it arrived. */

@@ -12,7 +12,6 @@ import dolphin.mission.model.MissionItem;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
-import java.util.OptionalInt;
 import java.util.Set;
 
 /**
@@ -42,26 +41,6 @@ class PlaneFirmware implements Firmware {
     @Override
     public VehicleFamily family() {
         return VehicleFamily.PLANE;
-    }
-
-    @Override
-    public int bootMode() {
-        return PLANE_MODE.PLANE_MODE_MANUAL;
-    }
-
-    @Override
-    public int autoMode() {
-        return PLANE_MODE.PLANE_MODE_AUTO;
-    }
-
-    @Override
-    public OptionalInt rtlMode() {
-        return OptionalInt.of(PLANE_MODE.PLANE_MODE_RTL);
-    }
-
-    @Override
-    public OptionalInt landMode() {
-        return OptionalInt.empty();
     }
 
     @Override

@@ -79,15 +79,6 @@ final class QuadPlaneFirmware extends PlaneFirmware {
         return 14;
     }
 
-    /**
-     * quadplane.parm's flight mode switch (FLTMODE_CH 5, FLTMODE4 FLY_BY_WIRE_A) at SITL's RC 5 of
-     * 1500 (position 4): SITL's QuadPlane was in FLY_BY_WIRE_A from the recordings' first heartbeat.
-     */
-    @Override
-    public int bootMode() {
-        return PLANE_MODE.PLANE_MODE_FLY_BY_WIRE_A;
-    }
-
     @Override
     public List<FirmwareParam> params() {
         return PARAMS;

@@ -15,21 +15,30 @@ final class ReturnAndLand implements Manoeuvre {
 
     private final Craft craft;
     private final Position home;
+    private final double returnAltitude;
+    private final double loiterTime;
     private boolean climbed;
     private boolean over;
     private double loitered;
     private Landing landing;
 
     ReturnAndLand(Craft craft, Position home) {
+        this(craft, home, RTL_ALT, LOITER_TIME);
+    }
+
+    /** Up to {@code returnAltitude} above home, and {@code loiterTime} seconds over it before the landing. */
+    ReturnAndLand(Craft craft, Position home, double returnAltitude, double loiterTime) {
         this.craft = craft;
         this.home = home;
+        this.returnAltitude = returnAltitude;
+        this.loiterTime = loiterTime;
         craft.resetSpeed();
     }
 
     @Override
     public boolean step(double dt) {
         if (!climbed) {
-            double alt = home.hae() + RTL_ALT;
+            double alt = home.hae() + returnAltitude;
             craft.climbTo(Math.max(alt, craft.position().hae()), dt);
             climbed = craft.position().hae() >= alt - 0.05 && craft.stopped();
             return false;
@@ -40,7 +49,7 @@ final class ReturnAndLand implements Manoeuvre {
             over = craft.distanceTo(above) <= craft.performance().waypointRadius() && craft.stopped();
             return false;
         }
-        if (loitered < LOITER_TIME) {
+        if (loitered < loiterTime) {
             loitered += dt;
             return false;
         }

@@ -3,12 +3,10 @@ package dolphin.sim;
 import com.MAVLink.enums.MAV_LANDED_STATE;
 import com.MAVLink.enums.MAV_SEVERITY;
 import com.MAVLink.enums.MAV_STATE;
-import com.MAVLink.enums.ROVER_MODE;
 import dolphin.core.Position;
 import dolphin.mavlink.VehicleFamily;
 import dolphin.mission.model.MissionItem;
 import java.util.Optional;
-import java.util.OptionalInt;
 
 /**
  * ArduRover as SITL runs it with rover.parm: it drives on the ground at WP_SPEED 5 m/s, gathering
@@ -40,26 +38,6 @@ final class RoverFirmware implements Firmware {
     @Override
     public VehicleFamily family() {
         return VehicleFamily.ROVER;
-    }
-
-    @Override
-    public int bootMode() {
-        return ROVER_MODE.ROVER_MODE_MANUAL;
-    }
-
-    @Override
-    public int autoMode() {
-        return ROVER_MODE.ROVER_MODE_AUTO;
-    }
-
-    @Override
-    public OptionalInt rtlMode() {
-        return OptionalInt.of(ROVER_MODE.ROVER_MODE_RTL);
-    }
-
-    @Override
-    public OptionalInt landMode() {
-        return OptionalInt.empty();
     }
 
     @Override

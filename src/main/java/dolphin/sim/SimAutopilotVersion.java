@@ -18,6 +18,7 @@ final class SimAutopilotVersion {
             | MAV_PROTOCOL_CAPABILITY.MAV_PROTOCOL_CAPABILITY_MAVLINK2
             | MAV_PROTOCOL_CAPABILITY.MAV_PROTOCOL_CAPABILITY_MISSION_FENCE
             | MAV_PROTOCOL_CAPABILITY.MAV_PROTOCOL_CAPABILITY_MISSION_RALLY;
+    static final long PX4_CAPABILITIES = 0xe8ffL;
     /** 4.8.0, FIRMWARE_VERSION_TYPE_DEV (0): major, minor, patch, type, a byte each. */
     static final long FLIGHT_SW_VERSION = 4L << 24 | 8L << 16;
 
@@ -42,6 +43,18 @@ final class SimAutopilotVersion {
                     | MAV_PROTOCOL_CAPABILITY.MAV_PROTOCOL_CAPABILITY_FLIGHT_TERMINATION;
         };
         return mission | own | COMMON | (ftp ? MAV_PROTOCOL_CAPABILITY.MAV_PROTOCOL_CAPABILITY_FTP : 0);
+    }
+
+    /**
+     * PX4's (mavlink_main.cpp; its SITL sent 0xe8ff): mission float and int, float parameters, COMMAND_INT,
+     * parameters encoded bytewise, FTP unless the vehicle has none, attitude and local position targets,
+     * flight termination, MAVLink 2, fence and rally; version 1.16.0, the release the measured build followed.
+     */
+    static msg_autopilot_version px4(boolean ftp) {
+        msg_autopilot_version v = new msg_autopilot_version();
+        v.capabilities = PX4_CAPABILITIES & ~(ftp ? 0 : MAV_PROTOCOL_CAPABILITY.MAV_PROTOCOL_CAPABILITY_FTP);
+        v.flight_sw_version = 1L << 24 | 16L << 16;
+        return v;
     }
 
     static msg_autopilot_version message(VehicleKind kind, boolean ftp) {

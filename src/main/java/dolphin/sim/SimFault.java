@@ -1,5 +1,6 @@
 package dolphin.sim;
 
+import dolphin.mavlink.Autopilot;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
@@ -65,16 +66,21 @@ public record SimFault(FaultKind kind, List<String> args, double afterArmingSeco
 
     /** Whether vehicles of {@code vehicles} can have it: IllegalArgumentException saying why not. */
     public void checkFor(VehicleKind vehicles) {
-        start(vehicles);
+        checkFor(vehicles, Autopilot.ARDUPILOT);
     }
 
-    /** The fault on a vehicle of kind {@code vehicles}, waiting for its time. */
-    Fault start(VehicleKind vehicles) {
-        if (!kind.simulatedOn(vehicles.firmware())) {
+    /** The same for vehicles that run {@code autopilot}, whose modes a takeover names. */
+    public void checkFor(VehicleKind vehicles, Autopilot autopilot) {
+        start(vehicles, SimAutopilot.of(autopilot).firmware(vehicles));
+    }
+
+    /** The fault on a vehicle of kind {@code vehicles} running {@code firmware}, waiting for its time. */
+    Fault start(VehicleKind vehicles, Firmware firmware) {
+        if (!kind.simulatedOn(firmware)) {
             throw new IllegalArgumentException(kind.label() + " is not simulated on a " + vehicles.name().toLowerCase(Locale.ROOT)
                     + ", only on " + kind.kindsSimulated());
         }
-        return kind.recipe(args).make(vehicles.firmware());
+        return kind.recipe(args).make(firmware);
     }
 
     /** As written: {@code takeover=15,loiter@90:2}. */

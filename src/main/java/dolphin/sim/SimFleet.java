@@ -189,7 +189,7 @@ public final class SimFleet implements AutoCloseable {
         thread = new Thread(this::loop, "sim-fleet");
         thread.setDaemon(true);
         thread.start();
-        LOG.info("simulated fleet: {} {}(s) sending to {}", config.count(), config.kind(), config.gcs());
+        LOG.info("simulated fleet: {} {} {}(s) sending to {}", config.count(), config.options().autopilot(), config.kind(), config.gcs());
     }
 
     public List<SimVehicle> vehicles() {

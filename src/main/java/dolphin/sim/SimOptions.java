@@ -1,5 +1,6 @@
 package dolphin.sim;
 
+import dolphin.mavlink.Autopilot;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -20,23 +21,25 @@ import java.util.List;
  *        as firmware built without FTP
  * @param faults the faults injected into the vehicles, each at its time after a vehicle's first arming
  *        (docs/mavlink.md, "Faults")
+ * @param autopilot the autopilot the vehicles run: ArduPilot (the default) or PX4
  */
 public record SimOptions(double warmupSeconds, double drainPercentPerMinute, boolean messageIntervalSupported,
                          boolean refuseModeChanges, int missionCapacity, double diveSilenceMetres, boolean ftp,
-                         List<SimFault> faults) {
+                         List<SimFault> faults, Autopilot autopilot) {
 
     public static final int DEFAULT_MISSION_CAPACITY = 700;
     public static final SimOptions DEFAULT = new SimOptions(0, 14, true, false, DEFAULT_MISSION_CAPACITY,
-            Double.POSITIVE_INFINITY, true, List.of());
+            Double.POSITIVE_INFINITY, true, List.of(), Autopilot.ARDUPILOT);
 
     public SimOptions(double warmupSeconds, double drainPercentPerMinute, boolean messageIntervalSupported,
                       boolean refuseModeChanges) {
         this(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, DEFAULT_MISSION_CAPACITY,
-                Double.POSITIVE_INFINITY, true, List.of());
+                Double.POSITIVE_INFINITY, true, List.of(), Autopilot.ARDUPILOT);
     }
 
     public SimOptions {
         faults = List.copyOf(faults);
+        SimAutopilot.of(autopilot); // the fleet simulates ArduPilot and PX4 only: any other is refused here
         if (missionCapacity < 1) {
             throw new IllegalArgumentException("the mission capacity must hold at least home, got " + missionCapacity);
         }
@@ -47,34 +50,40 @@ public record SimOptions(double warmupSeconds, double drainPercentPerMinute, boo
 
     public SimOptions withWarmup(double seconds) {
         return new SimOptions(seconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity,
-                diveSilenceMetres, ftp, faults);
+                diveSilenceMetres, ftp, faults, autopilot);
     }
 
     public SimOptions withDrain(double percentPerMinute) {
         return new SimOptions(warmupSeconds, percentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity,
-                diveSilenceMetres, ftp, faults);
+                diveSilenceMetres, ftp, faults, autopilot);
     }
 
     public SimOptions withoutMessageInterval() {
         return new SimOptions(warmupSeconds, drainPercentPerMinute, false, refuseModeChanges, missionCapacity, diveSilenceMetres,
-                ftp, faults);
+                ftp, faults, autopilot);
     }
 
     public SimOptions withMissionCapacity(int items) {
         return new SimOptions(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, items,
-                diveSilenceMetres, ftp, faults);
+                diveSilenceMetres, ftp, faults, autopilot);
     }
 
     /** Subs deeper than {@code metres} below the surface are cut off. */
     public SimOptions withDiveSilence(double metres) {
         return new SimOptions(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity,
-                metres, ftp, faults);
+                metres, ftp, faults, autopilot);
     }
 
     /** Vehicles without MAVLink FTP: FILE_TRANSFER_PROTOCOL unanswered, no FTP bit in AUTOPILOT_VERSION. */
     public SimOptions withoutFtp() {
         return new SimOptions(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity,
-                diveSilenceMetres, false, faults);
+                diveSilenceMetres, false, faults, autopilot);
+    }
+
+    /** Vehicles that run {@code a} (ArduPilot or PX4). */
+    public SimOptions withAutopilot(Autopilot a) {
+        return new SimOptions(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity,
+                diveSilenceMetres, ftp, faults, a);
     }
 
     /** With {@code fault} injected too. */
@@ -82,6 +91,6 @@ public record SimOptions(double warmupSeconds, double drainPercentPerMinute, boo
         List<SimFault> more = new ArrayList<>(faults);
         more.add(fault);
         return new SimOptions(warmupSeconds, drainPercentPerMinute, messageIntervalSupported, refuseModeChanges, missionCapacity,
-                diveSilenceMetres, ftp, more);
+                diveSilenceMetres, ftp, more, autopilot);
     }
 }

@@ -18,7 +18,6 @@ import com.MAVLink.common.msg_param_value;
 import com.MAVLink.common.msg_request_data_stream;
 import com.MAVLink.common.msg_set_mode;
 import com.MAVLink.common.msg_sys_status;
-import com.MAVLink.enums.MAV_AUTOPILOT;
 import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_DATA_STREAM;
 import com.MAVLink.enums.MAV_MODE_FLAG;
@@ -26,11 +25,13 @@ import com.MAVLink.enums.MAV_RESULT;
 import com.MAVLink.enums.MAV_SEVERITY;
 import com.MAVLink.enums.MAV_STATE;
 import com.MAVLink.enums.MAV_SYS_STATUS_SENSOR;
+import com.MAVLink.enums.MAV_TYPE;
 import com.MAVLink.enums.MISSION_STATE;
 import com.MAVLink.minimal.msg_heartbeat;
 import com.MAVLink.standard.msg_autopilot_version;
 import com.MAVLink.standard.msg_global_position_int;
 import dolphin.core.Position;
+import dolphin.mavlink.Autopilot;
 import dolphin.mavlink.VehicleFamily;
 import dolphin.mission.model.Fence;
 import dolphin.mission.model.MissionItem;
@@ -43,11 +44,12 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import java.util.function.Consumer;
+import java.util.function.Function;
 
 /**
- * One simulated ArduPilot vehicle: the identity, link and command behaviour of its firmware
- * ({@link VehicleKind}, whose {@link Firmware} says what differs between ArduCopter, ArduPlane,
- * ArduRover and ArduSub). Driven by its {@link SimFleet}'s one thread; the public methods are synchronized, so
+ * One simulated vehicle: the identity, link and command behaviour of its firmware ({@link VehicleKind},
+ * whose {@link Firmware} says what differs between ArduCopter, ArduPlane, ArduRover and ArduSub) under
+ * its autopilot ({@link SimAutopilot}: ArduPilot, or PX4 flying the same families' models). Driven by its {@link SimFleet}'s one thread; the public methods are synchronized, so
  * tests may read and change it from other threads.
  */
 public final class SimVehicle {
@@ -62,6 +64,7 @@ public final class SimVehicle {
 
     private final int sysid;
     private final VehicleKind kind;
+    private final SimAutopilot autopilot;
     private final Firmware firmware;
     private final SimOptions options;
     private PositionEstimate estimate;
@@ -70,7 +73,11 @@ public final class SimVehicle {
     private final boolean camera;
     private final Map<Integer, Long> intervals = new HashMap<>();
     private final Map<Integer, Long> nextDue = new HashMap<>();
-    private final Outbox outbox = new Outbox(this::send);
+    private final Outbox outbox;
+    /** A ground station's heartbeat was heard: PX4 sends STATUSTEXT only from then on. */
+    private boolean gcsHeard;
+    /** Seconds armed on the ground without flying a mission, towards the firmware's preflight disarm. */
+    private double armedIdle;
     private Consumer<MAVLinkMessage> out = m -> { };
     private long nextHeartbeat;
     private long lastTick;
@@ -105,7 +112,10 @@ public final class SimVehicle {
     SimVehicle(int sysid, VehicleKind kind, Position home, SimOptions options, long now, SimEquipment equipment) {
         this.sysid = sysid;
         this.kind = kind;
-        this.firmware = kind.newFirmware();
+        this.autopilot = SimAutopilot.of(options.autopilot());
+        this.firmware = autopilot.firmware(kind);
+        this.outbox = new Outbox(this::send, autopilot.reachedRepeats(), () -> gcsHeard || autopilot.textsBeforeGcs(),
+                () -> lastTick);
         this.options = options;
         this.estimate = new PositionEstimate(now, options.warmupSeconds());
         this.boot = now;
@@ -119,10 +129,13 @@ public final class SimVehicle {
         this.missionStore = new MissionStore(() -> this.home, options.missionCapacity(),
                 firmware.family().firmware() == VehicleFamily.PLANE);
         TransferHost host = new TransferHost();
-        this.lists = new MissionLists(missionStore, options.missionCapacity(), host);
-        this.ftp = new SimFtpServer(new MissionFiles(lists::store, new MissionFileLoader(lists::store, host)), this::send);
-        this.flight = new MissionFlight(firmware, missionStore, new FlightBody());
-        this.faults = new FaultSchedule(options.faults(), sysid, kind);
+        this.lists = new MissionLists(autopilot.missionList(missionStore), missionStore, options.missionCapacity(), host,
+                autopilot.transferRules());
+        // PX4 serves FTP but has no @MISSION files: every list is unknown to it
+        Function<MissionType, ItemStore> files = autopilot.missionFiles() ? lists::store : type -> null;
+        this.ftp = new SimFtpServer(new MissionFiles(files, new MissionFileLoader(files, host)), this::send);
+        this.flight = new MissionFlight(firmware, autopilot, missionStore, new FlightBody());
+        this.faults = new FaultSchedule(options.faults(), sysid, kind, firmware);
         defaultStreams(now);
     }
 
@@ -145,6 +158,11 @@ public final class SimVehicle {
 
     public VehicleKind kind() {
         return kind;
+    }
+
+    /** The autopilot it runs: ArduPilot or PX4. */
+    public Autopilot autopilot() {
+        return options.autopilot();
     }
 
     public synchronized int mode() {
@@ -200,7 +218,10 @@ public final class SimVehicle {
         nextDue.clear();
     }
 
-    /** The stored mission, home first (seq 0 is always the vehicle's home, as in ArduPilot). */
+    /**
+     * The stored mission, home first (seq 0 is always the vehicle's home, as in ArduPilot; a PX4
+     * vehicle's protocol leaves it out, its first item seq 0 on the wire).
+     */
     public synchronized List<MissionItem> mission() {
         return missionStore.items();
     }
@@ -254,11 +275,13 @@ public final class SimVehicle {
         // before the flight, so that a fault beginning now holds it from this tick on
         faults.tick(now, firstArmed, dt, faultHost);
         flight.tick(dt, faults.holdsFlight(faultHost));
+        preflightDisarm(dt);
         watchFence(now);
         if (firmware.needsPositionToArm()) {
             estimate.periodicReport(now, armed).ifPresent(s -> outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, s));
         }
         outbox.flush();
+        outbox.tick(now);
         if (cutOff()) {
             return;
         }
@@ -277,6 +300,19 @@ public final class SimVehicle {
             }
             out.accept(heartbeat());
             nextHeartbeat = nextOnGrid(nextHeartbeat, SECOND, now);
+        }
+    }
+
+    /** COM_DISARM_PRFLT: armed on the ground and not flying a mission, the vehicle disarms itself. */
+    private void preflightDisarm(double dt) {
+        double limit = firmware.preflightDisarmSeconds();
+        if (limit <= 0 || !armed || !craft.onGround() || flight.flyingMission()) {
+            armedIdle = 0;
+            return;
+        }
+        armedIdle += dt;
+        if (armedIdle >= limit) {
+            disarmNow("Disarmed by auto preflight disarming");
         }
     }
 
@@ -321,6 +357,9 @@ public final class SimVehicle {
         if (cutOff()) {
             return;
         }
+        if (m instanceof msg_heartbeat h && h.type == MAV_TYPE.MAV_TYPE_GCS) {
+            gcsHeard = true;
+        }
         if (m instanceof msg_command_long c && c.target_system == sysid) {
             commandsHandled++;
             ack(c, command(c, now));
@@ -336,7 +375,7 @@ public final class SimVehicle {
         } else if (lists.handle(m, sysid, now)) {
             // a mission, fence or rally transfer
         } else if (m instanceof msg_mission_set_current s && s.target_system == sysid) {
-            flight.setCurrentMessage(s.seq);
+            flight.setCurrentMessage(autopilot.storedSeq(s.seq));
         } else if (m instanceof msg_param_request_read r && r.target_system == sysid) {
             paramValue(r).ifPresent(this::send);
         }
@@ -349,8 +388,8 @@ public final class SimVehicle {
     private int command(msg_command_long c, long now) {
         return switch (c.command) {
             case MAV_CMD.MAV_CMD_COMPONENT_ARM_DISARM -> c.param1 == 1 ? arm(now) : disarm(c.param2);
-            case MAV_CMD.MAV_CMD_DO_SET_MODE -> ((int) c.param1 & MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED) != 0
-                    && setModeIfValid((long) c.param2) ? MAV_RESULT.MAV_RESULT_ACCEPTED : MAV_RESULT.MAV_RESULT_FAILED;
+            case MAV_CMD.MAV_CMD_DO_SET_MODE -> SimAutopilot.customModeFlag(c.param1)
+                    ? autopilot.setMode(c.param2, c.param3, this::setModeIfValid) : MAV_RESULT.MAV_RESULT_FAILED;
             case MAV_CMD.MAV_CMD_DO_SET_HOME -> setHome(c, now);
             case MAV_CMD.MAV_CMD_BATTERY_RESET -> {
                 // param1 is a mask of battery instances; this vehicle has instance 0 only
@@ -367,7 +406,7 @@ public final class SimVehicle {
                 if (c.param1 != 1) {
                     yield MAV_RESULT.MAV_RESULT_FAILED;
                 }
-                outbox.requested(SimAutopilotVersion.message(kind, options.ftp()));
+                outbox.requested(autopilot.version(kind, options.ftp()));
                 yield MAV_RESULT.MAV_RESULT_ACCEPTED;
             }
             case MAV_CMD.MAV_CMD_GET_HOME_POSITION -> {
@@ -377,12 +416,12 @@ public final class SimVehicle {
                 telemetry(msg_home_position.MAVLINK_MSG_ID_HOME_POSITION).ifPresent(out);
                 yield MAV_RESULT.MAV_RESULT_ACCEPTED;
             }
-            case MAV_CMD.MAV_CMD_MISSION_START -> missionStart(c);
+            case MAV_CMD.MAV_CMD_MISSION_START -> autopilot.armsOnMissionStart() ? armAndStart(c, now) : missionStart(c);
             case MAV_CMD.MAV_CMD_DO_FENCE_ENABLE -> {
                 fenceGuard.enable(c.param1 == 1);
                 yield MAV_RESULT.MAV_RESULT_ACCEPTED;
             }
-            case MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT -> flight.setCurrentCommand((int) c.param1, c.param2 == 1);
+            case MAV_CMD.MAV_CMD_DO_SET_MISSION_CURRENT -> flight.setCurrentCommand(autopilot.storedSeq((int) c.param1), c.param2 == 1);
             case MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH -> firmware.rtlMode().isEmpty() ? MAV_RESULT.MAV_RESULT_UNSUPPORTED
                     : setModeIfValid(firmware.rtlMode().getAsInt()) ? MAV_RESULT.MAV_RESULT_ACCEPTED : MAV_RESULT.MAV_RESULT_FAILED;
             case MAV_CMD.MAV_CMD_DO_AUX_FUNCTION -> firmware.auxFunction((int) c.param1, (int) c.param2, armed, now);
@@ -408,7 +447,7 @@ public final class SimVehicle {
             return MAV_RESULT.MAV_RESULT_ACCEPTED;
         }
         if (msgid == msg_autopilot_version.MAVLINK_MSG_ID_AUTOPILOT_VERSION) {
-            outbox.requested(SimAutopilotVersion.message(kind, options.ftp()));
+            outbox.requested(autopilot.version(kind, options.ftp()));
             return MAV_RESULT.MAV_RESULT_ACCEPTED;
         }
         if (!STREAMABLE.contains(msgid)) {
@@ -459,7 +498,38 @@ public final class SimVehicle {
         return MAV_RESULT.MAV_RESULT_ACCEPTED;
     }
 
+    /**
+     * PX4's Commander: with a feasible mission and -1 <= p1 < its item count, the mission goes on from
+     * item p1 (-1: where it is) in AUTO.MISSION, the vehicle armed if it was not; else DENIED, said when
+     * there is no valid mission.
+     */
+    private int armAndStart(msg_command_long c, long now) {
+        if (flight.state() == MISSION_STATE.MISSION_STATE_NO_MISSION) {
+            outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, "Mission start denied! No valid mission");
+            return MAV_RESULT.MAV_RESULT_DENIED;
+        }
+        if (c.param1 < -1 || c.param1 >= missionStore.count() - 1) {
+            return MAV_RESULT.MAV_RESULT_DENIED;
+        }
+        if (c.param1 >= 0) {
+            flight.setCurrentCommand(autopilot.storedSeq((int) c.param1), false);
+        }
+        if (!setModeIfValid(firmware.autoMode())) {
+            return MAV_RESULT.MAV_RESULT_FAILED;
+        }
+        if (!armed && arm(now, "Armed by mission start") != MAV_RESULT.MAV_RESULT_ACCEPTED) {
+            return MAV_RESULT.MAV_RESULT_FAILED;
+        }
+        flight.missionStart();
+        return MAV_RESULT.MAV_RESULT_ACCEPTED;
+    }
+
     private int arm(long now) {
+        return arm(now, firmware.armedText());
+    }
+
+    /** Arms, saying {@code text}, unless the firmware refuses. */
+    private int arm(long now, String text) {
         if (armed) {
             return MAV_RESULT.MAV_RESULT_ACCEPTED;
         }
@@ -477,7 +547,7 @@ public final class SimVehicle {
         if (firstArmed < 0) {
             firstArmed = now;
         }
-        outbox.text(MAV_SEVERITY.MAV_SEVERITY_INFO, firmware.armedText());
+        outbox.text(MAV_SEVERITY.MAV_SEVERITY_INFO, text);
         return MAV_RESULT.MAV_RESULT_ACCEPTED;
     }
 
@@ -486,13 +556,13 @@ public final class SimVehicle {
             outbox.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, "Disarm: vehicle is flying");
             return MAV_RESULT.MAV_RESULT_FAILED;
         }
-        disarmNow();
+        disarmNow(firmware.disarmedText());
         return MAV_RESULT.MAV_RESULT_ACCEPTED;
     }
 
-    private void disarmNow() {
+    private void disarmNow(String text) {
         if (armed) {
-            outbox.text(MAV_SEVERITY.MAV_SEVERITY_INFO, firmware.disarmedText());
+            outbox.text(MAV_SEVERITY.MAV_SEVERITY_INFO, text);
         }
         // disarmed, EKF3 takes lane 0 again, and AP_AHRS says so (copter-fault-gps: after "Disarming motors")
         if (navigation.primaryLane() != 0) {
@@ -709,7 +779,7 @@ public final class SimVehicle {
 
         @Override
         public void disarm() {
-            disarmNow();
+            disarmNow(firmware.landedDisarmText());
         }
 
         @Override
@@ -719,7 +789,7 @@ public final class SimVehicle {
 
         @Override
         public void reached(int seq) {
-            outbox.reached(seq);
+            outbox.reached(autopilot.wireSeq(seq));
         }
 
         @Override
@@ -786,7 +856,7 @@ public final class SimVehicle {
     private msg_heartbeat heartbeat() {
         msg_heartbeat hb = new msg_heartbeat();
         hb.type = (short) firmware.mavType();
-        hb.autopilot = MAV_AUTOPILOT.MAV_AUTOPILOT_ARDUPILOTMEGA;
+        hb.autopilot = (short) autopilot.mavAutopilot();
         hb.base_mode = (short) (MAV_MODE_FLAG.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED | (armed ? MAV_MODE_FLAG.MAV_MODE_FLAG_SAFETY_ARMED : 0));
         hb.custom_mode = mode;
         hb.system_status = (short) (navigation.failsafe() || internalErrors ? MAV_STATE.MAV_STATE_CRITICAL

@@ -13,7 +13,6 @@ import dolphin.mission.transfer.StoredItems;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import java.util.OptionalInt;
 import java.util.Set;
 
 /**
@@ -61,27 +60,6 @@ final class SubFirmware implements Firmware {
     @Override
     public VehicleFamily family() {
         return VehicleFamily.SUB;
-    }
-
-    @Override
-    public int bootMode() {
-        return SUB_MODE.SUB_MODE_MANUAL;
-    }
-
-    @Override
-    public int autoMode() {
-        return SUB_MODE.SUB_MODE_AUTO;
-    }
-
-    @Override
-    public OptionalInt rtlMode() {
-        return OptionalInt.empty();
-    }
-
-    /** GCS_MAVLINK_Sub::handle_MAV_CMD_NAV_LAND: SURFACE. */
-    @Override
-    public OptionalInt landMode() {
-        return OptionalInt.of(SUB_MODE.SUB_MODE_SURFACE);
     }
 
     /** Sub::set_mode: a mode that needs a position, then ModeAuto::init's mission. */

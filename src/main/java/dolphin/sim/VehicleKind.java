@@ -1,7 +1,10 @@
 package dolphin.sim;
 
 import com.MAVLink.enums.MAV_TYPE;
+import dolphin.mavlink.Autopilot;
 import dolphin.mavlink.VehicleFamily;
+import java.util.Arrays;
+import java.util.List;
 import java.util.Locale;
 import java.util.function.Supplier;
 
@@ -28,6 +31,16 @@ public enum VehicleKind {
     VehicleKind(Supplier<Firmware> make) {
         this.make = make;
         this.firmware = make.get();
+    }
+
+    /** Whether the fleet simulates this type under {@code autopilot}: PX4 flies copters, planes and standard VTOLs. */
+    public boolean simulatedOn(Autopilot autopilot) {
+        return autopilot == Autopilot.ARDUPILOT || autopilot == Autopilot.PX4 && (this == COPTER || this == PLANE || this == QUADPLANE);
+    }
+
+    /** The types the fleet simulates under {@code autopilot}. */
+    public static List<VehicleKind> simulatedFor(Autopilot autopilot) {
+        return Arrays.stream(values()).filter(k -> k.simulatedOn(autopilot)).toList();
     }
 
     public VehicleFamily family() {

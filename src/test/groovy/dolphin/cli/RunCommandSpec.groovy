@@ -1,5 +1,6 @@
 package dolphin.cli
 
+import dolphin.mavlink.Autopilot
 import dolphin.mission.flight.MissionExecutorConfig
 import dolphin.mavlink.LinkTimeouts
 import dolphin.mission.transfer.MissionTransferConfig
@@ -88,6 +89,7 @@ release v
         and: 'without them, the report base and subs always heard'
         defaults.kind() == VehicleKind.SUB
         defaults.home() == SimFleet.Config.DEFAULT_HOME
+        defaults.options().autopilot() == Autopilot.ARDUPILOT
         defaults.options().diveSilenceMetres() == Double.POSITIVE_INFINITY
         defaults.options().ftp()
     }
@@ -316,6 +318,9 @@ release v
         ['run', EXAMPLE, '--sim-home', '38.43462,-8.86118']        | '--sim-home needs --sim: it sets up the simulated fleet'
         ['run', EXAMPLE, '--sim-dive-silence', '5']                | '--sim-dive-silence needs --sim'
         ['run', EXAMPLE, '--sim-no-ftp']                           | '--sim-no-ftp needs --sim: it sets up the simulated fleet'
+        ['run', EXAMPLE, '--sim-autopilot', 'px4']                 | '--sim-autopilot needs --sim: it sets up the simulated fleet'
+        ['run', EXAMPLE, '--sim', '1', '--sim-autopilot', 'inav']  | "unknown autopilot 'inav': expected ardupilot or px4"
+        ['run', EXAMPLE, '--sim', '1', '--sim-autopilot', 'px4', '--sim-type', 'rover'] | '--sim-autopilot px4 simulates copter, plane, quadplane only, got --sim-type rover'
         ['run', EXAMPLE, '--sim', '1', '--sim-home', '38.43462']   | "home '38.43462': expected LAT,LON[,ALT], e.g. 38.43462,-8.86118"
         ['run', EXAMPLE, '--sim', '1', '--sim-home', '38.4,-8.8,deep'] | "home '38.4,-8.8,deep': expected LAT,LON[,ALT]"
         ['run', EXAMPLE, '--sim', '1', '--sim-home', '38.4,-188']  | "home '38.4,-188': latitude must be in [-90, 90], longitude in [-180, 180]"
@@ -340,6 +345,7 @@ release v
         ['sim', '--link', 'udpin:0.0.0.0:14559']                   | '--link for sim must be udpout:HOST:PORT'
         ['sim', '--home', '95,0,0']                                | 'latitude must be in [-90, 90]'
         ['sim', '--dive-silence', '5']                             | '--dive-silence needs --type sub: only a sub dives, got --type copter'
+        ['sim', '--autopilot', 'PX4', '--type', 'heli']            | '--autopilot px4 simulates copter, plane, quadplane only, got --type heli'
         ['sim', '--type', 'sub', '--dive-silence', '-0.5']         | '--dive-silence must be a depth in metres, 0 or more, got -0.5'
         ['run', EXAMPLE, '--loss', '0.1']                          | '--loss needs --sim: link faults are simulated'
         ['run', EXAMPLE, '--delay', '100']                         | '--delay needs --sim'

@@ -1,6 +1,7 @@
 package dolphin.cli
 
 import dolphin.core.Position
+import dolphin.mavlink.Autopilot
 import dolphin.sim.FaultModel
 import dolphin.sim.VehicleKind
 import picocli.CommandLine
@@ -42,6 +43,13 @@ class SimCommandSpec extends Specification {
         config.options().diveSilenceMetres() == 8d
         parsed('--type', 'boat').fleetConfig().kind() == VehicleKind.BOAT
         parsed('--home', '40.444233,-7.375234,820').fleetConfig().home() == Position.fromDegrees(40.444233, -7.375234, 820)
+    }
+
+    def "--autopilot px4 makes PX4 vehicles of the types PX4 is simulated for; by default they run ArduPilot"() {
+        expect:
+        parsed('--autopilot', 'px4', '--type', 'quadplane').fleetConfig().options().autopilot() == Autopilot.PX4
+        parsed('--autopilot', 'px4').fleetConfig().kind() == VehicleKind.COPTER
+        parsed().fleetConfig().options().autopilot() == Autopilot.ARDUPILOT
     }
 
     def "--no-ftp makes vehicles without MAVLink FTP; by default they have it"() {

@@ -46,14 +46,14 @@ class ExamplesSpec extends Specification {
         }
     }
 
-    /** Runs the example with the command of its README row; a deadline of 90 s. */
-    Map run(String example) {
+    /** Runs the example with the command of its README row and {@code more} arguments; a deadline of 90 s. */
+    Map run(String example, List<String> more = []) {
         File file = new File(DIR, "${example}.dolphin")
         String command = readmeRows().find { it[0] == example }?.getAt(1)
         assert command: "README.md: no row for ${file} in the table of examples"
         List<String> words = command.split(/\s+/).toList()
         assert words.take(3) == ['./dolphin', 'run', file.path]
-        List<String> args = words.drop(1)
+        List<String> args = words.drop(1) + more
         assert args.contains('--sim')
         def out = new StringWriter()
         def err = new StringWriter()
@@ -219,6 +219,50 @@ class ExamplesSpec extends Specification {
                                   'mission square on vehicle 1: done', 'the square from the file: DONE, fence breached: false']
         'battery-and-position' | ['vehicle { 1 }: battery 100 %, position (40.444233°, -7.375234°, 820.000)',
                                   'vehicle { 2 }: battery 100 %, position (40.444233°, -7.375116°, 820.000)']
+    }
+
+    @Timeout(100)
+    def "on PX4 (--sim-autopilot px4): #example"() {
+        when:
+        def r = run(example, ['--sim-autopilot', 'px4'])
+
+        then:
+        r.code == 0
+        expected.every { List<String> lines -> ScriptLines.inOrder(r.lines, *lines) }
+        r.lines.last() == "dsl-examples/${example}.dolphin: completed".toString()
+
+        where: 'each list of lines in its order; not loiters (PX4 flies no LOITER_TURNS) nor the subs of Listing 1'
+        example                      | expected
+        'two-drones-survey'          | [['mission Survey Area 1 on vehicle 1: cut short: AUTO.RTL', 'mission Return to base 1 on vehicle 1: done',
+                                         'both vehicles back: DONE'],
+                                        ['mission Survey Area 2 on vehicle 2: cut short: AUTO.RTL', 'mission Return to base 2 on vehicle 2: done',
+                                         'both vehicles back: DONE']]
+        'listing2-single-vehicle'    | [['mission Survey Area on vehicle 1: cut short: AUTO.RTL', 'mission Return to base on vehicle 1: done']]
+        'listing3-two-vehicles'      | [['mission Survey Area 1 on vehicle 1: cut short: AUTO.RTL', 'mission Return to base on vehicle 1: done',
+                                         'vehicles { 1 } and { 2 } are back home'],
+                                        ['mission Survey Area 2 on vehicle 2: cut short: AUTO.RTL', 'mission Return to base on vehicle 2: done',
+                                         'vehicles { 1 } and { 2 } are back home']]
+        'listing4-keep-two-airborne' | [['round done: vehicles { 1 } and { 2 } are back home', 'mission Survey Area 1 on vehicle 3: started',
+                                         'round done: vehicles { 3 } and { 4 } are back home']]
+        'operators'                  | [['mission hop on vehicle 1: done', 'mission hover north on vehicle 1: cut short: AUTO.RTL',
+                                         'mission back on vehicle 1: done', 'operators: DONE*'],
+                                        ['mission hover on vehicle 2: cut short: AUTO.RTL', 'mission back on vehicle 2: done', 'operators: DONE*']]
+        'survey'                     | [['mission survey on vehicle 1: cut short: AUTO.RTL', 'mission return home on vehicle 1: done']]
+        'camera'                     | [['mission photos on vehicle 1: uploading 11 items', 'mission photos on vehicle 1: done', 'camera: DONE']]
+        'watch-onerror'              | [['the fine survey failed: *', 'mission coarse survey on vehicle 1: done', 'watch: DONE']]
+        'first-flight'               | [['mission first flight on vehicle 1: done', 'the flight ended DONE, battery *']]
+        'battery-and-position'       | [['vehicle { 1 }: battery 100 %, position (40.444233°, -7.375234°, 820.000)']]
+        'fence'                      | [['mission fenced flight on vehicle 1: fence verified*', 'mission fenced flight on vehicle 1: rally points verified*',
+                                         'the mission stopped: mission fenced flight on vehicle 1: vehicle 1 breached its fence during item 3 of 4 '
+                                                 + '(NAV_WAYPOINT) and left AUTO.MISSION for AUTO.RTL (its fence action)*',
+                                         'back home: the fence did its job']]
+        'from-file'                  | [['mission square on vehicle 1: fence verified*', 'mission square on vehicle 1: rally points verified*',
+                                         'mission square on vehicle 1: done', 'the square from the file: DONE, fence breached: false']]
+        'mapping'                    | [['mission mapping on vehicle 1: uploading 40 items', 'mission mapping on vehicle 1: done', 'mapping: DONE']]
+        'vtol-mapping'               | [['mission vtol mapping on vehicle 1: armed', 'mission vtol mapping on vehicle 1: done', 'mapping: DONE']]
+        'fire-watch'                 | [['mission survey west on vehicle 1: cut short: AUTO.RTL', 'mission watch the fire on vehicle 3: done'],
+                                        ['mission back home on vehicle 1: done'], ['mission back home on vehicle 2: done']]
+        'fleet'                      | [['picked 300 vehicles', 'all 300 patrols cut short at 90 %: DONE', 'all 300 vehicles landed']]
     }
 
     @Timeout(100)

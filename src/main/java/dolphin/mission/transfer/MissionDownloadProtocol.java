@@ -196,8 +196,9 @@ public final class MissionDownloadProtocol {
                 item(MissionItem.fromMessage(m));
             } else if (message instanceof msg_mission_item m) {
                 item(fromFloat(m));
-            } else if (message instanceof msg_mission_ack a && a.type == MAV_MISSION_RESULT.MAV_MISSION_INVALID_SEQUENCE) {
-                ignoredAcks++;              // a late ACK of a duplicated item from an earlier upload, on a noisy link
+            } else if (message instanceof msg_mission_ack a && (a.type == MAV_MISSION_RESULT.MAV_MISSION_INVALID_SEQUENCE
+                    || a.type == MAV_MISSION_RESULT.MAV_MISSION_ERROR && count < 0)) {
+                ignoredAcks++;              // a late ACK of a duplicated item from an earlier upload (ERROR once it ended), on a noisy link
             } else if (message instanceof msg_mission_ack a && a.type != MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
                 fail(MissionUploadProtocol.resultName(a.type) + (count < 0 ? " (answering MISSION_REQUEST_LIST)"
                         : " (answering the request for item " + low + " of " + count + ")"));

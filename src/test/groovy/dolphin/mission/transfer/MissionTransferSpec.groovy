@@ -819,6 +819,20 @@ class MissionTransferSpec extends Specification {
                       '0.0 REQUEST_INT 3', '0.0 REQUEST_INT 4']
     }
 
+    def "a MAV_MISSION_ERROR before the count answers an item the last upload repeated after its end (PX4, ArduPilot): ignored, the download goes on"() {
+        when:
+        def down = transfers.download().download()
+        channel.receive(ack(MAV_MISSION_RESULT.MAV_MISSION_ERROR))
+        channel.receive(count(2))
+        channel.receive(itemInt(intended()[0]))
+        channel.receive(itemInt(intended()[1]))
+
+        then:
+        down.get().success()
+        down.get().items() == intended().take(2)
+        down.get().ignoredAcks() == 1
+    }
+
     def "a vehicle answering with the float MISSION_ITEM: its degrees become degE7 (to float precision), the rest as sent"() {
         given:
         vehicle(['floatItems']).stored = intended()
