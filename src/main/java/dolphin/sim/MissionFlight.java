@@ -8,10 +8,12 @@ import com.MAVLink.enums.MAV_RESULT;
 import com.MAVLink.enums.MAV_SEVERITY;
 import com.MAVLink.enums.MISSION_STATE;
 import dolphin.core.Position;
+import dolphin.mission.model.Fence;
 import dolphin.mission.model.MissionItem;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.OptionalInt;
 import java.util.Set;
 import java.util.function.Supplier;
 
@@ -51,6 +53,9 @@ final class MissionFlight {
         Craft craft();
 
         Position home();
+
+        /** The fence the vehicle holds (empty without one). */
+        Fence fence();
 
         boolean armed();
 
@@ -312,6 +317,11 @@ final class MissionFlight {
      */
     void missionChanged() {
         feasible = autopilot.feasible(store.items(), firmware);
+        OptionalInt outside = autopilot.outsideFence(store.items(), body.fence());
+        if (outside.isPresent()) {
+            feasible = false;
+            body.text(MAV_SEVERITY.MAV_SEVERITY_CRITICAL, "Geofence violation for waypoint " + outside.getAsInt());
+        }
         if (store.count() <= 1 || autopilot.restartsOnUpload() && !flyingMission()) {
             cursor.cleared();
             dropActive();

@@ -4,8 +4,11 @@ import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_FRAME;
 import com.MAVLink.enums.MAV_MISSION_RESULT;
 import dolphin.mavlink.VehicleFamily;
+import dolphin.mission.model.Fence;
 import dolphin.mission.model.MissionItem;
+import dolphin.mission.transfer.StoredItems;
 import java.util.List;
+import java.util.OptionalInt;
 import java.util.Set;
 
 /**
@@ -85,6 +88,20 @@ final class Px4MissionCheck {
             }
         }
         return new MissionItem(i.seq(), i.command(), i.frame(), p[0], p[1], p[2], p[3], i.x(), i.y(), i.z(), i.autocontinue());
+    }
+
+    /**
+     * The first item with a position outside the fence (outside every inclusion region or inside an
+     * exclusion one), as PX4's feasibility check numbers it: its seq on PX4 plus one, which is the
+     * runtime's seq. Empty without a fence or when every item is inside.
+     */
+    static OptionalInt outsideFence(List<MissionItem> items, Fence fence) {
+        if (fence.isEmpty()) {
+            return OptionalInt.empty();
+        }
+        return items.subList(1, items.size()).stream()
+                .filter(i -> StoredItems.POSITIONAL.contains(i.command()) && fence.breachedBy(i.position()).isPresent())
+                .mapToInt(MissionItem::seq).findFirst();
     }
 
     /** Whether PX4 finds the stored mission (home first) feasible: no item it does not fly, and a landing on a fixed wing or VTOL. */

@@ -8,8 +8,10 @@ import com.MAVLink.enums.MISSION_STATE;
 import com.MAVLink.standard.msg_autopilot_version;
 import dolphin.mavlink.Autopilot;
 import dolphin.mavlink.Px4Modes;
+import dolphin.mission.model.Fence;
 import dolphin.mission.model.MissionItem;
 import java.util.List;
+import java.util.OptionalInt;
 import java.util.Locale;
 import java.util.function.LongPredicate;
 
@@ -124,6 +126,12 @@ enum SimAutopilot {
             return Px4MissionCheck.feasible(items, firmware.family());
         }
 
+        /** FeasibilityChecker: "Geofence violation for waypoint N", N its seq on PX4 plus one (the runtime's seq). */
+        @Override
+        OptionalInt outsideFence(List<MissionItem> items, Fence fence) {
+            return Px4MissionCheck.outsideFence(items, fence);
+        }
+
 
         @Override
         msg_autopilot_version version(VehicleKind kind, boolean ftp) {
@@ -218,6 +226,14 @@ enum SimAutopilot {
 
     /** Whether the stored mission (home first) passes the autopilot's check once uploaded: else NO_MISSION. */
     abstract boolean feasible(List<MissionItem> items, Firmware firmware);
+
+    /**
+     * The first item of the stored mission (home first) outside the fence, numbered as the autopilot's
+     * texts number it, for an autopilot that refuses such a mission once uploaded; empty otherwise.
+     */
+    OptionalInt outsideFence(List<MissionItem> items, Fence fence) {
+        return OptionalInt.empty();
+    }
 
     abstract msg_autopilot_version version(VehicleKind kind, boolean ftp);
 

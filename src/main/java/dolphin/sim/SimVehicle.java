@@ -762,6 +762,11 @@ public final class SimVehicle {
         }
 
         @Override
+        public Fence fence() {
+            return lists.fence();
+        }
+
+        @Override
         public boolean armed() {
             return armed;
         }

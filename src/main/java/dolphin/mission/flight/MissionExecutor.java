@@ -54,7 +54,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     private static final Duration JUMP_RESEND = Duration.ofSeconds(1);
     /** How long an ArduPlane's first EXTENDED_SYS_STATE is awaited: its stream is asked for at 0.5 Hz at least. */
     private static final Duration VTOL_STATE_WAIT = Duration.ofSeconds(5);
-    /** How long a vehicle that checks a mission after its upload is given to find it feasible (PX4 SITL: about 1 s). */
+    /** How long a vehicle that checks a mission after its upload is given to find it feasible (PX4 SITL: well under a second). */
     private static final Duration MISSION_CHECK_WAIT = Duration.ofSeconds(10);
     /** How often a long upload says how far it is, in clock time (a lossy link can make it last a minute). */
     private static final long TRANSFER_REPORT_NANOS = 5_000_000_000L;
@@ -72,6 +72,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     private FlightRules rules;
     private Stage stage;
     private volatile FlightState state = FlightState.PREPARE;
+    /** When the mission's upload began: a vehicle that checks the mission may refuse it from then on. */
+    private long missionUploadBegan;
     private String failure;
 
     /** @param vehicles the mission side of the vehicle the executor is given; null when it has none */
@@ -442,6 +444,9 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             var next = lists.peek();
             progress("uploading " + (next.getKey() == MissionType.MISSION ? "" : "the " + next.getKey().label() + ": ")
                     + next.getValue().size() + (next.getValue().size() == 1 ? " item" : " items"));
+            if (next.getKey() == MissionType.MISSION) {
+                missionUploadBegan = clock().nanoTime();
+            }
             pending = watch(vehicle.upload(next.getKey(), next.getValue()));
         }
 
@@ -530,8 +535,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         private final Plan plan;
         private final CommandSteps commands = commandSteps(what -> { });
         private final CommandSteps before = commandSteps(what -> { });
-        /** When the lists were on the vehicle: from then on a vehicle that checks the mission may refuse it. */
-        private final long uploaded;
+        private final long deadlineOfCheck;
         private boolean armModeSet;
         private CompletableFuture<CommandResult> pending;
         private long nextAttempt;
@@ -540,7 +544,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             super(FlightState.ARM, config.arm());
             this.plan = plan;
             nextAttempt = clock().nanoTime();
-            uploaded = nextAttempt;
+            deadlineOfCheck = nextAttempt + MISSION_CHECK_WAIT.toNanos();
             if (armsInAuto()) {
                 before.add(firstItemCurrent());
             }
@@ -557,11 +561,11 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 return before.failure() != null ? fail(before.failure()) : CompletionState.IN_PROGRESS;
             }
             if (rules.checksMissionAfterUpload() && !missionChecked(vehicle.state())) {
-                var refused = words.firstSevere(uploaded);
+                var refused = words.firstSevere(missionUploadBegan);
                 if (refused.isPresent()) {
                     return fail("vehicle " + vehicle.vehicleId() + " found the mission infeasible: '" + refused.get().text() + "'");
                 }
-                return now < uploaded + MISSION_CHECK_WAIT.toNanos() ? CompletionState.IN_PROGRESS : fail("vehicle "
+                return now < deadlineOfCheck ? CompletionState.IN_PROGRESS : fail("vehicle "
                         + vehicle.vehicleId() + " did not find the mission feasible within " + MISSION_CHECK_WAIT.toSeconds()
                         + " s: MISSION_CURRENT still says no mission");
             }
