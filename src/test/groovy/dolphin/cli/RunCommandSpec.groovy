@@ -34,8 +34,20 @@ class RunCommandSpec extends Specification {
         command
     }
 
+    /**
+     * A free UDP port below Linux's ephemeral range (from 32768): a port the system handed out and took
+     * back could be handed at once to the simulated fleet's own udpout socket (CI: "Address already in use").
+     */
     static int freePort() {
-        new DatagramSocket(0).withCloseable { it.localPort }
+        int start = 20000 + new Random().nextInt(12000)
+        (start..<32768).find { int port ->
+            try {
+                new DatagramSocket(port).close()
+                true
+            } catch (SocketException ignored) {
+                false
+            }
+        } as int
     }
 
     def "the example runs against the in-process simulated fleet"() {
