@@ -1,5 +1,6 @@
 package dolphin.mission.transfer;
 
+import dolphin.mavlink.Autopilot;
 import dolphin.mavlink.ProtocolTimers;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
@@ -317,7 +318,11 @@ public final class MissionUploadProtocol {
                 fail(unsettled + "; reading the " + type.label() + " back failed: " + readBack.reason());
                 return;
             }
-            Optional<String> difference = MissionVerification.firstDifference(type, items, back.items());
+            // both as the runtime numbers them, compared by what the vehicle's autopilot keeps, as the executor's verification does
+            Autopilot autopilot = vehicle.autopilot();
+            Optional<String> difference = MissionVerification.firstDifference(autopilot, type,
+                    AutopilotLists.fromVehicle(autopilot, type, items, vehicle.home()),
+                    AutopilotLists.fromVehicle(autopilot, type, back.items(), vehicle.home()));
             if (difference.isPresent()) {
                 fail(unsettled + "; read back, " + difference.get());
             } else {

@@ -101,6 +101,26 @@ class Px4TransferSpec extends Specification {
         MissionVerification.firstDifference(Autopilot.PX4, MissionType.MISSION, mission(), items).empty
     }
 
+    def "a lost final ACK is settled by reading the mission back, compared by what PX4 keeps: the landing's abort height comes back 0"() {
+        given:
+        def land = mission()[4]
+        def sent = mission().take(4) + [new MissionItem(4, land.command(), land.frame(), 5, 0, 0, 0, land.x(), land.y(), land.z(), true)]
+        def held = sent.drop(1).collect { new MissionItem(it.seq() - 1, it.command(), it.frame(),
+                (float) (it.command() == MAV_CMD.MAV_CMD_DO_JUMP ? it.param1() - 1 : it.command() == MAV_CMD.MAV_CMD_NAV_LAND ? 0 : it.param1()),
+                it.param2(), it.param3(), it.param4(), it.x(), it.y(), it.z(), it.autocontinue()) }
+
+        when: 'every item taken, then ERROR for the last one repeated: the final ACK was lost'
+        def up = transfers.upload().upload(sent)
+        (0..3).each { channel.receive(requestInt(it)) }
+        channel.receive(ack(MAV_MISSION_RESULT.MAV_MISSION_ERROR))
+        channel.receive(count(4))
+        held.each { channel.receive(itemInt(it)) }
+
+        then:
+        up.get().success()
+        up.get().verified()
+    }
+
     def "an unanswered request goes again alone"() {
         when:
         def down = transfers.download().download(MissionType.MISSION)
