@@ -206,6 +206,19 @@ interface Firmware {
     /** NAV_LAND at {@code over} (null: where it is), and the LAND mode. */
     Manoeuvre landing(Craft craft, Position over);
 
+    /** A mission's NAV_LAND at {@code over} (null: where it is): the LAND mode's landing unless the firmware's differs. */
+    default Manoeuvre missionLanding(Craft craft, Position over) {
+        return landing(craft, over);
+    }
+
+    /**
+     * Whether a NAV_LAND is reported reached as its descent begins and left armed when it lands, for
+     * the mission's end to disarm (a PX4 multicopter); else it is reached once landed and disarmed.
+     */
+    default boolean reachesLandingOnDescent() {
+        return false;
+    }
+
     /**
      * Whether a NAV_LAND is complete once it has landed and disarmed; a QuadPlane's mission stays at
      * its landing, ACTIVE (QuadPlane::check_land_complete).

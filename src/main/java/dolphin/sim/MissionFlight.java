@@ -98,6 +98,8 @@ final class MissionFlight {
     private Phase phase;
     private double timer;
     private Manoeuvre manoeuvre;
+    /** Whether the landing item under way descends, reported reached (PX4). */
+    private boolean descending;
     private double exitSpeed;
     /** The turn at the active waypoint from the leg to it onto the leg after it, in radians (0 to pi); pi when none follows. */
     private double turn;
@@ -538,7 +540,9 @@ final class MissionFlight {
             if (waiting || !step(item, dt)) {
                 return;
             }
-            body.reached(item.seq());
+            if (!descending) { // PX4 reported its landing as the descent began
+                body.reached(item.seq());
+            }
             cursor.next(item.seq() + 1);
             dropActive();
             dt = 0;
@@ -684,11 +688,12 @@ final class MissionFlight {
         exitSpeed = exitSpeed(item, turn(item, body.craft().position()));
         phase = Phase.APPROACH;
         timer = 0;
+        descending = false;
         modeManoeuvre = null;
         Craft craft = body.craft();
         manoeuvre = switch (firmware.fliesAs(item.command())) {
             case MAV_CMD.MAV_CMD_NAV_TAKEOFF -> firmware.takeoff(craft, firmware.takeoffAltitude(item, altitude(item), craft));
-            case MAV_CMD.MAV_CMD_NAV_LAND -> firmware.landing(craft, item.x() == 0 && item.y() == 0 ? null
+            case MAV_CMD.MAV_CMD_NAV_LAND -> firmware.missionLanding(craft, item.x() == 0 && item.y() == 0 ? null
                     : Position.fromDegrees(item.x() * 1e-7, item.y() * 1e-7, craft.position().hae()));
             case MAV_CMD.MAV_CMD_NAV_RETURN_TO_LAUNCH -> firmware.returnHome(craft, body.home(), true);
             default -> null;
@@ -708,7 +713,7 @@ final class MissionFlight {
                 timer += dt;
                 yield timer >= Math.max(0, item.param1());
             }
-            case MAV_CMD.MAV_CMD_NAV_LAND -> land(dt);
+            case MAV_CMD.MAV_CMD_NAV_LAND -> land(item, dt);
             default -> {
                 body.text(MAV_SEVERITY.MAV_SEVERITY_INFO, "Skipping invalid cmd #" + item.seq());
                 yield true;
@@ -766,13 +771,19 @@ final class MissionFlight {
     /**
      * NAV_LAND: complete once landed and disarmed; but a firmware that starts its mission over when
      * disarmed never completes it (ArduCopter: no MISSION_ITEM_REACHED for the landing), nor does one
-     * whose mission stays at its landing (a QuadPlane).
+     * whose mission stays at its landing (a QuadPlane). PX4 reports it reached as the descent begins,
+     * and lands it armed: the mission's end disarms.
      */
-    private boolean land(double dt) {
-        if (!manoeuvre.step(dt)) {
+    private boolean land(MissionItem item, double dt) {
+        boolean landed = manoeuvre.step(dt);
+        if (firmware.reachesLandingOnDescent() && !descending && manoeuvre.landedState() == MAV_LANDED_STATE.MAV_LANDED_STATE_LANDING) {
+            descending = true;
+            body.reached(item.seq());
+        }
+        if (!landed) {
             return false;
         }
-        if (manoeuvre.endsOnGround() && body.armed()) {
+        if (manoeuvre.endsOnGround() && body.armed() && !firmware.reachesLandingOnDescent()) {
             body.disarm();
         }
         return !restartDue && firmware.completesLanding();

@@ -15,8 +15,10 @@ import java.util.Optional;
  * A family's flight model (the copter's, the plane's, the QuadPlane's) flown by PX4, as its SITL with
  * SIH did (docs/mavlink.md, "Simulated PX4 vehicles"): PX4's modes, booting in AUTO.LOITER; it arms
  * in any mode and flies its mission as soon as it is armed in AUTO.MISSION, a multicopter with no
- * take-off item needed; no text per item; a landing detected, then disarmed COM_DISARM_LAND
- * ({@link #DISARM_LAND}) seconds later; a multicopter armed on the ground disarms itself after
+ * take-off item needed; no text per item; a multicopter lands as PX4's ({@link Px4Landing}); a landing
+ * detected, then disarmed COM_DISARM_LAND ({@link #DISARM_LAND}) seconds later, a multicopter's
+ * mission landing at once, by the mission's end, its landing item reported reached as the descent
+ * began (px4-copter-fenced-hop); a multicopter armed on the ground disarms itself after
  * COM_DISARM_PRFLT ({@link #DISARM_PREFLIGHT}) seconds; a finished mission stays in AUTO.MISSION,
  * holding where it ended unless it landed; a multicopter's AUTO.RTL climbs to RTL_RETURN_ALT
  * ({@link #RTL_RETURN_ALT}) above home, returns and lands. A standard VTOL (the QuadPlane's model) says
@@ -172,15 +174,32 @@ final class Px4Firmware implements Firmware {
         return base.holdAt(craft, at);
     }
 
+    /** Landed, it disarms COM_DISARM_LAND later. */
     @Override
     public Manoeuvre landing(Craft craft, Position over) {
-        return new LandedWait(craft, base.landing(craft, over));
+        return new LandedWait(craft, descent(craft, over), DISARM_LAND);
+    }
+
+    /** A multicopter's: landed, the mission is over at once, and its end disarms it. */
+    @Override
+    public Manoeuvre missionLanding(Craft craft, Position over) {
+        return family() == VehicleFamily.COPTER ? new LandedWait(craft, descent(craft, over), 0) : landing(craft, over);
+    }
+
+    /** A multicopter's landing item is reached as its descent begins, over the landing point (MissionBase's move to it done). */
+    @Override
+    public boolean reachesLandingOnDescent() {
+        return family() == VehicleFamily.COPTER;
+    }
+
+    private Manoeuvre descent(Craft craft, Position over) {
+        return family() == VehicleFamily.COPTER ? new Px4Landing(craft, over) : base.landing(craft, over);
     }
 
     /** A multicopter's RTL lands (RTL_LAND_DELAY 0); a fixed wing's circles home, as the family's. */
     @Override
     public Manoeuvre returnHome(Craft craft, Position home, boolean asMissionItem) {
-        return family() == VehicleFamily.COPTER ? new LandedWait(craft, new ReturnAndLand(craft, home, RTL_RETURN_ALT, 0))
+        return family() == VehicleFamily.COPTER ? new LandedWait(craft, new ReturnAndLand(craft, home, RTL_RETURN_ALT, 0), DISARM_LAND)
                 : base.returnHome(craft, home, asMissionItem);
     }
 
@@ -224,28 +243,31 @@ final class Px4Firmware implements Firmware {
         return new Failures(f.motors(), f.powerLoss(), f.ekfFailsafe(), bootMode(), f.internalError());
     }
 
-    /** A manoeuvre that ends on the ground, over COM_DISARM_LAND after PX4's land detector said so. */
+    /** A manoeuvre that ends on the ground, over {@code wait} seconds after PX4's land detector said so. */
     private static final class LandedWait implements Manoeuvre {
         private final Craft craft;
         private final Manoeuvre landing;
+        private final double wait;
         private double onGround = -1;
 
-        LandedWait(Craft craft, Manoeuvre landing) {
+        LandedWait(Craft craft, Manoeuvre landing, double wait) {
             this.craft = craft;
             this.landing = landing;
+            this.wait = wait;
         }
 
         @Override
         public boolean step(double dt) {
             if (onGround < 0) {
-                if (landing.step(dt)) {
-                    onGround = 0;
-                    craft.say("Landing detected");
+                if (!landing.step(dt)) {
+                    return false;
                 }
-                return false;
+                onGround = 0;
+                craft.say("Landing detected");
+                return wait == 0;
             }
             onGround += dt;
-            return onGround >= DISARM_LAND;
+            return onGround >= wait;
         }
 
         @Override

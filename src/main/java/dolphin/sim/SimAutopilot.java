@@ -101,12 +101,13 @@ enum SimAutopilot {
 
         /**
          * MavlinkMissionManager::send_mission_current: seq without home; total the items, 65535 without a
-         * mission; a mission left in the middle is PAUSED; mission_mode 1 in AUTO.MISSION, else 2.
+         * mission (an infeasible one has its total, NO_MISSION); a mission left in the middle is PAUSED;
+         * mission_mode 1 in AUTO.MISSION, else 2.
          */
         @Override
         msg_mission_current missionCurrent(int seq, int stored, int state, boolean paused, boolean inAuto) {
             msg_mission_current c = new msg_mission_current();
-            boolean none = state == MISSION_STATE.MISSION_STATE_NO_MISSION;
+            boolean none = stored <= 1;
             c.seq = none ? 0 : Math.max(0, seq - 1);
             c.total = none ? 65535 : stored - 1;
             c.mission_state = (short) (paused && state == MISSION_STATE.MISSION_STATE_NOT_STARTED
@@ -186,6 +187,16 @@ enum SimAutopilot {
     /** Whether a new mission, uploaded while the vehicle does not fly one, starts again from its first item (PX4). */
     boolean restartsOnUpload() {
         return this == PX4;
+    }
+
+    /**
+     * REQUEST_MESSAGE's result when the vehicle sends nothing back (a camera's or gimbal's information
+     * without one, a message it does not send): ArduPilot's {@code arduPilots}, PX4's DENIED
+     * (MavlinkReceiver::handle_request_message_command; its SITL denied CAMERA_INFORMATION and
+     * GIMBAL_MANAGER_INFORMATION).
+     */
+    int notSent(int arduPilots) {
+        return this == PX4 ? MAV_RESULT.MAV_RESULT_DENIED : arduPilots;
     }
 
     /** How its side of the mission protocol differs. */

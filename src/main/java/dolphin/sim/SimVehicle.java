@@ -434,24 +434,26 @@ public final class SimVehicle {
     /**
      * GCS_MAVLINK::handle_command_request_message. CAMERA_INFORMATION and GIMBAL_MANAGER_INFORMATION are
      * messages ArduPilot knows, so they are ACCEPTED either way; AP_Camera then sends one per camera,
-     * none without a camera, and the simulated vehicles carry no gimbal (docs/decisions.md).
+     * none without a camera, and the simulated vehicles carry no gimbal (docs/decisions.md). PX4 denies
+     * what it does not send ({@link SimAutopilot#notSent}).
      */
     private int requestMessage(int msgid, long now) {
         if (msgid == msg_camera_information.MAVLINK_MSG_ID_CAMERA_INFORMATION) {
             if (camera) {
                 outbox.requested(SimCamera.information(bootMillis(now)));
+                return MAV_RESULT.MAV_RESULT_ACCEPTED;
             }
-            return MAV_RESULT.MAV_RESULT_ACCEPTED;
+            return autopilot.notSent(MAV_RESULT.MAV_RESULT_ACCEPTED);
         }
         if (msgid == msg_gimbal_manager_information.MAVLINK_MSG_ID_GIMBAL_MANAGER_INFORMATION) {
-            return MAV_RESULT.MAV_RESULT_ACCEPTED;
+            return autopilot.notSent(MAV_RESULT.MAV_RESULT_ACCEPTED);
         }
         if (msgid == msg_autopilot_version.MAVLINK_MSG_ID_AUTOPILOT_VERSION) {
             outbox.requested(autopilot.version(kind, options.ftp()));
             return MAV_RESULT.MAV_RESULT_ACCEPTED;
         }
         if (!STREAMABLE.contains(msgid)) {
-            return MAV_RESULT.MAV_RESULT_FAILED;
+            return autopilot.notSent(MAV_RESULT.MAV_RESULT_FAILED);
         }
         telemetry(msgid).ifPresent(out);
         return MAV_RESULT.MAV_RESULT_ACCEPTED;

@@ -273,7 +273,7 @@ class Px4SimVehicleSpec extends Specification {
         reached.collect { Math.round((it.at - first) / 1e9) } == (0..10).toList()
     }
 
-    def "at the end of a mission with a landing: landing detected, disarmed 2 s later, still in AUTO.MISSION, COMPLETE"() {
+    def "a mission's landing is reached as its descent begins; landed, the mission ends and disarms it at once, still in AUTO.MISSION, COMPLETE"() {
         given:
         def d = px4()
         d.upload(survey())
@@ -282,16 +282,42 @@ class Px4SimVehicleSpec extends Specification {
 
         when:
         d.runUntil(180, 'the disarm') { !d.vehicle.armed() }
-        def texts = d.texts(from)
+        int landReached = d.indexOf(from) { it instanceof msg_mission_item_reached && it.seq == 3 }
         int detected = d.indexOf(from) { it instanceof msg_statustext && it.text == 'Landing detected' }
-        int disarmed = d.indexOf(from) { it instanceof msg_statustext && it.text == 'Disarmed by landing' }
 
-        then:
-        texts.containsAll(['Landing detected', 'Disarmed by landing', 'Mission finished, landed'])
-        (d.sent[disarmed].at - d.sent[detected].at) / 1e9 == Px4Firmware.DISARM_LAND
+        then: 'reached over the landing point, 10 m up: its descent takes more than 10 s'
+        landReached >= 0 && (d.sent[detected].at - d.sent[landReached].at) / 1e9 > 10
+
+        and: 'as px4-copter-fenced-hop: the texts in this order, in one step'
+        d.texts(detected) == ['Landing detected', 'Mission finished, landed', 'Disarmed by landing']
+        d.sent.drop(detected).findAll { it.message instanceof msg_statustext }*.at.unique().size() == 1
         d.vehicle.modeName() == 'AUTO.MISSION'
         d.vehicle.position().horizontalDistanceTo(HOME.displace(40, 0, 0)) < 2
         with(current(d)) { mission_state == MISSION_STATE.MISSION_STATE_COMPLETE && seq == 3 }
+    }
+
+    def "REQUEST_MESSAGE of a message it does not send is DENIED, as its SITL denied a camera's and a gimbal's information; what it sends is ACCEPTED"() {
+        given:
+        def d = px4()
+
+        expect:
+        d.command(MAV_CMD.MAV_CMD_REQUEST_MESSAGE, [259]).result == MAV_RESULT.MAV_RESULT_DENIED
+        d.command(MAV_CMD.MAV_CMD_REQUEST_MESSAGE, [280]).result == MAV_RESULT.MAV_RESULT_DENIED
+        d.command(MAV_CMD.MAV_CMD_REQUEST_MESSAGE, [msg_autopilot_version.MAVLINK_MSG_ID_AUTOPILOT_VERSION]).result == MAV_RESULT.MAV_RESULT_ACCEPTED
+        d.command(MAV_CMD.MAV_CMD_REQUEST_MESSAGE, [msg_mission_current.MAVLINK_MSG_ID_MISSION_CURRENT]).result == MAV_RESULT.MAV_RESULT_ACCEPTED
+    }
+
+    def "PX4's descent: MPC_Z_VEL_MAX_DN above MPC_LAND_ALT1, MPC_LAND_SPEED below MPC_LAND_ALT2, in proportion between"() {
+        expect:
+        Math.abs(Px4Landing.sinkRate(height) - rate) < 1e-9
+
+        where:
+        height || rate
+        30     || 1.5
+        10     || 1.5
+        7.5    || 1.1
+        5      || 0.7
+        1      || 0.7
     }
 
     def "a mission that does not end with a landing holds at its last item, armed in AUTO.MISSION, COMPLETE"() {
@@ -369,7 +395,7 @@ class Px4SimVehicleSpec extends Specification {
         d.texts().last() == 'Disarmed by landing'
     }
 
-    def "a fixed wing's mission without a landing is no valid mission (MIS_TKO_LAND_REQ 2): NO_MISSION, and MISSION_START DENIED"() {
+    def "a fixed wing's mission without a landing is no valid mission (MIS_TKO_LAND_REQ 2): NO_MISSION with its total, and MISSION_START DENIED"() {
         given:
         def d = px4(VehicleKind.PLANE)
 
@@ -380,7 +406,7 @@ class Px4SimVehicleSpec extends Specification {
 
         then:
         result == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
-        with(current(d)) { mission_state == MISSION_STATE.MISSION_STATE_NO_MISSION && total == 65535 }
+        with(current(d)) { mission_state == MISSION_STATE.MISSION_STATE_NO_MISSION && total == 3 } // its items, as px4-copter-fence-refused's
         d.command(MAV_CMD.MAV_CMD_MISSION_START, [0, 0]).result == MAV_RESULT.MAV_RESULT_DENIED
         d.texts().last() == 'Mission start denied! No valid mission'
 
