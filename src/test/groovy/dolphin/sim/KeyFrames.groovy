@@ -12,6 +12,8 @@ import com.MAVLink.enums.MAV_CMD
 import com.MAVLink.enums.MAV_MODE_FLAG
 import com.MAVLink.minimal.msg_heartbeat
 import com.MAVLink.standard.msg_autopilot_version
+import dolphin.mavlink.Autopilot
+import dolphin.mavlink.Px4Modes
 import groovy.transform.EqualsAndHashCode
 
 /**
@@ -28,6 +30,12 @@ import groovy.transform.EqualsAndHashCode
  * waypoint" (which of the two, and the distance, depend on the turn), "Mission: N" (it names every
  * item, also those MISSION_CURRENT never shows), "Throttle armed" and "Arming motors" (the arming's
  * ACK and heartbeat say it).
+ *
+ * <p>A PX4 vehicle's frames read as PX4's: its mode by name (AUTO.MISSION), its texts those in
+ * {@link #PX4_TEXTS}, whole but for the tab PX4 ends each with (the runtime strips it too; the simulator
+ * sends none), AUTOPILOT_VERSION its
+ * capabilities only (the measured build, untagged, said version 0.0.0), MISSION_CURRENT without
+ * seq {@link #PX4_NO_CURRENT}.
  */
 class KeyFrames {
 
@@ -37,6 +45,23 @@ class KeyFrames {
                                        'VTOL approach', 'VTOL airbrake', 'VTOL position1', 'VTOL position2 started',
                                        'Land descend started', 'Land final started', 'Land complete', 'Throttle disarmed',
                                        'In landing sequence: mission reset', 'Mode change to Auto failed: runup not complete']
+
+    /**
+     * PX4's texts that tell what it did: arming, the landing and disarm, the mission's end, and a
+     * refusal of the mission ("Geofence violation for waypoint N", CRITICAL, which the runtime fails the
+     * mission on). Not kept: "Executing Mission", "Climb to N meters above home" and "Takeoff detected",
+     * PX4's words for what the heartbeat, MISSION_CURRENT and the landed state say.
+     */
+    static final List<String> PX4_TEXTS = ['Armed by external command', 'Landing detected', 'Mission finished, landed',
+                                           'Mission finished, loitering', 'Disarmed by landing', 'Geofence violation for waypoint',
+                                           'Mission start denied']
+
+    /**
+     * PX4's MISSION_CURRENT seq between an upload and the navigator's first word on the new mission
+     * (its current item -1), which goes out only when PX4's 1 Hz MISSION_CURRENT falls between them:
+     * in px4-copter-fence-refused, not in the other recordings; left out.
+     */
+    static final int PX4_NO_CURRENT = 65535
 
     /** MAV_FTP_OPCODE names, of the requests a reply answers and of the reply itself. */
     static final Map<Integer, String> FTP_OPCODES = [0: 'None', 1: 'TerminateSession', 2: 'ResetSessions', 3: 'ListDirectory',
@@ -67,9 +92,15 @@ class KeyFrames {
 
     final List<Event> events = []
     private final Map<String, String> last = [:]
+    private final Autopilot autopilot
 
-    static KeyFrames of(List<MAVLinkMessage> messages) {
-        new KeyFrames().tap { k -> messages.each { k.add(it) } }
+    private KeyFrames(Autopilot autopilot) {
+        this.autopilot = autopilot
+    }
+
+    /** The key frames of an ArduPilot vehicle, or of one running {@code autopilot}. */
+    static KeyFrames of(List<MAVLinkMessage> messages, Autopilot autopilot = Autopilot.ARDUPILOT) {
+        new KeyFrames(autopilot).tap { k -> messages.each { k.add(it) } }
     }
 
     void add(MAVLinkMessage m) {
@@ -89,13 +120,14 @@ class KeyFrames {
         events*.toString()
     }
 
-    private static Event event(MAVLinkMessage m) {
+    private Event event(MAVLinkMessage m) {
+        boolean px4 = autopilot == Autopilot.PX4
         switch (m) {
             case msg_heartbeat:
                 boolean armed = (m.base_mode & MAV_MODE_FLAG.MAV_MODE_FLAG_SAFETY_ARMED) != 0
-                return new Event('HEARTBEAT', "armed=${armed ? 1 : 0} mode=${m.custom_mode}")
+                return new Event('HEARTBEAT', "armed=${armed ? 1 : 0} mode=${px4 ? Px4Modes.TABLE.name(m.custom_mode) : m.custom_mode}")
             case msg_mission_current:
-                return new Event('MISSION_CURRENT', "seq=${m.seq} total=${m.total} state=${m.mission_state}")
+                return px4 && m.seq == PX4_NO_CURRENT ? null : new Event('MISSION_CURRENT', "seq=${m.seq} total=${m.total} state=${m.mission_state}")
             case msg_mission_item_reached:
                 return new Event('MISSION_ITEM_REACHED', "seq=${m.seq}")
             case msg_extended_sys_state:
@@ -106,10 +138,10 @@ class KeyFrames {
             case msg_mission_ack:
                 return new Event('MISSION_ACK', "type=${m.type}")
             case msg_statustext:
-                String text = TEXTS.find { m.text.startsWith(it) }
-                return text == null ? null : new Event('STATUSTEXT', text)
+                String text = (px4 ? PX4_TEXTS : TEXTS).find { m.text.startsWith(it) }
+                return text == null ? null : new Event('STATUSTEXT', px4 ? m.text.strip() : text)
             case msg_autopilot_version:
-                return new Event('AUTOPILOT_VERSION', "capabilities=${m.capabilities} flight_sw_version=${m.flight_sw_version}")
+                return new Event('AUTOPILOT_VERSION', "capabilities=${m.capabilities}" + (px4 ? '' : " flight_sw_version=${m.flight_sw_version}"))
             case msg_file_transfer_protocol:
                 return new Event('FILE_TRANSFER_PROTOCOL', ftp(m))
             default:

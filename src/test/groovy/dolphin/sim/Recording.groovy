@@ -32,7 +32,7 @@ class Recording {
     final List<MAVLinkMessage> vehicle = []
     /** The same, each at the vehicle's boot time last seen at or before it (its own, if it carries one); 0 before the first. */
     final List<Sent> vehicleTimed = []
-    /** What the ground station sent, heartbeats left out, in order and on the vehicle's clock. */
+    /** What the ground station sent, in order and on the vehicle's clock: its heartbeats too, which a PX4 vehicle waits for to send its texts. */
     final List<Sent> groundStation = []
     /** The vehicle's boot time at its last frame. */
     long endNanos
@@ -63,12 +63,10 @@ class Recording {
                     untimed.clear()
                 }
                 recording.vehicleTimed << new Sent((boot ?: 0L) * 1_000_000L, m)
-            } else if (!(m instanceof msg_heartbeat)) {
-                if (boot == null) {
-                    untimed << m
-                } else {
-                    recording.groundStation << new Sent(boot * 1_000_000L, m)
-                }
+            } else if (boot == null) {
+                untimed << m
+            } else {
+                recording.groundStation << new Sent(boot * 1_000_000L, m)
             }
         }
         recording.endNanos = (boot ?: 0L) * 1_000_000L
