@@ -32,10 +32,9 @@ import groovy.transform.EqualsAndHashCode
  * ACK and heartbeat say it).
  *
  * <p>A PX4 vehicle's frames read as PX4's: its mode by name (AUTO.MISSION), its texts those in
- * {@link #PX4_TEXTS}, whole but for the tab PX4 ends each with (the runtime strips it too; the simulator
- * sends none), AUTOPILOT_VERSION its
- * capabilities only (the measured build, untagged, said version 0.0.0), MISSION_CURRENT without
- * seq {@link #PX4_NO_CURRENT}.
+ * {@link #PX4_TEXTS}, whole but for the tab PX4 ends each with (the runtime strips it too; the
+ * simulator sends none), AUTOPILOT_VERSION its capabilities only (the measured build, untagged, said
+ * version 0.0.0), MISSION_CURRENT without seq {@link #PX4_NO_CURRENT}.
  */
 class KeyFrames {
 
@@ -52,9 +51,9 @@ class KeyFrames {
      * mission on). Not kept: "Executing Mission", "Climb to N meters above home" and "Takeoff detected",
      * PX4's words for what the heartbeat, MISSION_CURRENT and the landed state say.
      */
-    static final List<String> PX4_TEXTS = ['Armed by external command', 'Landing detected', 'Mission finished, landed',
-                                           'Mission finished, loitering', 'Disarmed by landing', 'Geofence violation for waypoint',
-                                           'Mission start denied']
+    static final List<String> PX4_TEXTS = ['Armed by external command', 'Armed by mission start', 'Landing detected',
+                                           'Mission finished, landed', 'Mission finished, loitering', 'Disarmed by landing',
+                                           'Geofence violation for waypoint', 'Mission start denied']
 
     /**
      * PX4's MISSION_CURRENT seq between an upload and the navigator's first word on the new mission

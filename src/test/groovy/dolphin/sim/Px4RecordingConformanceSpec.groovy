@@ -17,11 +17,11 @@ import static dolphin.sim.RecordingConformanceSpec.inOrder
  * each kind ({@link KeyFrames} of a PX4 vehicle: mode by name and arming, MISSION_CURRENT,
  * MISSION_ITEM_REACHED, landed state, COMMAND_ACK, MISSION_ACK, PX4's texts that say what it did,
  * AUTOPILOT_VERSION's capabilities) must be the same, in the same order, and each recording's ending
- * must come in the order SITL sent it: the first flight armed by MISSION_START, flown item by item,
- * the landing reached as its descent began, "Landing detected"; the fenced hop the same after its fence
- * and rally point, ending in "Mission finished, landed", "Disarmed by landing" and the ground; the
- * refused fence's mission taken, then "Geofence violation for waypoint 3" and NO_MISSION with its 4
- * items, never armed.
+ * must come in the order SITL sent it: the first flight armed, AUTO.MISSION, MISSION_START, flown
+ * item by item, the landing reached as its descent began, "Landing detected"; the fenced hop the same
+ * after its fence and rally point, ending in "Mission finished, landed", "Disarmed by landing" and the
+ * ground; the refused fence's mission taken, then "Geofence violation for waypoint 3" and NO_MISSION
+ * with its 4 items, never armed.
  *
  * <p>Each recording ends when dolphin stopped listening, at the disarm, before PX4 had said all: its
  * texts go out from a queue, after the heartbeat (px4-copter-first-flight's last is "Landing
@@ -31,9 +31,9 @@ import static dolphin.sim.RecordingConformanceSpec.inOrder
  *
  * <p>PX4 sends from component 1 only in these recordings (Recording reads every component of system
  * 1). Not compared: the many streams PX4 sends from boot, which the simulator leaves out unless asked
- * for; SET_MESSAGE_INTERVAL's ACKs (PX4 FAILED some the simulator takes, as for ArduPilot); when a
- * frame came relative to frames of other kinds, as for ArduPilot: the simulated copter climbs, flies
- * and descends at about PX4's speeds but not its times (the fenced hop lands 34 s before SITL's).
+ * for; SET_MESSAGE_INTERVAL's ACKs, as for ArduPilot; when a frame came relative to frames of other
+ * kinds, as for ArduPilot: the simulated copter descends at PX4's speeds but climbs and flies at the
+ * family's ArduPilot ones, so not in PX4's times (it lands the fenced hop 34 s before SITL's).
  */
 class Px4RecordingConformanceSpec extends Specification {
 
