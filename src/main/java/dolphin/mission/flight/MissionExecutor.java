@@ -4,7 +4,6 @@ import com.MAVLink.common.msg_mission_current;
 import com.MAVLink.common.msg_mission_item_reached;
 import com.MAVLink.common.msg_statustext;
 import com.MAVLink.enums.MAV_CMD;
-import com.MAVLink.enums.MAV_LANDED_STATE;
 import com.MAVLink.enums.MAV_RESULT;
 import com.MAVLink.enums.MISSION_STATE;
 import dolphin.core.CompletionState;
@@ -14,7 +13,6 @@ import dolphin.core.Position;
 import dolphin.core.VehicleEvent.EventKind;
 import dolphin.mavlink.CommandResult;
 import dolphin.mavlink.Autopilot;
-import dolphin.mavlink.VehicleFamily;
 import dolphin.mavlink.VehicleState;
 import dolphin.mission.model.DroneCommand;
 import dolphin.mission.model.FlightWay;
@@ -360,8 +358,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
          * it is given {@link #VTOL_STATE_WAIT} from the start for one, which the runtime asks for at discovery.
          */
         private boolean vtolStateUnheard(VehicleState s, long now) {
-            return s.autopilot() == Autopilot.ARDUPILOT && s.family() == VehicleFamily.PLANE && s.landedState() == MAV_LANDED_STATE.MAV_LANDED_STATE_UNDEFINED
-                    && now - since < VTOL_STATE_WAIT.toNanos();
+            return s.mayBeVtol() && now - since < VTOL_STATE_WAIT.toNanos();
         }
 
         private void hold() {
