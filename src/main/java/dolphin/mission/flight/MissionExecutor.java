@@ -12,6 +12,7 @@ import dolphin.core.PlatformTaskExecutor;
 import dolphin.core.Position;
 import dolphin.core.VehicleEvent.EventKind;
 import dolphin.mavlink.CommandResult;
+import dolphin.mavlink.StatusText;
 import dolphin.mavlink.Autopilot;
 import dolphin.mavlink.VehicleState;
 import dolphin.mission.model.DroneCommand;
@@ -117,8 +118,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     /** STATUSTEXT, on the communications thread, in the order the vehicle sent it. */
     public void consume(msg_statustext message) {
         long now = clock().nanoTime();
-        // PX4 ends its texts with a tab
-        String text = message.getText().strip();
+        String text = StatusText.of(message);
         words.heard(message.severity, text, now);
         ItemRefusals r = refusals;
         if (r != null) {
