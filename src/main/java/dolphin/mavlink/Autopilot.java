@@ -37,6 +37,11 @@ public enum Autopilot {
                 case OTHER -> "ArduPilot";
             };
         }
+
+        @Override
+        public boolean tellsVtolByState() {
+            return true;
+        }
     },
     /**
      * PX4: one mode table, main and sub modes apart in DO_SET_MODE; the first item of a mission is its
@@ -95,6 +100,15 @@ public enum Autopilot {
     /** Params 1 to 3 of the MAV_CMD_DO_SET_MODE that asks for a mode. */
     public float[] setModeParams(long customMode) {
         return setMode.apply(customMode);
+    }
+
+    /**
+     * Whether a plane may turn out a VTOL only by EXTENDED_SYS_STATE's vtol_state: an ArduPlane
+     * QuadPlane says FIXED_WING in its heartbeat unless Q_MAV_TYPE is set ({@link VehicleFamily#withVtolState});
+     * PX4's heartbeat names a VTOL as one.
+     */
+    public boolean tellsVtolByState() {
+        return false;
     }
 
     /** The mode the vehicle flies its mission in. */

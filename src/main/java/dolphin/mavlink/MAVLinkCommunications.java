@@ -652,8 +652,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
             capabilities.answered(n);
         });
         handler.on(msg_statustext.class, (n, m) -> {
-            // PX4 ends its texts with a tab
-            String text = m.getText().strip();
+            String text = StatusText.of(m);
             LOG.info("vehicle {}: {}", n.getId(), text);
             changed(n, s -> s.withStatusText(text));
         });

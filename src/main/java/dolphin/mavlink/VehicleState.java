@@ -1,6 +1,7 @@
 package dolphin.mavlink;
 
 import com.MAVLink.common.msg_sys_status;
+import com.MAVLink.enums.MAV_LANDED_STATE;
 import com.MAVLink.enums.MISSION_STATE;
 import com.MAVLink.minimal.msg_heartbeat;
 import dolphin.core.Position;
@@ -87,6 +88,11 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Autopil
         return autopilot.label(family);
     }
 
+    /** Whether this plane may still turn out a VTOL: its autopilot tells by EXTENDED_SYS_STATE, and none has come yet. */
+    public boolean mayBeVtol() {
+        return autopilot.tellsVtolByState() && family == VehicleFamily.PLANE && landedState == MAV_LANDED_STATE.MAV_LANDED_STATE_UNDEFINED;
+    }
+
     /**
      * True while a mission is being flown, so {@link #missionSeq()} is the item the vehicle flies:
      * MISSION_CURRENT also counts items during an upload, and older firmware reports no mission state
@@ -124,7 +130,7 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Autopil
 
     /** EXTENDED_SYS_STATE: the landed state, and the VTOL state, which tells a QuadPlane from a plane. */
     public VehicleState withExtendedState(int landed, int vtol) {
-        return new VehicleState(heartbeat, heartbeatNanos, autopilot, autopilot == Autopilot.ARDUPILOT ? family.withVtolState(vtol) : family, systemStatus, systemStatusNanos, position, relativeAlt,
+        return new VehicleState(heartbeat, heartbeatNanos, autopilot, autopilot.tellsVtolByState() ? family.withVtolState(vtol) : family, systemStatus, systemStatusNanos, position, relativeAlt,
                 heading, positionNanos, home, landed, vtol, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 

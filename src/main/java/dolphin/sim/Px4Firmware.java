@@ -1,5 +1,6 @@
 package dolphin.sim;
 
+import com.MAVLink.enums.MAV_PARAM_TYPE;
 import com.MAVLink.enums.MAV_SEVERITY;
 import com.MAVLink.enums.MAV_STATE;
 import com.MAVLink.enums.MAV_TYPE;
@@ -35,6 +36,9 @@ final class Px4Firmware implements Firmware {
     /** RTL_RETURN_ALT, metres above home. */
     static final double RTL_RETURN_ALT = 60;
 
+    private static final List<FirmwareParam> PLANE_PARAMS = List.of(
+            new FirmwareParam("FW_LND_ANG", 5, MAV_PARAM_TYPE.MAV_PARAM_TYPE_REAL32));
+
     private final Firmware base;
 
     Px4Firmware(Firmware base) {
@@ -57,9 +61,10 @@ final class Px4Firmware implements Firmware {
         return base.family();
     }
 
+    /** A plane's FW_LND_ANG (its default), which the runtime reads to check a landing's approach as PX4 does. */
     @Override
     public List<FirmwareParam> params() {
-        return List.of();
+        return family() == VehicleFamily.PLANE ? PLANE_PARAMS : List.of();
     }
 
     @Override

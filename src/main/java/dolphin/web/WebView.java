@@ -11,6 +11,7 @@ import dolphin.dsl.Engine;
 import dolphin.dsl.EngineListener;
 import dolphin.dsl.ScriptResult;
 import dolphin.mavlink.MAVLinkCommunications;
+import dolphin.mavlink.StatusText;
 import java.io.IOException;
 import java.net.BindException;
 import java.net.InetAddress;
@@ -103,7 +104,7 @@ public final class WebView implements EngineListener, AutoCloseable {
         // MessageHandler keeps its consumers: a closed view ignores what still comes.
         comms.messageHandler().on(msg_statustext.class, (n, m) -> {
             if (running) {
-                log.add(now(), "vehicle", n.getId(), m.getText().strip());
+                log.add(now(), "vehicle", n.getId(), StatusText.of(m));
             }
         });
         this.sampler = new Thread(this::sampleLoop, "dolphin web sampler");

@@ -2,6 +2,7 @@ package dolphin.mavlink
 
 import com.MAVLink.enums.MAV_AUTOPILOT
 import com.MAVLink.enums.MAV_TYPE
+import com.MAVLink.enums.MAV_LANDED_STATE
 import com.MAVLink.enums.MAV_VTOL_STATE
 import spock.lang.Specification
 
@@ -61,5 +62,17 @@ class VehicleFamilySpec extends Specification {
         expect:
         VehicleState.initial(Autopilot.ARDUPILOT, VehicleFamily.PLANE).withExtendedState(1, MAV_VTOL_STATE.MAV_VTOL_STATE_FW).family() == VehicleFamily.VTOL
         VehicleState.initial(Autopilot.PX4, VehicleFamily.PLANE).withExtendedState(1, MAV_VTOL_STATE.MAV_VTOL_STATE_FW).family() == VehicleFamily.PLANE
+    }
+
+    def "only an ArduPlane not yet heard in EXTENDED_SYS_STATE may still turn out a VTOL"() {
+        given:
+        def arduPlane = VehicleState.initial(Autopilot.ARDUPILOT, VehicleFamily.PLANE)
+
+        expect:
+        arduPlane.mayBeVtol()
+        !arduPlane.withExtendedState(MAV_LANDED_STATE.MAV_LANDED_STATE_ON_GROUND, MAV_VTOL_STATE.MAV_VTOL_STATE_UNDEFINED).mayBeVtol()
+        !VehicleState.initial(Autopilot.PX4, VehicleFamily.PLANE).mayBeVtol()
+        !VehicleState.initial(Autopilot.ARDUPILOT, VehicleFamily.COPTER).mayBeVtol()
+        !VehicleState.initial(Autopilot.OTHER, VehicleFamily.PLANE).mayBeVtol()
     }
 }

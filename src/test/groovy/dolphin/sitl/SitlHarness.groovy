@@ -59,10 +59,12 @@ class SitlHarness implements AutoCloseable {
      * Starts PX4 SITL instance {@code instance} (system id instance + 1) of the SIH model, e.g. quadx,
      * standard_vtol, with these parameters and its flight log off (SDLOG_MODE -1): PX4 SITL logs from
      * arming, and two instances starting their logs at once on a busy machine lost their baro and compass.
+     * The binary is named by the environment variable {@code binaryVariable}.
      */
-    Px4SitlVehicle startPx4(String model, int instance, Position home, Map<String, Object> params = [:]) {
-        String binary = new File(System.getenv('PX4_SITL_BIN')).absolutePath
-        assert new File(binary).canExecute(): "PX4_SITL_BIN=${binary} is not an executable file"
+    Px4SitlVehicle startPx4(String model, int instance, Position home, Map<String, Object> params = [:],
+                            String binaryVariable = 'PX4_SITL_BIN') {
+        String binary = new File(System.getenv(binaryVariable)).absolutePath
+        assert new File(binary).canExecute(): "${binaryVariable}=${binary} is not an executable file"
         def v = new Px4SitlVehicle(binary, model, instance, home, PX4_SPEEDUP, [SDLOG_MODE: -1] + params)
         vehicles << v
         v

@@ -4,7 +4,6 @@ import com.MAVLink.common.msg_mission_current;
 import com.MAVLink.common.msg_mission_item_reached;
 import com.MAVLink.common.msg_statustext;
 import com.MAVLink.enums.MAV_CMD;
-import com.MAVLink.enums.MAV_LANDED_STATE;
 import com.MAVLink.enums.MAV_RESULT;
 import com.MAVLink.enums.MISSION_STATE;
 import dolphin.core.CompletionState;
@@ -13,8 +12,8 @@ import dolphin.core.PlatformTaskExecutor;
 import dolphin.core.Position;
 import dolphin.core.VehicleEvent.EventKind;
 import dolphin.mavlink.CommandResult;
+import dolphin.mavlink.StatusText;
 import dolphin.mavlink.Autopilot;
-import dolphin.mavlink.VehicleFamily;
 import dolphin.mavlink.VehicleState;
 import dolphin.mission.model.DroneCommand;
 import dolphin.mission.model.FlightWay;
@@ -119,8 +118,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     /** STATUSTEXT, on the communications thread, in the order the vehicle sent it. */
     public void consume(msg_statustext message) {
         long now = clock().nanoTime();
-        // PX4 ends its texts with a tab
-        String text = message.getText().strip();
+        String text = StatusText.of(message);
         words.heard(message.severity, text, now);
         ItemRefusals r = refusals;
         if (r != null) {
@@ -220,6 +218,11 @@ public final class MissionExecutor extends PlatformTaskExecutor {
          */
         boolean triggersCamera() {
             return items.stream().anyMatch(i -> i.command() == MAV_CMD.MAV_CMD_DO_SET_CAM_TRIGG_DIST && i.param1() > 0);
+        }
+
+        /** Whether a MISSION_CURRENT's seq, in the runtime's numbering, names an item of this plan. */
+        boolean holds(int seq) {
+            return seq >= 0 && seq < items.size();
         }
     }
 
@@ -360,8 +363,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
          * it is given {@link #VTOL_STATE_WAIT} from the start for one, which the runtime asks for at discovery.
          */
         private boolean vtolStateUnheard(VehicleState s, long now) {
-            return s.autopilot() == Autopilot.ARDUPILOT && s.family() == VehicleFamily.PLANE && s.landedState() == MAV_LANDED_STATE.MAV_LANDED_STATE_UNDEFINED
-                    && now - since < VTOL_STATE_WAIT.toNanos();
+            return s.mayBeVtol() && now - since < VTOL_STATE_WAIT.toNanos();
         }
 
         private void hold() {
@@ -608,14 +610,17 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         }
 
         /**
-         * The vehicle holds the uploaded mission and found it feasible: all its items, and a state a valid mission has
-         * (NOT_STARTED; ACTIVE or PAUSED when PX4 is still in AUTO.MISSION after an earlier flight). An infeasible one
-         * is NO_MISSION; COMPLETE is the earlier mission's, which a new one clears.
+         * The vehicle holds the uploaded mission and found it feasible: all its items, one of them current, and a state a
+         * valid mission has (NOT_STARTED; ACTIVE or PAUSED when PX4 is still in AUTO.MISSION after an earlier flight). An
+         * infeasible one is NO_MISSION; COMPLETE is the earlier mission's, which a new one clears. Between the upload and
+         * its navigator's check PX4 counts the new items with no current one (seq 65535) and the earlier mission's state
+         * (MavlinkMissionManager::update_active_mission).
          */
         private boolean missionChecked(VehicleState s) {
             int state = s.missionState();
-            return s.missionTotal() == plan.items().size() - 1 && (state == MISSION_STATE.MISSION_STATE_NOT_STARTED
-                    || state == MISSION_STATE.MISSION_STATE_ACTIVE || state == MISSION_STATE.MISSION_STATE_PAUSED);
+            return s.missionTotal() == plan.items().size() - 1 && plan.holds(s.missionSeq())
+                    && (state == MISSION_STATE.MISSION_STATE_NOT_STARTED || state == MISSION_STATE.MISSION_STATE_ACTIVE
+                    || state == MISSION_STATE.MISSION_STATE_PAUSED);
         }
 
         private CommandResult answer() {
@@ -736,7 +741,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 return CompletionState.IN_PROGRESS;
             }
             int r = reached.get();
-            if (active && s.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE) {
+            if (active && s.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE && plan.holds(s.missionSeq())) {
                 r = Math.max(r, s.missionSeq() - 1);
             }
             if (r > reported) {

@@ -54,6 +54,22 @@ enum Px4Rules implements FlightRules {
         public double loiterRadius() {
             return 80;
         }
+
+        @Override
+        public List<String> parameters() {
+            return List.of(FixedWingApproach.LANDING_ANGLE);
+        }
+
+        /** As any PX4 vehicle, its landings' approaches checked as PX4 checks them ({@link FixedWingApproach}). */
+        @Override
+        public Boarded onBoard(List<MissionItem> items, Boarding boarding) {
+            Boarded boarded = super.onBoard(items, boarding);
+            FixedWingApproach.refusal(boarded.items(), boarding.parameter(FixedWingApproach.LANDING_ANGLE)
+                    .orElse(FixedWingApproach.DEFAULT_ANGLE)).ifPresent(why -> {
+                        throw new IllegalArgumentException(why);
+                    });
+            return boarded;
+        }
     },
     /**
      * A take-off and a landing become NAV_VTOL_TAKEOFF and NAV_VTOL_LAND: PX4 flies a whole mission
