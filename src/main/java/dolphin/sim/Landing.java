@@ -9,7 +9,7 @@ import dolphin.core.Position;
  * LAND_ALT_LOW and LAND_SPEED below it, to the ground. It is over when the land detector has seen
  * the craft on the ground for {@link #DETECT} seconds (SITL disarms about 2 s after it touches down).
  */
-final class Landing implements Manoeuvre {
+class Landing implements Manoeuvre {
 
     static final double LAND_SPEED = 0.5;
     static final double LAND_ALT_LOW = 10;
@@ -36,12 +36,26 @@ final class Landing implements Manoeuvre {
             return false;
         }
         if (!craft.contact()) {
-            double rate = craft.height() > LAND_ALT_LOW ? craft.performance().sink() : LAND_SPEED;
-            craft.descend(rate, dt);
+            craft.descend(sinkRate(craft), dt);
             return false;
         }
         grounded += dt;
-        return grounded >= DETECT;
+        return grounded >= detectSeconds();
+    }
+
+    /** How fast it comes down, metres a second, at the craft's height. */
+    double sinkRate(Craft craft) {
+        return craft.height() > LAND_ALT_LOW ? craft.performance().sink() : LAND_SPEED;
+    }
+
+    /** How long its land detector must see the ground. */
+    double detectSeconds() {
+        return DETECT;
+    }
+
+    /** Whether it is over the landing point, coming down. */
+    final boolean descending() {
+        return above;
     }
 
     @Override

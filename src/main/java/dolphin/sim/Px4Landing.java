@@ -10,7 +10,7 @@ import dolphin.core.Position;
  * them (FlightTaskAuto::_prepareLandSetpoints). It is over when the land detector has seen the ground
  * for LNDMC_TRIG_TIME (its three stages, a third each).
  */
-final class Px4Landing implements Manoeuvre {
+final class Px4Landing extends Landing {
 
     static final double MPC_Z_VEL_MAX_DN = 1.5;
     static final double MPC_LAND_SPEED = 0.7;
@@ -18,32 +18,14 @@ final class Px4Landing implements Manoeuvre {
     static final double MPC_LAND_ALT2 = 5;
     static final double LNDMC_TRIG_TIME = 1;
 
-    private final Craft craft;
-    private final Position over;
-    private boolean above;
-    private double grounded;
-
     /** Lands at {@code over} (lat, lon; its height does not matter), or where it is when null. */
     Px4Landing(Craft craft, Position over) {
-        this.craft = craft;
-        this.over = over;
-        this.above = over == null;
+        super(craft, over);
     }
 
     @Override
-    public boolean step(double dt) {
-        if (!above) {
-            Position target = over.atHeight(craft.position().hae());
-            craft.fly(target, dt);
-            above = craft.distanceTo(target) <= craft.performance().precisionRadius() && craft.stopped();
-            return false;
-        }
-        if (!craft.contact()) {
-            craft.descend(sinkRate(craft.height()), dt);
-            return false;
-        }
-        grounded += dt;
-        return grounded >= LNDMC_TRIG_TIME;
+    double sinkRate(Craft craft) {
+        return sinkRate(craft.height());
     }
 
     /** The descent's speed at {@code height} above ground, metres a second. */
@@ -52,14 +34,14 @@ final class Px4Landing implements Manoeuvre {
         return MPC_LAND_SPEED + share * (MPC_Z_VEL_MAX_DN - MPC_LAND_SPEED);
     }
 
+    @Override
+    double detectSeconds() {
+        return LNDMC_TRIG_TIME;
+    }
+
     /** In the air on its way to the landing point, LANDING from the descent on. */
     @Override
     public int landedState() {
-        return above ? MAV_LANDED_STATE.MAV_LANDED_STATE_LANDING : MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR;
-    }
-
-    @Override
-    public boolean endsOnGround() {
-        return true;
+        return descending() ? MAV_LANDED_STATE.MAV_LANDED_STATE_LANDING : MAV_LANDED_STATE.MAV_LANDED_STATE_IN_AIR;
     }
 }
