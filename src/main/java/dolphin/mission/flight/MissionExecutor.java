@@ -611,17 +611,16 @@ public final class MissionExecutor extends PlatformTaskExecutor {
 
         /**
          * The vehicle holds the uploaded mission and found it feasible: all its items, one of them current, and a state a
-         * valid mission has: NOT_STARTED; ACTIVE or PAUSED when PX4 is still in AUTO.MISSION after an earlier flight;
-         * COMPLETE when the mission flown before was this one, which PX4 then keeps as it was, finished (it takes a new
-         * mission only when its CRC changed, MavlinkMissionManager), and MISSION_START from the first item flies again.
-         * An infeasible one is NO_MISSION. Between the upload of a changed mission and its navigator's check PX4 counts
-         * the new items with no current one (seq 65535) and the earlier mission's state (update_active_mission).
+         * valid mission has (NOT_STARTED; ACTIVE or PAUSED when PX4 is still in AUTO.MISSION after an earlier flight). An
+         * infeasible one is NO_MISSION; COMPLETE is the earlier mission's, which a new one clears. Between the upload and
+         * its navigator's check PX4 counts the new items with no current one (seq 65535) and the earlier mission's state
+         * (MavlinkMissionManager::update_active_mission).
          */
         private boolean missionChecked(VehicleState s) {
             int state = s.missionState();
             return s.missionTotal() == plan.items().size() - 1 && plan.holds(s.missionSeq())
                     && (state == MISSION_STATE.MISSION_STATE_NOT_STARTED || state == MISSION_STATE.MISSION_STATE_ACTIVE
-                    || state == MISSION_STATE.MISSION_STATE_PAUSED || state == MISSION_STATE.MISSION_STATE_COMPLETE);
+                    || state == MISSION_STATE.MISSION_STATE_PAUSED);
         }
 
         private CommandResult answer() {

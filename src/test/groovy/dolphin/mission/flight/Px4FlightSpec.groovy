@@ -109,30 +109,26 @@ class Px4FlightSpec extends MissionFlights {
         vehicle.commands.empty
     }
 
-    def "after a flight a PX4 vehicle holds the new mission ACTIVE (still in AUTO.MISSION) or, the same mission again, COMPLETE: both are flown from the first item"() {
+    def "a PX4 vehicle still in AUTO.MISSION after a flight says a new mission ACTIVE once it holds it, not COMPLETE"() {
         given:
         vehicle = px4()
         vehicle.feasible = false
         launch(hop())
         stepUntil(FlightState.ARM)
 
-        when: 'NO_MISSION, for as many items'
-        vehicle.missionCurrent(3, MISSION_STATE.MISSION_STATE_NO_MISSION)
+        when: 'the earlier flight\'s COMPLETE, for as many items'
+        vehicle.missionCurrent(3, MISSION_STATE.MISSION_STATE_COMPLETE)
         runTo(2)
 
         then:
         vehicle.commands.empty
 
         when:
-        vehicle.missionCurrent(3, state)
+        vehicle.missionCurrent(3, MISSION_STATE.MISSION_STATE_ACTIVE)
         runTo(3)
 
         then:
         vehicle.commands*.text == ['ARM', 'DO_SET_MODE AUTO.MISSION', 'MISSION_START']
-        vehicle.commands[2].params[0] == 0f
-
-        where:
-        state << [MISSION_STATE.MISSION_STATE_ACTIVE, MISSION_STATE.MISSION_STATE_COMPLETE]
     }
 
     def "between the upload and its check PX4 counts the new items with no current one and the earlier state: neither checked nor progress"() {
