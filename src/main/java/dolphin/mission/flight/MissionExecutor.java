@@ -219,11 +219,6 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         boolean triggersCamera() {
             return items.stream().anyMatch(i -> i.command() == MAV_CMD.MAV_CMD_DO_SET_CAM_TRIGG_DIST && i.param1() > 0);
         }
-
-        /** Whether a MISSION_CURRENT's seq, in the runtime's numbering, names an item of this plan. */
-        boolean holds(int seq) {
-            return seq >= 0 && seq < items.size();
-        }
     }
 
     /**
@@ -610,17 +605,14 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         }
 
         /**
-         * The vehicle holds the uploaded mission and found it feasible: all its items, one of them current, and a state a
-         * valid mission has (NOT_STARTED; ACTIVE or PAUSED when PX4 is still in AUTO.MISSION after an earlier flight). An
-         * infeasible one is NO_MISSION; COMPLETE is the earlier mission's, which a new one clears. Between the upload and
-         * its navigator's check PX4 counts the new items with no current one (seq 65535) and the earlier mission's state
-         * (MavlinkMissionManager::update_active_mission).
+         * The vehicle holds the uploaded mission and found it feasible: all its items, and a state a valid mission has
+         * (NOT_STARTED; ACTIVE or PAUSED when PX4 is still in AUTO.MISSION after an earlier flight). An infeasible one
+         * is NO_MISSION; COMPLETE is the earlier mission's, which a new one clears.
          */
         private boolean missionChecked(VehicleState s) {
             int state = s.missionState();
-            return s.missionTotal() == plan.items().size() - 1 && plan.holds(s.missionSeq())
-                    && (state == MISSION_STATE.MISSION_STATE_NOT_STARTED || state == MISSION_STATE.MISSION_STATE_ACTIVE
-                    || state == MISSION_STATE.MISSION_STATE_PAUSED);
+            return s.missionTotal() == plan.items().size() - 1 && (state == MISSION_STATE.MISSION_STATE_NOT_STARTED
+                    || state == MISSION_STATE.MISSION_STATE_ACTIVE || state == MISSION_STATE.MISSION_STATE_PAUSED);
         }
 
         private CommandResult answer() {
@@ -741,7 +733,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 return CompletionState.IN_PROGRESS;
             }
             int r = reached.get();
-            if (active && s.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE && plan.holds(s.missionSeq())) {
+            if (active && s.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE) {
                 r = Math.max(r, s.missionSeq() - 1);
             }
             if (r > reported) {

@@ -131,33 +131,6 @@ class Px4FlightSpec extends MissionFlights {
         vehicle.commands*.text == ['ARM', 'DO_SET_MODE AUTO.MISSION', 'MISSION_START']
     }
 
-    def "between the upload and its check PX4 counts the new items with no current one and the earlier state: neither checked nor progress"() {
-        given:
-        vehicle = px4()
-        vehicle.feasible = false
-        launch(hop())
-        stepUntil(FlightState.ARM)
-
-        when: 'seq 65535 on the vehicle, the earlier mission PAUSED'
-        vehicle.missionCurrent(65536, MISSION_STATE.MISSION_STATE_PAUSED)
-        runTo(2)
-
-        then:
-        vehicle.commands.empty
-
-        when: 'the check done: the first item current'
-        vehicle.missionCurrent(1, MISSION_STATE.MISSION_STATE_NOT_STARTED)
-        stepUntil(FlightState.RUNNING)
-
-        and: 'the same seq again while the mission is ACTIVE'
-        vehicle.missionCurrent(65536, MISSION_STATE.MISSION_STATE_ACTIVE)
-        runTo(5)
-
-        then:
-        vehicle.commands*.text == ['ARM', 'DO_SET_MODE AUTO.MISSION', 'MISSION_START']
-        !messages.any { it.contains('reached') }
-    }
-
     def "a mission MISSION_CURRENT never says feasible fails after 10 s, unarmed"() {
         given:
         vehicle = px4()
