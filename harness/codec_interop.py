@@ -21,6 +21,9 @@ Tests only: an independent MAVLink implementation to check dolphin.mavlink.codec
       or {"ok": false, "line", "error"} for a line that is not exactly one good frame. With a
       key, unsigned and wrongly signed frames are still decoded (sigOk false).
 
+With DOLPHIN_MAVLINK_DIALECT set to a directory, its ardupilotmega.py (mavgen's Python output) is the
+dialect, as CodecInteropSpec gives the build's; else pymavlink's own.
+
 "fields" are pymavlink's to_dict() values (char arrays as strings, arrays as lists), except that
 non-finite floats, which JSON cannot carry, are the strings "NaN", "Infinity" and "-Infinity".
 Floats are float32 values, printed exactly (Python's shortest repr of the double, -0.0 included).
@@ -36,7 +39,13 @@ import sys
 
 os.environ["MAVLINK20"] = "1"
 
-from pymavlink.dialects.v20 import ardupilotmega as mavlink  # noqa: E402
+# The definitions the runtime's bindings are generated from (harness/generate-bindings.sh: pymavlink's
+# with MAVLink's plan-id fields), when their Python module's directory is given; else pymavlink's own.
+if os.environ.get("DOLPHIN_MAVLINK_DIALECT"):
+    sys.path.insert(0, os.environ["DOLPHIN_MAVLINK_DIALECT"])
+    import ardupilotmega as mavlink  # noqa: E402
+else:
+    from pymavlink.dialects.v20 import ardupilotmega as mavlink  # noqa: E402
 
 MESSAGES = [
     "HEARTBEAT", "SYS_STATUS", "GLOBAL_POSITION_INT", "STATUSTEXT", "COMMAND_LONG", "COMMAND_ACK",

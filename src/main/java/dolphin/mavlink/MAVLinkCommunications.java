@@ -644,7 +644,7 @@ public final class MAVLinkCommunications implements AutoCloseable {
         handler.on(msg_home_position.class, (n, m) -> changed(n, s -> s.withHome(
                 Position.fromDegrees(m.latitude * 1e-7, m.longitude * 1e-7, m.altitude * 1e-3))));
         handler.on(msg_extended_sys_state.class, (n, m) -> changed(n, s -> s.withExtendedState(m.landed_state, m.vtol_state)));
-        handler.on(msg_mission_current.class, (n, m) -> changed(n, s -> s.withMissionCurrent(m.seq, m.total, m.mission_state)));
+        handler.on(msg_mission_current.class, (n, m) -> changed(n, s -> s.withMissionCurrent(m.seq, m.total, m.mission_state, m.mission_id)));
         handler.on(msg_ekf_status_report.class, (n, m) -> changed(n, s -> s.withEkfFlags(m.flags)));
         handler.on(msg_fence_status.class, (n, m) -> changed(n, s -> s.withFenceBreached(m.breach_status != 0)));
         handler.on(msg_autopilot_version.class, (n, m) -> {

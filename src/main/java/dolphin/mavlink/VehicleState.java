@@ -25,9 +25,12 @@ import java.util.List;
  * @param landedState MAV_LANDED_STATE from EXTENDED_SYS_STATE (0 = undefined)
  * @param vtolState MAV_VTOL_STATE from EXTENDED_SYS_STATE: how a QuadPlane flies (0 = undefined: not a VTOL)
  * @param missionSeq the current mission item (MISSION_CURRENT.seq) numbered as the runtime numbers items, home 0
- *        and the first item 1 ({@link Autopilot#missionSeq}), -1 before the first
+ *        and the first item 1 ({@link Autopilot#missionSeq}), -1 before the first and while the vehicle names none
+ *        (UINT16_MAX: PX4 between taking a new mission and its navigator's first word on it)
  * @param missionTotal MISSION_CURRENT.total (items excluding home), 0 when the vehicle has no mission, -1 when unknown
  * @param missionState MISSION_CURRENT.mission_state (MISSION_STATE), 0 when unknown
+ * @param missionId MISSION_CURRENT.mission_id, the vehicle's id of the mission it holds (PX4: its CRC32, as in the
+ *        upload's final MISSION_ACK), 0 when the vehicle gives none
  * @param statusTexts the last STATUSTEXT lines, oldest first
  * @param ekfFlags EKF_STATUS_REPORT.flags (ArduPilot's EKF_STATUS_FLAGS), -1 before the first
  * @param fenceBreached FENCE_STATUS.breach_status: the vehicle is outside its fence; false before the first
@@ -38,7 +41,7 @@ import java.util.List;
 public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Autopilot autopilot, VehicleFamily family,
                            msg_sys_status systemStatus, long systemStatusNanos,
                            Position position, double relativeAlt, double heading, long positionNanos, Position home,
-                           int landedState, int vtolState, int missionSeq, int missionTotal, int missionState,
+                           int landedState, int vtolState, int missionSeq, int missionTotal, int missionState, long missionId,
                            List<String> statusTexts, int ekfFlags, boolean fenceBreached, long bootMillis, int reboots) {
 
     public static final int STATUS_LINES = 20;
@@ -51,6 +54,8 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Autopil
 
     /** MISSION_CURRENT.total of a vehicle that holds no mission. */
     private static final int NO_MISSION = 65535;
+    /** MISSION_CURRENT.seq of a vehicle that names no current item. */
+    private static final int NO_ITEM = 65535;
 
     /** Before an ArduPilot vehicle's first message. */
     public static VehicleState initial(VehicleFamily family) {
@@ -58,7 +63,7 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Autopil
     }
 
     public static VehicleState initial(Autopilot autopilot, VehicleFamily family) {
-        return new VehicleState(null, 0, autopilot, family, null, 0, null, 0, Double.NaN, 0, null, 0, 0, -1, -1, 0, List.of(), -1, false, -1, 0);
+        return new VehicleState(null, 0, autopilot, family, null, 0, null, 0, Double.NaN, 0, null, 0, 0, -1, -1, 0, 0, List.of(), -1, false, -1, 0);
     }
 
     public boolean armed() {
@@ -110,45 +115,51 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Autopil
 
     public VehicleState withHeartbeat(msg_heartbeat hb, long nanos) {
         return new VehicleState(hb, nanos, autopilot, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
+                heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, missionId, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     public VehicleState withSystemStatus(msg_sys_status s, long nanos) {
         return new VehicleState(heartbeat, heartbeatNanos, autopilot, family, s, nanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
+                heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, missionId, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     public VehicleState withPosition(Position p, double relAlt, double hdg, long nanos) {
         return new VehicleState(heartbeat, heartbeatNanos, autopilot, family, systemStatus, systemStatusNanos, p, relAlt, hdg,
-                nanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
+                nanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, missionId, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     public VehicleState withHome(Position h) {
         return new VehicleState(heartbeat, heartbeatNanos, autopilot, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, h, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
+                heading, positionNanos, h, landedState, vtolState, missionSeq, missionTotal, missionState, missionId, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     /** EXTENDED_SYS_STATE: the landed state, and the VTOL state, which tells a QuadPlane from a plane. */
     public VehicleState withExtendedState(int landed, int vtol) {
         return new VehicleState(heartbeat, heartbeatNanos, autopilot, autopilot.tellsVtolByState() ? family.withVtolState(vtol) : family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landed, vtol, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
+                heading, positionNanos, home, landed, vtol, missionSeq, missionTotal, missionState, missionId, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     /** MISSION_CURRENT as the vehicle sent it: its seq is numbered the runtime's way here. */
-    public VehicleState withMissionCurrent(int seq, int total, int state) {
+    public VehicleState withMissionCurrent(int seq, int total, int state, long id) {
         return new VehicleState(heartbeat, heartbeatNanos, autopilot, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, vtolState, autopilot.missionSeq(seq), total == NO_MISSION ? 0 : total, state, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
+                heading, positionNanos, home, landedState, vtolState, seq == NO_ITEM ? -1 : autopilot.missionSeq(seq),
+                total == NO_MISSION ? 0 : total, state, id, statusTexts, ekfFlags, fenceBreached, bootMillis, reboots);
+    }
+
+    /** MISSION_CURRENT without the mission's id (older firmware, ArduPilot). */
+    public VehicleState withMissionCurrent(int seq, int total, int state) {
+        return withMissionCurrent(seq, total, state, 0);
     }
 
     public VehicleState withEkfFlags(int flags) {
         return new VehicleState(heartbeat, heartbeatNanos, autopilot, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, flags, fenceBreached, bootMillis, reboots);
+                heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, missionId, statusTexts, flags, fenceBreached, bootMillis, reboots);
     }
 
     /** From FENCE_STATUS.breach_status. */
     public VehicleState withFenceBreached(boolean breached) {
         return new VehicleState(heartbeat, heartbeatNanos, autopilot, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags, breached, bootMillis, reboots);
+                heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, missionId, statusTexts, ekfFlags, breached, bootMillis, reboots);
     }
 
     public VehicleState withStatusText(String line) {
@@ -158,14 +169,14 @@ public record VehicleState(msg_heartbeat heartbeat, long heartbeatNanos, Autopil
             lines.remove(0);
         }
         return new VehicleState(heartbeat, heartbeatNanos, autopilot, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, List.copyOf(lines), ekfFlags, fenceBreached, bootMillis, reboots);
+                heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, missionId, List.copyOf(lines), ekfFlags, fenceBreached, bootMillis, reboots);
     }
 
     /** The vehicle's time since boot; going back by more than {@link #REBOOT_STEP_MILLIS} counts a reboot. */
     public VehicleState withBootTime(long millis) {
         int r = bootMillis >= 0 && millis + REBOOT_STEP_MILLIS < bootMillis ? reboots + 1 : reboots;
         return new VehicleState(heartbeat, heartbeatNanos, autopilot, family, systemStatus, systemStatusNanos, position, relativeAlt,
-                heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, statusTexts, ekfFlags,
+                heading, positionNanos, home, landedState, vtolState, missionSeq, missionTotal, missionState, missionId, statusTexts, ekfFlags,
                 fenceBreached, millis, r);
     }
 }

@@ -36,6 +36,14 @@ interface ItemStore {
         return Optional.empty();
     }
 
+    /**
+     * The list's id, which MISSION_ACK and MISSION_COUNT carry (opaque_id) and MISSION_CURRENT names; 0 when the
+     * autopilot gives none (ArduPilot).
+     */
+    default long planId() {
+        return 0;
+    }
+
     /** The MAV_MISSION_RESULT once the last item arrived: the list as a whole. */
     int complete();
 

@@ -89,6 +89,8 @@ final class MissionFlight {
     private final MissionCursor cursor;
     /** Whether the stored mission passed the autopilot's check of it (PX4's feasibility check). */
     private boolean feasible = true;
+    /** The stored mission's id, which MISSION_CURRENT names (SimAutopilot.planId). */
+    private long missionId;
     private boolean autoArmed;
     private boolean restartDue;
     private double groundSeconds;
@@ -118,8 +120,8 @@ final class MissionFlight {
     // a CONDITION_DELAY running beside the nav item
     private int conditionSeq = -1;
     private double conditionLeft;
-    /** The last MISSION_CURRENT sent (seq/total/state): a change goes out at the end of the tick. */
-    private String lastCurrent = "0/0/" + MISSION_STATE.MISSION_STATE_NO_MISSION;
+    /** The last MISSION_CURRENT sent (seq/total/state/id): a change goes out at the end of the tick. */
+    private String lastCurrent = "0/0/" + MISSION_STATE.MISSION_STATE_NO_MISSION + "/0";
     /** MISSION_CURRENT asked for (MSG_CURRENT_WAYPOINT), sent at the end of the tick even if unchanged. */
     private boolean currentDue;
 
@@ -318,6 +320,7 @@ final class MissionFlight {
      * restarts a new mission (PX4) does so unless it flies one.
      */
     void missionChanged() {
+        missionId = autopilot.planId(store.items());
         feasible = autopilot.feasible(store.items(), firmware);
         OptionalInt outside = autopilot.outsideFence(store.items(), body.fence());
         if (outside.isPresent()) {
@@ -427,12 +430,12 @@ final class MissionFlight {
 
     private MAVLinkMessage missionCurrent(int seq) {
         boolean paused = cursor.run() == MissionCursor.MissionRun.STOPPED && cursor.nav() > 0;
-        return autopilot.missionCurrent(seq, store.count(), state(), paused, body.mode() == firmware.autoMode());
+        return autopilot.missionCurrent(seq, store.count(), state(), paused, body.mode() == firmware.autoMode(), missionId);
     }
 
     private void announceCurrent(boolean always) {
         msg_mission_current c = (msg_mission_current) missionCurrent();
-        String key = c.seq + "/" + c.total + "/" + c.mission_state;
+        String key = c.seq + "/" + c.total + "/" + c.mission_state + "/" + c.mission_id;
         if (always || !key.equals(lastCurrent)) {
             lastCurrent = key;
             body.send(c);

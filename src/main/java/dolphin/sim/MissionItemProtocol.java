@@ -60,6 +60,8 @@ final class MissionItemProtocol {
     private long lastItem;
     private long lastRequest;
     private boolean floatWarned;
+    /** The list's id when the upload began: an autopilot with ids (PX4) takes a list again only when it changed. */
+    private long idBefore;
 
     MissionItemProtocol(ItemStore store, Host host, TransferRules rules) {
         this.store = store;
@@ -91,6 +93,7 @@ final class MissionItemProtocol {
             completed = -1;
             msg_mission_count c = new msg_mission_count();
             c.count = store.count();
+            c.opaque_id = store.planId();
             c.mission_type = (short) type.wire();
             c.target_system = (short) r.sysid;
             c.target_component = (short) r.compid;
@@ -140,6 +143,7 @@ final class MissionItemProtocol {
             return;
         }
         uploading = false;
+        idBefore = store.planId();
         if (c.count > store.capacity()) {
             ack(c.sysid, c.compid, MAV_MISSION_RESULT.MAV_MISSION_NO_SPACE);
             return;
@@ -200,10 +204,14 @@ final class MissionItemProtocol {
         }
         uploading = false;
         result = store.complete();
-        completed = result == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED ? expected : -1;
-        ack(sys, comp, result);
+        boolean accepted = result == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
+        completed = accepted ? expected : -1;
+        ack(sys, comp, result, type.wire(), accepted ? store.planId() : 0);
         store.receivedText().ifPresent(t -> host.text(MAV_SEVERITY.MAV_SEVERITY_INFO, t));
-        host.changed(type);
+        // PX4 takes the list only when its CRC changed (MavlinkMissionManager): the same mission again stays as it was
+        if (!accepted || store.planId() == 0 || store.planId() != idBefore) {
+            host.changed(type);
+        }
     }
 
     private void clear(msg_mission_clear_all c) {
@@ -259,8 +267,13 @@ final class MissionItemProtocol {
     }
 
     private void ack(int sys, int comp, int result, int missionType) {
+        ack(sys, comp, result, missionType, 0);
+    }
+
+    private void ack(int sys, int comp, int result, int missionType, long planId) {
         msg_mission_ack a = new msg_mission_ack();
         a.type = (short) result;
+        a.opaque_id = planId;
         a.mission_type = (short) missionType;
         a.target_system = (short) sys;
         a.target_component = (short) comp;

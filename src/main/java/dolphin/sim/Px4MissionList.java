@@ -4,6 +4,9 @@ import com.MAVLink.enums.MAV_CMD;
 import com.MAVLink.enums.MAV_MISSION_RESULT;
 import dolphin.mission.model.MissionItem;
 import dolphin.mission.model.MissionType;
+import java.nio.ByteBuffer;
+import java.util.List;
+import java.util.zip.CRC32;
 
 /**
  * A PX4 vehicle's mission as its mission protocol transfers it: no home item, the first item is seq 0
@@ -58,6 +61,28 @@ final class Px4MissionList implements ItemStore {
     @Override
     public int complete() {
         return MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
+    }
+
+    /** PX4's CRC32 of the mission (MavlinkMissionManager::crc32_for_mission_item), here over what it keeps of each item. */
+    @Override
+    public long planId() {
+        return planId(store.items());
+    }
+
+    /** The id of a stored mission, home first: 0 without items, as PX4's; its MISSION_CURRENT names it too. */
+    static long planId(List<MissionItem> stored) {
+        if (stored.size() <= 1) {
+            return 0;
+        }
+        CRC32 crc = new CRC32();
+        ByteBuffer b = ByteBuffer.allocate(48);
+        for (MissionItem i : stored.subList(1, stored.size())) {
+            b.clear();
+            b.putInt(i.command()).putInt(i.frame()).putFloat(i.param1()).putFloat(i.param2()).putFloat(i.param3())
+                    .putFloat(i.param4()).putInt(i.x()).putInt(i.y()).putFloat(i.z()).put((byte) (i.autocontinue() ? 1 : 0));
+            crc.update(b.array(), 0, b.position());
+        }
+        return crc.getValue();
     }
 
     @Override

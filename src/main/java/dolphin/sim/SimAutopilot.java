@@ -44,7 +44,7 @@ enum SimAutopilot {
 
         /** GCS_MAVLINK::send_mission_current: total excludes home; mission_mode 1 in AUTO, else 0. */
         @Override
-        msg_mission_current missionCurrent(int seq, int stored, int state, boolean paused, boolean inAuto) {
+        msg_mission_current missionCurrent(int seq, int stored, int state, boolean paused, boolean inAuto, long id) {
             msg_mission_current c = new msg_mission_current();
             c.seq = seq;
             c.total = Math.max(0, stored - 1);
@@ -102,14 +102,15 @@ enum SimAutopilot {
         /**
          * MavlinkMissionManager::send_mission_current: seq without home; total the items, 65535 without a
          * mission (an infeasible one has its total, NO_MISSION); a mission left in the middle is PAUSED;
-         * mission_mode 1 in AUTO.MISSION, else 2.
+         * mission_mode 1 in AUTO.MISSION, else 2; mission_id the mission's CRC32, as its upload's MISSION_ACK.
          */
         @Override
-        msg_mission_current missionCurrent(int seq, int stored, int state, boolean paused, boolean inAuto) {
+        msg_mission_current missionCurrent(int seq, int stored, int state, boolean paused, boolean inAuto, long id) {
             msg_mission_current c = new msg_mission_current();
             boolean none = stored <= 1;
             c.seq = none ? 0 : Math.max(0, seq - 1);
             c.total = none ? 65535 : stored - 1;
+            c.mission_id = id;
             c.mission_state = (short) (paused && state == MISSION_STATE.MISSION_STATE_NOT_STARTED
                     ? MISSION_STATE.MISSION_STATE_PAUSED : state);
             c.mission_mode = (short) (inAuto ? 1 : 2);
@@ -125,6 +126,11 @@ enum SimAutopilot {
         @Override
         boolean feasible(List<MissionItem> items, Firmware firmware) {
             return Px4MissionCheck.feasible(items, firmware.family());
+        }
+
+        @Override
+        long planId(List<MissionItem> stored) {
+            return Px4MissionList.planId(stored);
         }
 
         /** FeasibilityChecker: "Geofence violation for waypoint N", N its seq on PX4 plus one (the runtime's seq). */
@@ -228,9 +234,15 @@ enum SimAutopilot {
 
     /**
      * MISSION_CURRENT of nav item {@code seq} as stored, {@code stored} items with home, {@code state} a
-     * MISSION_STATE, {@code paused} when the mission stopped after it had begun.
+     * MISSION_STATE, {@code paused} when the mission stopped after it had begun, {@code id} the mission's
+     * ({@link #planId}).
      */
-    abstract msg_mission_current missionCurrent(int seq, int stored, int state, boolean paused, boolean inAuto);
+    abstract msg_mission_current missionCurrent(int seq, int stored, int state, boolean paused, boolean inAuto, long id);
+
+    /** The id of a stored mission (home first) that MISSION_CURRENT names: 0, none, unless the autopilot has them. */
+    long planId(List<MissionItem> stored) {
+        return 0;
+    }
 
     /** Whether STATUSTEXT goes out before a ground station's heartbeat was heard. */
     abstract boolean textsBeforeGcs();

@@ -58,8 +58,8 @@ class TelemetryBudgetSpec extends Specification {
             assert !plan.fits() || plan.bytesPerSecond() <= 0.5 * 5760
         }
 
-        and: 'five vehicles slow the home position to its slowest, then the EKF report'
-        TelemetryBudget.plan(4, 5, 5760).slowedText(4) == 'HOME_POSITION 0.1 Hz, EKF_STATUS_REPORT 0.25 Hz'
+        and: 'five vehicles slow the home position and the EKF report to their slowest, then the extended state and the battery'
+        TelemetryBudget.plan(4, 5, 5760).slowedText(4) == 'HOME_POSITION 0.1 Hz, EKF_STATUS_REPORT 0.2 Hz, EXTENDED_SYS_STATE 0.5 Hz, BATTERY_STATUS 0.5 Hz'
 
         and: 'forty cannot fit even at the slowest rates: position at 1 Hz, SYS_STATUS at 0.5 Hz, and it says so'
         with(TelemetryBudget.plan(4, 40, 5760)) {

@@ -296,6 +296,48 @@ class Px4SimVehicleSpec extends Specification {
         with(current(d)) { mission_state == MISSION_STATE.MISSION_STATE_COMPLETE && seq == 3 }
     }
 
+    def "a mission has an id (MISSION_ACK, MISSION_COUNT, MISSION_CURRENT); the same mission again is not taken again, COMPLETE stays and MISSION_START flies it again"() {
+        given: 'the survey flown to the end'
+        def d = px4()
+        int from = d.mark()
+        d.upload(survey())
+        long id = d.since(from, msg_mission_ack).last().opaque_id
+        d.command(MAV_CMD.MAV_CMD_MISSION_START, [0, 0])
+        d.runUntil(180, 'the disarm') { !d.vehicle.armed() }
+
+        when: 'the same survey again'
+        from = d.mark()
+        d.upload(survey())
+
+        then:
+        id != 0
+        d.since(from, msg_mission_ack).last().opaque_id == id
+        with(current(d)) { mission_state == MISSION_STATE.MISSION_STATE_COMPLETE && mission_id == id && seq == 3 }
+
+        when:
+        d.handle(new msg_mission_request_list(target_system: 1, target_component: 1))
+
+        then:
+        d.since(from, msg_mission_count).last().opaque_id == id
+
+        when:
+        d.command(MAV_CMD.MAV_CMD_MISSION_START, [0, 0])
+        d.runUntil(60, 'the take-off again') { d.vehicle.position().hae() > HOME.hae() + 5 }
+
+        then:
+        d.vehicle.missionState() == MISSION_STATE.MISSION_STATE_ACTIVE
+
+        when: 'another mission, landed'
+        d.runUntil(180, 'the disarm') { !d.vehicle.armed() }
+        from = d.mark()
+        d.upload(survey().take(3) + [rel(3, MAV_CMD.MAV_CMD_NAV_LAND, 30, 0, 0, 7)])
+        long other = d.since(from, msg_mission_ack).last().opaque_id
+
+        then:
+        other != 0 && other != id
+        with(current(d)) { mission_state == MISSION_STATE.MISSION_STATE_NOT_STARTED && mission_id == other && seq == 0 }
+    }
+
     def "REQUEST_MESSAGE of a message it does not send is DENIED, as its SITL denied a camera's and a gimbal's information; what it sends is ACCEPTED"() {
         given:
         def d = px4()

@@ -12,6 +12,7 @@ import dolphin.core.PlatformTaskExecutor;
 import dolphin.core.Position;
 import dolphin.core.VehicleEvent.EventKind;
 import dolphin.mavlink.CommandResult;
+import dolphin.mavlink.EnumNames;
 import dolphin.mavlink.StatusText;
 import dolphin.mavlink.Autopilot;
 import dolphin.mavlink.VehicleState;
@@ -73,6 +74,9 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     private volatile FlightState state = FlightState.PREPARE;
     /** When the mission's upload began: a vehicle that checks the mission may refuse it from then on. */
     private long missionUploadBegan;
+    /** The mission id the vehicle named when the upload began, and the one its upload gave (FeasibilityWatch); 0: none. */
+    private long missionIdBefore;
+    private long missionIdUploaded;
     private String failure;
 
     /** @param vehicles the mission side of the vehicle the executor is given; null when it has none */
@@ -443,6 +447,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                     + next.getValue().size() + (next.getValue().size() == 1 ? " item" : " items"));
             if (next.getKey() == MissionType.MISSION) {
                 missionUploadBegan = clock().nanoTime();
+                missionIdBefore = vehicle.state().missionId();
+                missionIdUploaded = 0;
             }
             pending = watch(vehicle.upload(next.getKey(), next.getValue()));
         }
@@ -460,6 +466,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             if (!r.success() && !config.verify()) {
                 return fail(r.error());
             }
+            noteMissionId(lists.peek().getKey(), r);
             if (r.success() && r.verified()) {
                 // the transfer read the list back itself (FTP, or a download that settled a lost ACK)
                 MissionType type = lists.peek().getKey();
@@ -510,11 +517,19 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 return fail(uploadError != null ? uploadError
                         : "the vehicle holds another " + type.label() + " than the one uploaded: " + difference.get());
             }
+            noteMissionId(type, r);
             String what = type == MissionType.MISSION ? "upload" : type.label();
             progress(uploadError != null ? what + " verified by download (" + uploadError + ")"
                     : what + " verified" + (uploadNote.isEmpty() ? "" : " (" + uploadNote + ")"));
             nextList(lists, plan);
             return CompletionState.IN_PROGRESS;
+        }
+    }
+
+    /** The id a transfer of the mission gave, if any: its upload's final ACK, or its verifying download's count. */
+    private void noteMissionId(MissionType type, TransferResult r) {
+        if (type == MissionType.MISSION && r.success() && r.planId() != 0) {
+            missionIdUploaded = r.planId();
         }
     }
 
@@ -533,6 +548,9 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         private final CommandSteps commands = commandSteps(what -> { });
         private final CommandSteps before = commandSteps(what -> { });
         private final long deadlineOfCheck;
+        private final FeasibilityWatch feasibility;
+        /** When the vehicle's MISSION_CURRENT first said it found the mission infeasible; -1 before. */
+        private long infeasibleAt = -1;
         private boolean armModeSet;
         private CompletableFuture<CommandResult> pending;
         private long nextAttempt;
@@ -542,6 +560,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             this.plan = plan;
             nextAttempt = clock().nanoTime();
             deadlineOfCheck = nextAttempt + MISSION_CHECK_WAIT.toNanos();
+            feasibility = new FeasibilityWatch(plan.items().size() - 1, missionIdBefore, missionIdUploaded);
             if (armsInAuto()) {
                 before.add(firstItemCurrent());
             }
@@ -557,14 +576,11 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             if (!before.run(now)) {
                 return before.failure() != null ? fail(before.failure()) : CompletionState.IN_PROGRESS;
             }
-            if (rules.checksMissionAfterUpload() && !missionChecked(vehicle.state())) {
-                var refused = words.firstSevere(missionUploadBegan);
-                if (refused.isPresent()) {
-                    return fail("vehicle " + vehicle.vehicleId() + " found the mission infeasible: '" + refused.get().text() + "'");
+            if (rules.checksMissionAfterUpload()) {
+                CompletionState checking = missionCheck(vehicle.state(), now);
+                if (checking != null) {
+                    return checking;
                 }
-                return now < deadlineOfCheck ? CompletionState.IN_PROGRESS : fail("vehicle "
-                        + vehicle.vehicleId() + " did not find the mission feasible within " + MISSION_CHECK_WAIT.toSeconds()
-                        + " s: MISSION_CURRENT still says no mission");
             }
             var armMode = rules.armMode();
             if (armMode.isPresent() && !armModeSet) {
@@ -605,14 +621,54 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         }
 
         /**
-         * The vehicle holds the uploaded mission and found it feasible: all its items, and a state a valid mission has
-         * (NOT_STARTED; ACTIVE or PAUSED when PX4 is still in AUTO.MISSION after an earlier flight). An infeasible one
-         * is NO_MISSION; COMPLETE is the earlier mission's, which a new one clears.
+         * Null once the vehicle found the mission feasible ({@link FeasibilityWatch}); else the stage's state while
+         * it has not said, or its failure. The vehicle's reasons are what it said since the upload began, awaited
+         * a little after its verdict. A vehicle that does not name its missions cannot tell its verdict on this one
+         * from the earlier one's: a severe text is then taken as its refusal.
          */
-        private boolean missionChecked(VehicleState s) {
-            int state = s.missionState();
-            return s.missionTotal() == plan.items().size() - 1 && (state == MISSION_STATE.MISSION_STATE_NOT_STARTED
-                    || state == MISSION_STATE.MISSION_STATE_ACTIVE || state == MISSION_STATE.MISSION_STATE_PAUSED);
+        private CompletionState missionCheck(VehicleState s, long now) {
+            String refused = "vehicle " + vehicle.vehicleId() + " found the mission infeasible";
+            switch (feasibility.verdict(s)) {
+                case FEASIBLE -> {
+                    return null;
+                }
+                case INFEASIBLE -> {
+                    infeasibleAt = infeasibleAt < 0 ? now : infeasibleAt;
+                    String said = words.quoteSince(missionUploadBegan, now);
+                    if (!said.isEmpty()) {
+                        return fail(refused + ": " + said);
+                    }
+                    if (!feasibility.unchanged() && now - infeasibleAt < VehicleWords.WAIT_NANOS) {
+                        return CompletionState.IN_PROGRESS;
+                    }
+                    return fail(refused + (feasibility.unchanged()
+                            ? " when it was given it before: it holds this same mission, and does not check it again"
+                            : " (MISSION_CURRENT: no mission) and said nothing of why"));
+                }
+                default -> {
+                    var severe = words.firstSevere(missionUploadBegan);
+                    if (severe.isPresent() && !feasibility.namesMissions(s)) {
+                        return fail(refused + ": '" + severe.get().text() + "'");
+                    }
+                    return now < deadlineOfCheck ? CompletionState.IN_PROGRESS : fail("vehicle " + vehicle.vehicleId()
+                            + " did not find the mission feasible within " + MISSION_CHECK_WAIT.toSeconds() + " s: "
+                            + missionCurrentSays(s));
+                }
+            }
+        }
+
+        /** What MISSION_CURRENT says when the vehicle's verdict did not come. */
+        private String missionCurrentSays(VehicleState s) {
+            if (s.missionTotal() != plan.items().size() - 1) {
+                return "MISSION_CURRENT counts " + s.missionTotal() + " items, not the mission's " + (plan.items().size() - 1);
+            }
+            if (feasibility.namesMissions(s) && s.missionSeq() < 0) {
+                return "MISSION_CURRENT still names no current item: the vehicle has not checked the mission";
+            }
+            String said = words.quoteSince(missionUploadBegan, clock().nanoTime());
+            String state = s.missionState() == MISSION_STATE.MISSION_STATE_NO_MISSION ? "no mission"
+                    : EnumNames.name(MISSION_STATE.class, "MISSION_STATE_", s.missionState());
+            return "MISSION_CURRENT still says " + state + (said.isEmpty() ? "" : "; the vehicle said " + said);
         }
 
         private CommandResult answer() {

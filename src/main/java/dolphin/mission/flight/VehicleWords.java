@@ -72,8 +72,16 @@ final class VehicleWords {
      * ("'EKF variance', 'EKF Failsafe: changed to Land Mode'"); empty when there were none.
      */
     synchronized String quote(long sign, long now) {
-        return around(sign, now).stream().filter(Said::warning).map(s -> "'" + s.text() + "'").distinct()
-                .collect(Collectors.joining(", "));
+        return quoted(around(sign, now));
+    }
+
+    /** The warnings and worse said from {@code since} up to {@code now}, quoted and joined as {@link #quote}. */
+    synchronized String quoteSince(long since, long now) {
+        return quoted(said.stream().filter(s -> s.at() >= since && s.at() <= now).toList());
+    }
+
+    private static String quoted(List<Said> texts) {
+        return texts.stream().filter(Said::warning).map(s -> "'" + s.text() + "'").distinct().collect(Collectors.joining(", "));
     }
 
     private List<Said> around(long sign, long now) {

@@ -53,9 +53,8 @@ public final class MissionDownloadProtocol {
         if (AutopilotLists.offset(vehicle.autopilot(), type) == 0) {
             return d.result;
         }
-        return d.result.thenApply(r -> !r.success() ? r : new TransferResult(true, null,
-                AutopilotLists.fromVehicle(vehicle.autopilot(), type, r.items(), vehicle.home()), r.resends(), r.ignoredAcks(),
-                r.verified(), r.note()));
+        return d.result.thenApply(r -> !r.success() ? r
+                : r.withItems(AutopilotLists.fromVehicle(vehicle.autopilot(), type, r.items(), vehicle.home())));
     }
 
     /** A float MISSION_ITEM as an item: latitude and longitude to degE7 in global frames. */
@@ -182,6 +181,7 @@ public final class MissionDownloadProtocol {
                     }
                     advanced();
                     count = c.count;
+                    planId = c.opaque_id;
                     got = new MissionItem[count];
                     sends = new int[count];
                     sentAt = new long[count];

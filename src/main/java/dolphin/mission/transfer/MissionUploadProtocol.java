@@ -222,7 +222,7 @@ public final class MissionUploadProtocol {
             } else if (message instanceof msg_mission_request_int r) {
                 request(r.seq);
             } else if (message instanceof msg_mission_ack a) {
-                ack(a.type);
+                ack(a);
             }
         }
 
@@ -258,9 +258,11 @@ public final class MissionUploadProtocol {
             arm(this::itemTimedOut);
         }
 
-        private void ack(int result) {
+        private void ack(msg_mission_ack a) {
+            int result = a.type;
             int last = items.size() - 1;
             if (result == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED) {
+                planId = a.opaque_id;
                 if (items.isEmpty()) {
                     if (countSends == 1) {
                         cleanSample(countAt);
@@ -327,6 +329,7 @@ public final class MissionUploadProtocol {
                 fail(unsettled + "; read back, " + difference.get());
             } else {
                 report(items.size(), items.size());
+                planId = back.planId();
                 succeedVerified(items, "the final ACK was lost; the vehicle holds the whole " + type.label() + ", read back");
             }
         }

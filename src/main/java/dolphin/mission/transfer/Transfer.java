@@ -25,6 +25,8 @@ abstract class Transfer {
     final MissionType type;
     final CompletableFuture<TransferResult> result = new CompletableFuture<>();
     int resends;
+    /** The vehicle's id of the list, from its MISSION_ACK or MISSION_COUNT (TransferResult.planId). */
+    long planId;
     int ignoredAcks;
     private int timerGeneration;
     private int backoffs;           // timeouts in a row without progress
@@ -113,12 +115,12 @@ abstract class Transfer {
     }
 
     final void succeed(List<MissionItem> items) {
-        finish(TransferResult.ok(items, resends, ignoredAcks));
+        finish(TransferResult.ok(items, resends, ignoredAcks).withPlanId(planId));
     }
 
     /** An upload that read its list back and found it equal, with how it went. */
     final void succeedVerified(List<MissionItem> items, String note) {
-        finish(TransferResult.verified(items, resends, ignoredAcks, note));
+        finish(TransferResult.verified(items, resends, ignoredAcks, note).withPlanId(planId));
     }
 
     final void fail(String reason) {

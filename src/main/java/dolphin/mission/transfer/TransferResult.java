@@ -15,13 +15,20 @@ import java.util.List;
  *                 ({@link MissionVerification}): nobody needs to download it again to check
  * @param note how the transfer went when a user may want to know ("over FTP", "the final ACK was
  *             lost; the download shows the whole mission on the vehicle"), or empty
+ * @param planId the vehicle's id of the list it holds after the transfer (MISSION_ACK.opaque_id of an upload,
+ *               MISSION_COUNT.opaque_id of a download: PX4 sends the list's CRC32), 0 when the vehicle gives none
  */
 public record TransferResult(boolean success, String error, List<MissionItem> items, int resends, int ignoredAcks,
-                             boolean verified, String note) {
+                             boolean verified, String note, long planId) {
 
     public TransferResult {
         items = items == null ? List.of() : List.copyOf(items);
         note = note == null ? "" : note;
+    }
+
+    public TransferResult(boolean success, String error, List<MissionItem> items, int resends, int ignoredAcks,
+                          boolean verified, String note) {
+        this(success, error, items, resends, ignoredAcks, verified, note, 0);
     }
 
     public TransferResult(boolean success, String error, List<MissionItem> items, int resends, int ignoredAcks) {
@@ -44,7 +51,17 @@ public record TransferResult(boolean success, String error, List<MissionItem> it
     /** The same result with {@code first} before its note. */
     TransferResult notedFirst(String first) {
         return new TransferResult(success, error, items, resends, ignoredAcks, verified,
-                note.isEmpty() ? first : first + "; " + note);
+                note.isEmpty() ? first : first + "; " + note, planId);
+    }
+
+    /** The same result with the vehicle's id of the list. */
+    TransferResult withPlanId(long id) {
+        return new TransferResult(success, error, items, resends, ignoredAcks, verified, note, id);
+    }
+
+    /** The same result with other items (the same list numbered another way). */
+    TransferResult withItems(List<MissionItem> other) {
+        return new TransferResult(success, error, other, resends, ignoredAcks, verified, note, planId);
     }
 
     /** The items, or an EnvironmentException with the error. */

@@ -47,6 +47,8 @@ class CodecInteropSpec extends Specification {
     static final Path PROJECT = Paths.get('').toAbsolutePath()
     static final Path PYTHON = PROJECT.resolve('.venv/bin/python')
     static final Path SCRIPT = PROJECT.resolve('harness/codec_interop.py')
+    /** The Python module of the definitions the bindings were generated from (harness/generate-bindings.sh). */
+    static final Path DIALECT = PROJECT.resolve('target/generated-sources/mavlink-python')
     static final long TIMEOUT_SECONDS = 120
     static final Class<?> BYTES = new byte[0].getClass()
     static final List<String> PACKAGES = ['minimal', 'standard', 'common', 'ardupilotmega']
@@ -80,7 +82,9 @@ class CodecInteropSpec extends Specification {
             Path stdin = dir.resolve('stdin'), stdout = dir.resolve('stdout'), stderr = dir.resolve('stderr')
             Files.writeString(stdin, input.collect { it + '\n' }.join(''))
             List<String> command = ([PYTHON, SCRIPT] + args).collect { it.toString() }
-            Process p = new ProcessBuilder(command).directory(PROJECT.toFile())
+            ProcessBuilder builder = new ProcessBuilder(command).directory(PROJECT.toFile())
+            builder.environment().put('DOLPHIN_MAVLINK_DIALECT', DIALECT.toString())
+            Process p = builder
                     .redirectInput(stdin.toFile()).redirectOutput(stdout.toFile()).redirectError(stderr.toFile()).start()
             if (!p.waitFor(TIMEOUT_SECONDS, TimeUnit.SECONDS)) {
                 p.destroyForcibly()

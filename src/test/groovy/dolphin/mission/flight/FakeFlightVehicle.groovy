@@ -363,15 +363,45 @@ class FakeFlightVehicle implements MissionVehicle {
 
     /** Whether a PX4 vehicle finds an uploaded mission feasible, and says so in MISSION_CURRENT (NOT_STARTED). */
     boolean feasible = true
+    /**
+     * The id the next mission upload gives (MISSION_ACK.opaque_id), 0 none; with one, MISSION_CURRENT names the
+     * mission at once ({@link #missionId}) with no current item and its earlier state until {@link #checked}.
+     */
+    long uploadId = 0
+    /** The mission id MISSION_CURRENT names, 0 none. */
+    long missionId = 0
 
     /** The oldest waiting upload succeeds: the vehicle holds its items; a PX4 vehicle checks a mission then. */
     void completeUpload(Transfer t = pendingTransfer()) {
         assert t.upload
         stored[t.type] = t.items
-        t.result.complete(new TransferResult(true, null, t.items, 0, 0))
-        if (t.type == MissionType.MISSION && state.autopilot() == Autopilot.PX4) {
-            missionCurrent(1, feasible ? MISSION_STATE.MISSION_STATE_NOT_STARTED : MISSION_STATE.MISSION_STATE_NO_MISSION)
+        boolean mission = t.type == MissionType.MISSION
+        t.result.complete(new TransferResult(true, null, t.items, 0, 0, false, '', mission ? uploadId : 0))
+        if (mission && state.autopilot() == Autopilot.PX4) {
+            if (uploadId == 0) {
+                checked()
+            } else if (uploadId != missionId) {
+                missionId = uploadId
+                uncheckedCurrent()
+            }
         }
+    }
+
+    /** PX4's verdict on the mission it holds, in MISSION_CURRENT: NOT_STARTED at its first item, or NO_MISSION. */
+    void checked() {
+        missionCurrent(1, feasible ? MISSION_STATE.MISSION_STATE_NOT_STARTED : MISSION_STATE.MISSION_STATE_NO_MISSION)
+    }
+
+    /** MISSION_CURRENT of a PX4 vehicle that took a new mission its navigator has not checked: no current item, the earlier state. */
+    void uncheckedCurrent() {
+        int total = (stored[MissionType.MISSION]?.size() ?: 1) - 1
+        state = state.withMissionCurrent(65535, total, state.missionState(), missionId)
+        def m = new msg_mission_current()
+        m.seq = 65535
+        m.total = total
+        m.mission_state = (short) state.missionState()
+        m.mission_id = missionId
+        current?.consume(m)
     }
 
     /** The oldest waiting transfer fails with the error. */
@@ -442,11 +472,12 @@ class FakeFlightVehicle implements MissionVehicle {
     void missionCurrent(int seq, int missionState = MISSION_STATE.MISSION_STATE_ACTIVE) {
         int total = (stored[MissionType.MISSION]?.size() ?: 1) - 1
         int sent = state.autopilot().vehicleSeq(seq)
-        state = state.withMissionCurrent(sent, total, missionState)
+        state = state.withMissionCurrent(sent, total, missionState, missionId)
         def m = new msg_mission_current()
         m.seq = sent
         m.total = total
         m.mission_state = (short) missionState
+        m.mission_id = missionId
         current?.consume(m)
     }
 

@@ -11,6 +11,7 @@ import dolphin.mavlink.VehicleFamily
 import dolphin.mission.dsl.MissionDsl
 import dolphin.mission.flight.MissionExecutor.FlightState
 import dolphin.mission.model.MissionType
+import java.time.Duration
 
 /**
  * How the executor flies a PX4 vehicle (Px4Rules; docs/px4.md): its modes asked for as main and sub
@@ -129,6 +130,107 @@ class Px4FlightSpec extends MissionFlights {
 
         then:
         vehicle.commands*.text == ['ARM', 'DO_SET_MODE AUTO.MISSION', 'MISSION_START']
+    }
+
+    def "a PX4 vehicle that names its missions: neither the earlier flight's COMPLETE under the new id nor a sensor's fault is its verdict; its check is"() {
+        given: 'the vehicle flew mission 0xA; the upload gives 0xB'
+        vehicle = px4()
+        vehicle.state = vehicle.state.withMissionCurrent(2, 3, MISSION_STATE.MISSION_STATE_COMPLETE, 0xA)
+        vehicle.missionId = 0xA
+        vehicle.uploadId = 0xB
+        launch(hop())
+        stepUntil(FlightState.ARM)
+
+        when: 'MISSION_CURRENT names 0xB with no current item and the earlier COMPLETE; a sensor fails'
+        vehicle.text('MAG #0 failed: TIMEOUT!', MAV_SEVERITY.MAV_SEVERITY_CRITICAL)
+        def waiting = runTo(2)
+
+        then:
+        vehicle.state.missionId() == 0xB
+        vehicle.state.missionSeq() == -1
+        waiting.type == CompletionState.Type.IN_PROGRESS
+        vehicle.commands.empty
+
+        when:
+        vehicle.checked()
+        runTo(3)
+
+        then:
+        vehicle.commands*.text == ['ARM', 'DO_SET_MODE AUTO.MISSION', 'MISSION_START']
+    }
+
+    def "a PX4 vehicle given the very mission it flew keeps it COMPLETE: that is its verdict, and MISSION_START from the first item flies it again"() {
+        given:
+        vehicle = px4()
+        vehicle.state = vehicle.state.withMissionCurrent(2, 3, MISSION_STATE.MISSION_STATE_COMPLETE, 0xB)
+        vehicle.missionId = 0xB
+        vehicle.uploadId = 0xB
+
+        when:
+        launch(hop())
+        stepUntil(FlightState.RUNNING)
+
+        then:
+        vehicle.commands*.text == ['ARM', 'DO_SET_MODE AUTO.MISSION', 'MISSION_START']
+        vehicle.commands[2].params[0] == 0f
+    }
+
+    def "a new mission PX4 checks and finds infeasible fails with what the vehicle said since the upload; a word is awaited 2 s, unarmed"() {
+        given:
+        vehicle = px4()
+        vehicle.feasible = false
+        vehicle.uploadId = 0xB
+        vehicle.text('Preflight Fail: an earlier complaint', MAV_SEVERITY.MAV_SEVERITY_CRITICAL)
+        clock.advance(Duration.ofSeconds(1))
+        launch(hop())
+        stepUntil(FlightState.ARM)
+
+        when:
+        vehicle.checked()
+        def waiting = runTo(2.5)
+
+        then:
+        waiting.type == CompletionState.Type.IN_PROGRESS
+        vehicle.commands.empty
+
+        when:
+        vehicle.text('Geofence violation for waypoint 3\t', MAV_SEVERITY.MAV_SEVERITY_CRITICAL)
+        def outcome = runTo(3)
+
+        then:
+        outcome.type == CompletionState.Type.ERROR
+        outcome.message == "mission hop on vehicle 1: vehicle 1 found the mission infeasible: 'Geofence violation for waypoint 3'"
+        vehicle.commands.empty
+    }
+
+    def "refused without a word, a new mission fails 2 s after the verdict; the same mission found infeasible before fails at once"() {
+        given:
+        vehicle = px4()
+        vehicle.feasible = false
+        vehicle.uploadId = 0xB
+        vehicle.missionId = before
+        if (before == 0xB) {
+            vehicle.state = vehicle.state.withMissionCurrent(0, 3, MISSION_STATE.MISSION_STATE_NO_MISSION, 0xB)
+        }
+        launch(hop())
+        stepUntil(FlightState.ARM)
+        if (before != 0xB) {
+            vehicle.checked()
+        }
+
+        when:
+        def outcome = runTo(3)
+
+        then:
+        outcome.type == CompletionState.Type.ERROR
+        outcome.message == 'mission hop on vehicle 1: vehicle 1 found the mission infeasible' + why
+        Math.abs(now() - at) < 0.15
+        vehicle.commands.empty
+
+        where:
+        before || at  | why
+        0xA    || 2.0 | ' (MISSION_CURRENT: no mission) and said nothing of why'
+        0xB    || 0.1 | ' when it was given it before: it holds this same mission, and does not check it again'
     }
 
     def "a mission MISSION_CURRENT never says feasible fails after 10 s, unarmed"() {

@@ -64,6 +64,45 @@ class Px4TransferSpec extends Specification {
         sent[2].param1() == 1f
     }
 
+    def "the upload's result carries the mission's id from the final ACK (opaque_id, PX4's CRC32); a download's from MISSION_COUNT"() {
+        when:
+        def up = transfers.upload().upload(mission())
+        (0..3).each { channel.receive(requestInt(it)) }
+        def accepted = ack(MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED)
+        accepted.opaque_id = 0xC0FFEE01L
+        channel.receive(accepted)
+
+        then:
+        up.get().planId() == 0xC0FFEE01L
+
+        when:
+        def down = transfers.download().download(MissionType.MISSION)
+        def counted = count(0)
+        counted.opaque_id = 0xFFFFFFFEL
+        channel.receive(counted)
+
+        then:
+        down.get().success()
+        down.get().planId() == 0xFFFFFFFEL
+    }
+
+    def "a lost final ACK settled by reading back takes the id from the read-back's MISSION_COUNT"() {
+        when:
+        def up = transfers.upload().upload(mission())
+        (0..3).each { channel.receive(requestInt(it)) }
+        channel.receive(ack(MAV_MISSION_RESULT.MAV_MISSION_ERROR))
+        def counted = count(4)
+        counted.opaque_id = 77
+        channel.receive(counted)
+        mission().drop(1).collect { new MissionItem(it.seq() - 1, it.command(), it.frame(),
+                (float) (it.command() == MAV_CMD.MAV_CMD_DO_JUMP ? it.param1() - 1 : it.param1()), it.param2(), it.param3(), it.param4(),
+                it.x(), it.y(), it.z(), it.autocontinue()) }.each { channel.receive(itemInt(it)) }
+
+        then:
+        up.get().verified()
+        up.get().planId() == 77
+    }
+
     def "a refused item is named as the runtime numbers it"() {
         when:
         def up = transfers.upload().upload(mission())
