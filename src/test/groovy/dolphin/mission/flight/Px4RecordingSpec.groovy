@@ -2,10 +2,14 @@ package dolphin.mission.flight
 
 import com.MAVLink.common.msg_command_ack
 import com.MAVLink.common.msg_command_long
+import com.MAVLink.common.msg_mission_ack
+import com.MAVLink.common.msg_mission_count
 import com.MAVLink.common.msg_mission_current
 import com.MAVLink.common.msg_mission_item_reached
 import com.MAVLink.common.msg_statustext
 import com.MAVLink.enums.MAV_CMD
+import com.MAVLink.enums.MAV_MISSION_RESULT
+import com.MAVLink.enums.MAV_MISSION_TYPE
 import com.MAVLink.enums.MAV_RESULT
 import com.MAVLink.enums.MAV_SEVERITY
 import com.MAVLink.enums.MISSION_STATE
@@ -13,9 +17,14 @@ import com.MAVLink.minimal.msg_heartbeat
 import dolphin.mavlink.Autopilot
 import dolphin.mavlink.Px4Modes
 import dolphin.mavlink.VehicleFamily
+import dolphin.mavlink.VehicleState
 import dolphin.sim.TlogFile
 import java.nio.file.Path
 import spock.lang.Specification
+
+import static dolphin.mission.flight.FeasibilityWatch.Feasibility.FEASIBLE
+import static dolphin.mission.flight.FeasibilityWatch.Feasibility.INFEASIBLE
+import static dolphin.mission.flight.FeasibilityWatch.Feasibility.PENDING
 
 /**
  * What real PX4 SITL (SIH) said and did while the project's scripts flew against it
@@ -93,6 +102,86 @@ class Px4RecordingSpec extends Specification {
         refusal.severity == MAV_SEVERITY.MAV_SEVERITY_CRITICAL
         after.every { it.mission_state == MISSION_STATE.MISSION_STATE_NO_MISSION }
         !messages.any { it instanceof msg_heartbeat && (it.base_mode & 128) != 0 }
+    }
+
+    def "PX4 names the mission it took: the final MISSION_ACK's opaque_id is MISSION_CURRENT's mission_id from then on"() {
+        given:
+        def messages = from('px4-copter-first-flight')
+        msg_mission_ack ack = messages.find { it instanceof msg_mission_ack && it.mission_type == MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION }
+        List<msg_mission_current> after = messages.drop(messages.indexOf(ack)).findAll { it instanceof msg_mission_current }
+
+        expect:
+        ack.type == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED
+        ack.opaque_id != 0
+        after.every { it.mission_id == ack.opaque_id }
+        after.first().mission_state == MISSION_STATE.MISSION_STATE_NOT_STARTED
+    }
+
+    /**
+     * The executor's reading of PX4's verdict ({@link FeasibilityWatch}) on each mission upload of a recording: each
+     * MISSION_CURRENT after the upload's final ACK, into the vehicle's state as MAVLinkCommunications puts it, judged
+     * against the id the vehicle named when the upload began and the one the ACK gave; the verdicts in a row as one.
+     * An ACK repeated for the last item sent again is the same upload's.
+     */
+    static List<List<FeasibilityWatch.Feasibility>> verdicts(String recording) {
+        List<List<FeasibilityWatch.Feasibility>> all = []
+        VehicleState state = VehicleState.initial(Autopilot.PX4, VehicleFamily.COPTER)
+        long idAtCount = 0
+        FeasibilityWatch watch = null
+        int items = -1
+        for (record in TlogFile.read(RECORDINGS.resolve(recording + '.tlog'))) {
+            def m = record.frame.message()
+            if (m instanceof msg_mission_count && record.frame.sysid() == 208 && m.mission_type == MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION) {
+                idAtCount = state.missionId()
+                items = m.count
+            } else if (m instanceof msg_mission_ack && record.frame.sysid() == 1 && m.mission_type == MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION
+                    && m.type == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED && items >= 0) {
+                watch = new FeasibilityWatch(items, idAtCount, m.opaque_id)
+                items = -1
+                all << [watch.verdict(state)]
+            } else if (m instanceof msg_mission_current && record.frame.sysid() == 1) {
+                state = state.withMissionCurrent(m.seq, m.total, m.mission_state, m.mission_id)
+                if (watch != null) {
+                    all[-1] = changes(all[-1] + [watch.verdict(state)])
+                }
+            } else if (m instanceof msg_heartbeat && record.frame.sysid() == 1 && (m.base_mode & 128) != 0) {
+                watch = null    // armed: the check is over
+            }
+        }
+        all
+    }
+
+    def "#recording: PX4's verdict on each mission as the executor reads it: #expected"() {
+        expect:
+        verdicts(recording) == expected
+
+        where:
+        recording                  || expected
+        'px4-copter-first-flight'  || [[PENDING, FEASIBLE]]
+        'px4-copter-fence-refused' || [[PENDING, INFEASIBLE]]
+        'px4-copter-fenced-hop'    || [[PENDING, FEASIBLE]]
+        'px4-copter-same-mission'  || [[PENDING, FEASIBLE], [FEASIBLE], [PENDING, INFEASIBLE]]
+    }
+
+    def "the same mission again is not taken again: COMPLETE stays under its id, and MISSION_START flies it again; a new one is named at once with the earlier COMPLETE and no current item"() {
+        given:
+        def messages = from('px4-copter-same-mission')
+        List<msg_mission_ack> acks = messages.findAll { it instanceof msg_mission_ack && it.mission_type == MAV_MISSION_TYPE.MAV_MISSION_TYPE_MISSION }
+        def currents = { int from, int to -> messages.subList(from, to).findAll { it instanceof msg_mission_current } }
+        int second = messages.indexOf(acks[1]), third = messages.indexOf(acks[2])
+        def armedAgain = messages.drop(second).find { it instanceof msg_heartbeat && (it.base_mode & 128) != 0 }
+
+        expect:
+        acks.size() == 3
+        acks[0].opaque_id == acks[1].opaque_id && acks[2].opaque_id != acks[0].opaque_id
+        currents(0, second).last().mission_state == MISSION_STATE.MISSION_STATE_COMPLETE
+        currents(0, second).last().mission_id == acks[1].opaque_id
+        changes(currents(second, third)*.mission_state) == [MISSION_STATE.MISSION_STATE_ACTIVE]
+        armedAgain != null && messages.indexOf(armedAgain) < third
+        with(currents(third, messages.size()).first()) {
+            seq == 65535 && mission_id == acks[2].opaque_id && mission_state == MISSION_STATE.MISSION_STATE_COMPLETE
+        }
+        currents(third, messages.size()).last().mission_state == MISSION_STATE.MISSION_STATE_NO_MISSION
     }
 
     def "#recording: a flight that went well says nothing the fault rule stops for"() {
