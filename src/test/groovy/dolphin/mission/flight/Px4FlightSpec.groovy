@@ -86,15 +86,19 @@ class Px4FlightSpec extends MissionFlights {
         messages.last() == 'mission hop on vehicle 1: item 1 of 3 reached'
     }
 
-    def "nothing is asked of a PX4 vehicle until it finds the mission feasible; one it refuses fails with its words, unarmed"() {
+    def "nothing is asked of a PX4 vehicle until it finds the mission feasible; one it refuses fails with what it said since the upload, unarmed (#ids)"() {
         given:
         vehicle = px4()
         vehicle.feasible = false
+        vehicle.uploadId = uploadId
+        vehicle.text('Preflight Fail: an earlier complaint', MAV_SEVERITY.MAV_SEVERITY_CRITICAL)
+        clock.advance(Duration.ofSeconds(1))
         launch(hop())
         stepUntil(FlightState.ARM)
 
-        when:
-        def waiting = runTo(2)
+        when: 'its verdict: no mission; a vehicle that names missions gets 2 s to say why'
+        vehicle.checked()
+        def waiting = runTo(2.5)
 
         then:
         waiting.type == CompletionState.Type.IN_PROGRESS
@@ -108,6 +112,11 @@ class Px4FlightSpec extends MissionFlights {
         outcome.type == CompletionState.Type.ERROR
         outcome.message == "mission hop on vehicle 1: vehicle 1 found the mission infeasible: 'Geofence violation for waypoint 3'"
         vehicle.commands.empty
+
+        where:
+        uploadId || ids
+        0        || 'a vehicle that names no missions'
+        0xB      || 'a vehicle that names its missions'
     }
 
     def "a PX4 vehicle still in AUTO.MISSION after a flight says a new mission ACTIVE once it holds it, not COMPLETE"() {
@@ -173,34 +182,6 @@ class Px4FlightSpec extends MissionFlights {
         then:
         vehicle.commands*.text == ['ARM', 'DO_SET_MODE AUTO.MISSION', 'MISSION_START']
         vehicle.commands[2].params[0] == 0f
-    }
-
-    def "a new mission PX4 checks and finds infeasible fails with what the vehicle said since the upload; a word is awaited 2 s, unarmed"() {
-        given:
-        vehicle = px4()
-        vehicle.feasible = false
-        vehicle.uploadId = 0xB
-        vehicle.text('Preflight Fail: an earlier complaint', MAV_SEVERITY.MAV_SEVERITY_CRITICAL)
-        clock.advance(Duration.ofSeconds(1))
-        launch(hop())
-        stepUntil(FlightState.ARM)
-
-        when:
-        vehicle.checked()
-        def waiting = runTo(2.5)
-
-        then:
-        waiting.type == CompletionState.Type.IN_PROGRESS
-        vehicle.commands.empty
-
-        when:
-        vehicle.text('Geofence violation for waypoint 3\t', MAV_SEVERITY.MAV_SEVERITY_CRITICAL)
-        def outcome = runTo(3)
-
-        then:
-        outcome.type == CompletionState.Type.ERROR
-        outcome.message == "mission hop on vehicle 1: vehicle 1 found the mission infeasible: 'Geofence violation for waypoint 3'"
-        vehicle.commands.empty
     }
 
     def "refused without a word, a new mission fails 2 s after the verdict; the same mission found infeasible before fails at once"() {
