@@ -89,7 +89,7 @@ final class MissionFlight {
     private final MissionCursor cursor;
     /** Whether the stored mission passed the autopilot's check of it (PX4's feasibility check). */
     private boolean feasible = true;
-    /** The stored mission's id, which MISSION_CURRENT names (SimAutopilot.planId). */
+    /** The stored mission's id, which MISSION_CURRENT names (ItemStore.planId). */
     private long missionId;
     private boolean autoArmed;
     private boolean restartDue;
@@ -317,10 +317,11 @@ final class MissionFlight {
     /**
      * The stored mission changed: an upload leaves the mission where it was, running or not (a copter
      * flying it goes on with the nav item under way); a cleared mission has no place. An autopilot that
-     * restarts a new mission (PX4) does so unless it flies one.
+     * restarts a new mission (PX4) does so unless it flies one. {@code id}: the mission's, as its
+     * transfers name it ({@link ItemStore#planId}).
      */
-    void missionChanged() {
-        missionId = autopilot.planId(store.items());
+    void missionChanged(long id) {
+        missionId = id;
         feasible = autopilot.feasible(store.items(), firmware);
         OptionalInt outside = autopilot.outsideFence(store.items(), body.fence());
         if (outside.isPresent()) {

@@ -206,10 +206,11 @@ final class MissionItemProtocol {
         result = store.complete();
         boolean accepted = result == MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
         completed = accepted ? expected : -1;
-        ack(sys, comp, result, type.wire(), accepted ? store.planId() : 0);
+        long id = accepted ? store.planId() : 0;
+        ack(sys, comp, result, type.wire(), id);
         store.receivedText().ifPresent(t -> host.text(MAV_SEVERITY.MAV_SEVERITY_INFO, t));
         // PX4 takes the list only when its CRC changed (MavlinkMissionManager): the same mission again stays as it was
-        if (!accepted || store.planId() == 0 || store.planId() != idBefore) {
+        if (id == 0 || id != idBefore) {
             host.changed(type);
         }
     }

@@ -63,14 +63,13 @@ final class Px4MissionList implements ItemStore {
         return MAV_MISSION_RESULT.MAV_MISSION_ACCEPTED;
     }
 
-    /** PX4's CRC32 of the mission (MavlinkMissionManager::crc32_for_mission_item), here over what it keeps of each item. */
+    /**
+     * PX4's CRC32 of the mission (MavlinkMissionManager::crc32_for_mission_item), here over what it keeps of each
+     * item; 0 without items, as PX4's.
+     */
     @Override
     public long planId() {
-        return planId(store.items());
-    }
-
-    /** The id of a stored mission, home first: 0 without items, as PX4's; its MISSION_CURRENT names it too. */
-    static long planId(List<MissionItem> stored) {
+        List<MissionItem> stored = store.items();
         if (stored.size() <= 1) {
             return 0;
         }

@@ -128,11 +128,6 @@ enum SimAutopilot {
             return Px4MissionCheck.feasible(items, firmware.family());
         }
 
-        @Override
-        long planId(List<MissionItem> stored) {
-            return Px4MissionList.planId(stored);
-        }
-
         /** FeasibilityChecker: "Geofence violation for waypoint N", N its seq on PX4 plus one (the runtime's seq). */
         @Override
         OptionalInt outsideFence(List<MissionItem> items, Fence fence) {
@@ -235,14 +230,9 @@ enum SimAutopilot {
     /**
      * MISSION_CURRENT of nav item {@code seq} as stored, {@code stored} items with home, {@code state} a
      * MISSION_STATE, {@code paused} when the mission stopped after it had begun, {@code id} the mission's
-     * ({@link #planId}).
+     * ({@link ItemStore#planId}).
      */
     abstract msg_mission_current missionCurrent(int seq, int stored, int state, boolean paused, boolean inAuto, long id);
-
-    /** The id of a stored mission (home first) that MISSION_CURRENT names: 0, none, unless the autopilot has them. */
-    long planId(List<MissionItem> stored) {
-        return 0;
-    }
 
     /** Whether STATUSTEXT goes out before a ground station's heartbeat was heard. */
     abstract boolean textsBeforeGcs();

@@ -90,6 +90,8 @@ public final class SimVehicle {
     private Position home;
     private int commandsHandled;
     private final MissionStore missionStore;
+    /** The mission as the protocol transfers it, which names its id (ItemStore.planId). */
+    private final ItemStore missionList;
     private final MissionLists lists;
     private final FenceGuard fenceGuard = new FenceGuard();
     private final MissionFlight flight;
@@ -129,7 +131,8 @@ public final class SimVehicle {
         this.missionStore = new MissionStore(() -> this.home, options.missionCapacity(),
                 firmware.family().firmware() == VehicleFamily.PLANE);
         TransferHost host = new TransferHost();
-        this.lists = new MissionLists(autopilot.missionList(missionStore), missionStore, options.missionCapacity(), host,
+        this.missionList = autopilot.missionList(missionStore);
+        this.lists = new MissionLists(missionList, missionStore, options.missionCapacity(), host,
                 autopilot.transferRules());
         // PX4 serves FTP but has no @MISSION files: every list is unknown to it
         Function<MissionType, ItemStore> files = autopilot.missionFiles() ? lists::store : type -> null;
@@ -746,7 +749,7 @@ public final class SimVehicle {
         @Override
         public void changed(MissionType type) {
             if (type == MissionType.MISSION) {
-                flight.missionChanged();
+                flight.missionChanged(missionList.planId());
             }
         }
     }

@@ -652,20 +652,20 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                     }
                     return now < deadlineOfCheck ? CompletionState.IN_PROGRESS : fail("vehicle " + vehicle.vehicleId()
                             + " did not find the mission feasible within " + MISSION_CHECK_WAIT.toSeconds() + " s: "
-                            + missionCurrentSays(s));
+                            + missionCurrentSays(s, now));
                 }
             }
         }
 
         /** What MISSION_CURRENT says when the vehicle's verdict did not come. */
-        private String missionCurrentSays(VehicleState s) {
+        private String missionCurrentSays(VehicleState s, long now) {
             if (s.missionTotal() != plan.items().size() - 1) {
                 return "MISSION_CURRENT counts " + s.missionTotal() + " items, not the mission's " + (plan.items().size() - 1);
             }
             if (feasibility.namesMissions(s) && s.missionSeq() < 0) {
                 return "MISSION_CURRENT still names no current item: the vehicle has not checked the mission";
             }
-            String said = words.quoteSince(missionUploadBegan, clock().nanoTime());
+            String said = words.quoteSince(missionUploadBegan, now);
             String state = s.missionState() == MISSION_STATE.MISSION_STATE_NO_MISSION ? "no mission"
                     : EnumNames.name(MISSION_STATE.class, "MISSION_STATE_", s.missionState());
             return "MISSION_CURRENT still says " + state + (said.isEmpty() ? "" : "; the vehicle said " + said);
