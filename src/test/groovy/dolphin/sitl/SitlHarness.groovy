@@ -28,7 +28,8 @@ import spock.util.concurrent.PollingConditions
  * copter.parm, plane.parm, rover.parm, rover.parm with motorboat.parm, or sub.parm, found in
  * Tools/autotest from a binary in build/sitl/bin), ARDUPILOT_SITL_SPEEDUP (SITL's --speedup,
  * default 1); for PX4, PX4_SITL_BIN (build/px4_sitl_default/bin/px4) and PX4_SITL_SPEEDUP (its
- * PX4_SIM_SPEED_FACTOR, default 1). Close it to stop every process.
+ * PX4_SIM_SPEED_FACTOR, default 1); SITL_TLOG_DIR for telemetry logs ({@link #tlogged}). Close it to stop
+ * every process.
  */
 class SitlHarness implements AutoCloseable {
 
@@ -46,8 +47,26 @@ class SitlHarness implements AutoCloseable {
 
     /** A ground station on these links: PX4 SITL's are udpout to each vehicle ({@link #px4Links}). */
     SitlHarness(String... links) {
-        comms = new MAVLinkCommunications(MAVLinkConfig.of(links), SystemClock.REAL)
+        comms = new MAVLinkCommunications(tlogged(MAVLinkConfig.of(links)), SystemClock.REAL)
         comms.start()
+    }
+
+    /**
+     * With SITL_TLOG_DIR set, the ground station keeps a telemetry log there, named after the spec and the
+     * time it began (SitlPx4Spec-20261128T130000.123.tlog): what the vehicles said when a feature failed.
+     */
+    static MAVLinkConfig tlogged(MAVLinkConfig config) {
+        String dir = System.getenv('SITL_TLOG_DIR')
+        if (!dir) {
+            return config
+        }
+        String spec = StackWalker.getInstance().walk { frames ->
+            frames.map { it.className.tokenize('.$').find { it.endsWith('Spec') } }.filter { it != null }.findFirst().orElse('Sitl')
+        }
+        String time = java.time.LocalDateTime.now().format(java.time.format.DateTimeFormatter.ofPattern("yyyyMMdd'T'HHmmss.SSS"))
+        def file = java.nio.file.Path.of(dir).resolve("${spec}-${time}.tlog")
+        java.nio.file.Files.createDirectories(file.parent)
+        config.withTlog(file)
     }
 
     /** The links to talk to PX4 SITL instances 0 to {@code count} - 1. */

@@ -12,52 +12,124 @@ import dolphin.mavlink.VehicleState;
  * checked again: it keeps its state, COMPLETE after a flight, which MISSION_START from the first item flies
  * again. A vehicle that names no missions (older firmware) is judged by the total and a state a valid
  * mission has; it cannot tell its verdict on this mission from the earlier one's.
+ * <p>
+ * The first MISSION_CURRENT with a current item may still carry the earlier state: PX4 sends one as soon as
+ * the check's result gives the current item, but works its state out again only after a newer vehicle_status
+ * (MavlinkMissionManager::update_mission_state; commander publishes one at least every 0.5 s). A checked
+ * report's state is therefore taken when it differs from the state reported before the check (it was worked
+ * out from the check's result), or from the third checked report on: PX4 sends them at 1 Hz besides the one
+ * the check's result triggers, so the third comes at least a second after the first, past a vehicle_status.
+ * <p>
+ * Fed on the communications thread ({@link #heard}), read on the executor's.
  */
 final class FeasibilityWatch {
 
     enum Feasibility { PENDING, FEASIBLE, INFEASIBLE }
 
+    /** MISSION_CURRENT's seq and total when there is none (UINT16_MAX). */
+    private static final int NONE = 65535;
+    /** Checked reports of one mission after which their state is the check's even if unchanged (see the class). */
+    private static final int SETTLED_REPORTS = 3;
+
     private final int items;
     private final long idBefore;
-    private final long idUploaded;
+    private long idUploaded;
+    /** The last MISSION_CURRENT heard: whether it named a current item, its total (0: none), state and mission id. */
+    private boolean lastChecked;
+    private int lastTotal;
+    private int lastState;
+    private long lastId;
+    /** The mission id of the reports in a row that named a current item for as many items; 0: none. */
+    private long runId;
+    private int runLength;
+    /** Whether a report of the run gave another state than the report before the run did. */
+    private boolean runChangedState;
+    private int stateBeforeRun;
 
     /**
      * @param items the mission's items without home (MISSION_CURRENT.total)
-     * @param idBefore the mission id the vehicle named when the upload began, 0 when none
-     * @param idUploaded the id the upload's final MISSION_ACK (or the verifying download's MISSION_COUNT) gave, 0 when none
+     * @param before the vehicle's state when the upload began: the mission it named then, 0 when none, and its report
      */
-    FeasibilityWatch(int items, long idBefore, long idUploaded) {
+    FeasibilityWatch(int items, VehicleState before) {
         this.items = items;
-        this.idBefore = idBefore;
-        this.idUploaded = idUploaded;
+        this.idBefore = before.missionId();
+        lastChecked = before.missionSeq() >= 0;
+        lastTotal = before.missionTotal();
+        lastState = before.missionState();
+        lastId = before.missionId();
+    }
+
+    /** The id the upload's final MISSION_ACK (or the verifying download's MISSION_COUNT) gave; 0 when none. */
+    synchronized void uploaded(long id) {
+        idUploaded = id;
+    }
+
+    /** A MISSION_CURRENT as the vehicle sent it, on the communications thread, in the order it was sent. */
+    synchronized void heard(int seq, int total, int state, long id) {
+        boolean checked = seq != NONE && total == items && id != 0;
+        if (!checked) {
+            runId = 0;
+            runLength = 0;
+        } else if (id == runId) {
+            runLength++;
+            runChangedState |= state != stateBeforeRun;
+        } else {
+            runId = id;
+            runLength = 1;
+            stateBeforeRun = lastState;
+            runChangedState = state != stateBeforeRun;
+        }
+        lastChecked = seq != NONE;
+        lastTotal = total == NONE ? 0 : total;
+        lastState = state;
+        lastId = id;
     }
 
     /** Whether both the upload and the vehicle's MISSION_CURRENT name missions, so its state can be told to be this mission's. */
-    boolean namesMissions(VehicleState s) {
-        return idUploaded != 0 && s.missionId() != 0;
+    synchronized boolean namesMissions() {
+        return idUploaded != 0 && lastId != 0;
     }
 
     /** Whether the vehicle already held this very mission, so it keeps its earlier verdict and state. */
-    boolean unchanged() {
+    synchronized boolean unchanged() {
         return idUploaded != 0 && idUploaded == idBefore;
     }
 
-    Feasibility verdict(VehicleState s) {
-        if (s.missionTotal() != items) {
+    synchronized Feasibility verdict() {
+        if (lastTotal != items) {
             return Feasibility.PENDING;
         }
-        int state = s.missionState();
-        if (!namesMissions(s)) {
-            return validBeforeStart(state) ? Feasibility.FEASIBLE : Feasibility.PENDING;
+        if (!namesMissions()) {
+            return validBeforeStart(lastState) ? Feasibility.FEASIBLE : Feasibility.PENDING;
         }
-        if (s.missionId() != idUploaded || !unchanged() && s.missionSeq() < 0) {
+        if (lastId != idUploaded || !unchanged() && !settled()) {
             return Feasibility.PENDING;     // another mission's state, or this one's not checked yet
         }
-        if (state == MISSION_STATE.MISSION_STATE_NO_MISSION) {
+        if (lastState == MISSION_STATE.MISSION_STATE_NO_MISSION) {
             return Feasibility.INFEASIBLE;
         }
-        return validBeforeStart(state) || unchanged() && state == MISSION_STATE.MISSION_STATE_COMPLETE
+        return validBeforeStart(lastState) || unchanged() && lastState == MISSION_STATE.MISSION_STATE_COMPLETE
                 ? Feasibility.FEASIBLE : Feasibility.PENDING;
+    }
+
+    /** Whether the last report's state is the check's on this mission (see the class). */
+    private boolean settled() {
+        return lastChecked && runId == idUploaded && (runChangedState || runLength >= SETTLED_REPORTS);
+    }
+
+    /** The items the last MISSION_CURRENT counted, 0 when it counted none. */
+    synchronized int lastTotal() {
+        return lastTotal;
+    }
+
+    /** Whether the last MISSION_CURRENT named this mission with no current item: not checked yet. */
+    synchronized boolean unchecked() {
+        return namesMissions() && !lastChecked;
+    }
+
+    /** The state the last MISSION_CURRENT gave. */
+    synchronized int lastState() {
+        return lastState;
     }
 
     /** A state a valid mission has before its flight: NOT_STARTED; ACTIVE or PAUSED when PX4 is still in AUTO.MISSION. */

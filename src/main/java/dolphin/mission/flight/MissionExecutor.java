@@ -74,9 +74,8 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     private volatile FlightState state = FlightState.PREPARE;
     /** When the mission's upload began: a vehicle that checks the mission may refuse it from then on. */
     private long missionUploadBegan;
-    /** The mission id the vehicle named when the upload began, and the one its upload gave (FeasibilityWatch); 0: none. */
-    private long missionIdBefore;
-    private long missionIdUploaded;
+    /** The vehicle's verdict on the mission in its latest upload, watched from the upload's beginning; fed on the communications thread. */
+    private volatile FeasibilityWatch feasibility;
     private String failure;
 
     /** @param vehicles the mission side of the vehicle the executor is given; null when it has none */
@@ -113,6 +112,10 @@ public final class MissionExecutor extends PlatformTaskExecutor {
 
     /** MISSION_CURRENT, on the communications thread, in the order the vehicle sent it. */
     public void consume(msg_mission_current message) {
+        FeasibilityWatch f = feasibility;
+        if (f != null) {
+            f.heard(message.seq, message.total, message.mission_state, message.mission_id);
+        }
         ItemRefusals r = refusals;
         if (r != null) {
             r.current(autopilot().missionSeq(message.seq), message.mission_state, clock().nanoTime());
@@ -447,8 +450,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                     + next.getValue().size() + (next.getValue().size() == 1 ? " item" : " items"));
             if (next.getKey() == MissionType.MISSION) {
                 missionUploadBegan = clock().nanoTime();
-                missionIdBefore = vehicle.state().missionId();
-                missionIdUploaded = 0;
+                feasibility = new FeasibilityWatch(plan.items().size() - 1, vehicle.state());
             }
             pending = watch(vehicle.upload(next.getKey(), next.getValue()));
         }
@@ -529,7 +531,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
     /** The id a transfer of the mission gave, if any: its upload's final ACK, or its verifying download's count. */
     private void noteMissionId(MissionType type, TransferResult r) {
         if (type == MissionType.MISSION && r.success() && r.planId() != 0) {
-            missionIdUploaded = r.planId();
+            feasibility.uploaded(r.planId());
         }
     }
 
@@ -548,7 +550,6 @@ public final class MissionExecutor extends PlatformTaskExecutor {
         private final CommandSteps commands = commandSteps(what -> { });
         private final CommandSteps before = commandSteps(what -> { });
         private final long deadlineOfCheck;
-        private final FeasibilityWatch feasibility;
         /** When the vehicle's MISSION_CURRENT first said it found the mission infeasible; -1 before. */
         private long infeasibleAt = -1;
         private boolean armModeSet;
@@ -560,7 +561,6 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             this.plan = plan;
             nextAttempt = clock().nanoTime();
             deadlineOfCheck = nextAttempt + MISSION_CHECK_WAIT.toNanos();
-            feasibility = new FeasibilityWatch(plan.items().size() - 1, missionIdBefore, missionIdUploaded);
             if (armsInAuto()) {
                 before.add(firstItemCurrent());
             }
@@ -577,7 +577,7 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 return before.failure() != null ? fail(before.failure()) : CompletionState.IN_PROGRESS;
             }
             if (rules.checksMissionAfterUpload()) {
-                CompletionState checking = missionCheck(vehicle.state(), now);
+                CompletionState checking = missionCheck(now);
                 if (checking != null) {
                     return checking;
                 }
@@ -626,9 +626,9 @@ public final class MissionExecutor extends PlatformTaskExecutor {
          * a little after its verdict. A vehicle that does not name its missions cannot tell its verdict on this one
          * from the earlier one's: a severe text is then taken as its refusal.
          */
-        private CompletionState missionCheck(VehicleState s, long now) {
+        private CompletionState missionCheck(long now) {
             String refused = "vehicle " + vehicle.vehicleId() + " found the mission infeasible";
-            switch (feasibility.verdict(s)) {
+            switch (feasibility.verdict()) {
                 case FEASIBLE -> {
                     return null;
                 }
@@ -647,27 +647,28 @@ public final class MissionExecutor extends PlatformTaskExecutor {
                 }
                 default -> {
                     var severe = words.firstSevere(missionUploadBegan);
-                    if (severe.isPresent() && !feasibility.namesMissions(s)) {
+                    if (severe.isPresent() && !feasibility.namesMissions()) {
                         return fail(refused + ": '" + severe.get().text() + "'");
                     }
                     return now < deadlineOfCheck ? CompletionState.IN_PROGRESS : fail("vehicle " + vehicle.vehicleId()
                             + " did not find the mission feasible within " + MISSION_CHECK_WAIT.toSeconds() + " s: "
-                            + missionCurrentSays(s, now));
+                            + missionCurrentSays(now));
                 }
             }
         }
 
         /** What MISSION_CURRENT says when the vehicle's verdict did not come. */
-        private String missionCurrentSays(VehicleState s, long now) {
-            if (s.missionTotal() != plan.items().size() - 1) {
-                return "MISSION_CURRENT counts " + s.missionTotal() + " items, not the mission's " + (plan.items().size() - 1);
+        private String missionCurrentSays(long now) {
+            if (feasibility.lastTotal() != plan.items().size() - 1) {
+                return "MISSION_CURRENT counts " + feasibility.lastTotal() + " items, not the mission's " + (plan.items().size() - 1);
             }
-            if (feasibility.namesMissions(s) && s.missionSeq() < 0) {
+            if (feasibility.unchecked()) {
                 return "MISSION_CURRENT still names no current item: the vehicle has not checked the mission";
             }
             String said = words.quoteSince(missionUploadBegan, now);
-            String state = s.missionState() == MISSION_STATE.MISSION_STATE_NO_MISSION ? "no mission"
-                    : EnumNames.name(MISSION_STATE.class, "MISSION_STATE_", s.missionState());
+            int reported = feasibility.lastState();
+            String state = reported == MISSION_STATE.MISSION_STATE_NO_MISSION ? "no mission"
+                    : EnumNames.name(MISSION_STATE.class, "MISSION_STATE_", reported);
             return "MISSION_CURRENT still says " + state + (said.isEmpty() ? "" : "; the vehicle said " + said);
         }
 

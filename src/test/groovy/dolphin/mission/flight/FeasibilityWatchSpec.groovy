@@ -13,7 +13,7 @@ import static dolphin.mission.flight.FeasibilityWatch.Feasibility.PENDING
 /**
  * The verdict of a PX4 vehicle on an uploaded mission of 3 items, read from MISSION_CURRENT as PX4 sends it
  * (MavlinkMissionManager::send_mission_current): the new mission's id at once, its state once the navigator
- * checked it (seq no longer UINT16_MAX); an unchanged mission keeps its state.
+ * checked it (seq no longer UINT16_MAX) and PX4 worked the state out again; an unchanged mission keeps its state.
  */
 class FeasibilityWatchSpec extends Specification {
 
@@ -24,19 +24,24 @@ class FeasibilityWatchSpec extends Specification {
     static final int NO_MISSION = MISSION_STATE.MISSION_STATE_NO_MISSION
     static final int NO_ITEM = 65535
 
-    static VehicleState px4(int seq, int total, int state, long id) {
-        VehicleState.initial(Autopilot.PX4, VehicleFamily.COPTER).withMissionCurrent(seq, total, state, id)
+    /** A watch begun when the vehicle reported (seq, total, state, id), given the upload's id, then hearing each report. */
+    static FeasibilityWatch watch(List before, long uploaded, List<List> reports) {
+        def (seq, total, state, id) = before
+        def w = new FeasibilityWatch(3, VehicleState.initial(Autopilot.PX4, VehicleFamily.COPTER).withMissionCurrent(seq, total, state, id))
+        w.uploaded(uploaded)
+        reports.each { r -> w.heard(r[0], r[1], r[2], r[3]) }
+        w
     }
 
     def "a new mission (id 0xB, the vehicle held 0xA) is judged only by its own id, once checked: #why"() {
         expect:
-        new FeasibilityWatch(3, 0xA, 0xB).verdict(px4(seq, total, state, id)) == verdict
+        watch([2, 3, COMPLETE, 0xA], 0xB, [[NO_ITEM, 3, COMPLETE, 0xB], [seq, total, state, id]]).verdict() == verdict
 
         where:
         seq     | total | state       | id  || verdict    | why
         NO_ITEM | 3     | COMPLETE    | 0xB || PENDING    | 'the earlier flight\'s COMPLETE before the check'
-        NO_ITEM | 3     | NOT_STARTED | 0xB || PENDING    | 'the earlier mission\'s NOT_STARTED before the check'
-        NO_ITEM | 3     | NO_MISSION  | 0xB || PENDING    | 'the earlier mission\'s NO_MISSION before the check'
+        NO_ITEM | 3     | NOT_STARTED | 0xB || PENDING    | 'NOT_STARTED before the check'
+        NO_ITEM | 3     | NO_MISSION  | 0xB || PENDING    | 'NO_MISSION before the check'
         0       | 3     | NOT_STARTED | 0xA || PENDING    | 'the earlier mission named'
         0       | 3     | NO_MISSION  | 0xA || PENDING    | 'the earlier mission named, found infeasible'
         0       | 2     | NOT_STARTED | 0xB || PENDING    | 'another count'
@@ -47,9 +52,93 @@ class FeasibilityWatchSpec extends Specification {
         0       | 3     | NO_MISSION  | 0xB || INFEASIBLE | 'checked: NO_MISSION'
     }
 
+    def "the first checked report may carry the earlier state: a state that did not change is taken from the third checked report (#earlier, then #checked)"() {
+        given: 'the vehicle held 0xA in #earlier; 0xB named at once with that state and no current item'
+        def w = watch([0, 3, earlier, 0xA], 0xB, [[NO_ITEM, 3, earlier, 0xB]])
+
+        when:
+        List verdicts = (1..4).collect {
+            w.heard(0, 3, checked, 0xB)
+            w.verdict()
+        }
+
+        then:
+        verdicts == [PENDING, PENDING, verdict, verdict]
+
+        where:
+        earlier     | checked     || verdict
+        NOT_STARTED | NOT_STARTED || FEASIBLE
+        NO_MISSION  | NO_MISSION  || INFEASIBLE
+        ACTIVE      | ACTIVE      || FEASIBLE
+    }
+
+    def "the earlier state in the first checked report is not the verdict; the state worked out after it is, at once: #why"() {
+        given:
+        def w = watch([0, 3, earlier, 0xA], 0xB, [[NO_ITEM, 3, earlier, 0xB]])
+
+        when:
+        w.heard(0, 3, earlier, 0xB)
+        def first = w.verdict()
+        w.heard(0, 3, worked, 0xB)
+
+        then:
+        first == PENDING
+        w.verdict() == verdict
+
+        where:
+        earlier     | worked      || verdict    | why
+        NOT_STARTED | NO_MISSION  || INFEASIBLE | 'an earlier valid mission, this one refused'
+        NO_MISSION  | NOT_STARTED || FEASIBLE   | 'an earlier refused mission, this one valid'
+        COMPLETE    | NO_MISSION  || INFEASIBLE | 'the earlier flight, this one refused (SitlPx4Spec\'s fence)'
+    }
+
+    def "a report with no current item, or for another count, begins the count of checked reports again: #why"() {
+        given:
+        def w = watch([0, 3, NOT_STARTED, 0xA], 0xB, [[0, 3, NOT_STARTED, 0xB], [0, 3, NOT_STARTED, 0xB], between])
+
+        when:
+        w.heard(0, 3, NOT_STARTED, 0xB)
+        def once = w.verdict()
+        w.heard(0, 3, NOT_STARTED, 0xB)
+        def twice = w.verdict()
+        w.heard(0, 3, NOT_STARTED, 0xB)
+
+        then:
+        once == PENDING
+        twice == PENDING
+        w.verdict() == FEASIBLE
+
+        where:
+        between                       || why
+        [NO_ITEM, 3, NOT_STARTED, 0xB] || 'no current item'
+        [0, 2, NOT_STARTED, 0xB]       || 'another count'
+        [0, 3, NOT_STARTED, 0xA]       || 'the earlier mission'
+    }
+
+    def "reports heard before the upload's id is known count: the ACK and PX4's check may overtake the executor"() {
+        given:
+        def w = new FeasibilityWatch(3, VehicleState.initial(Autopilot.PX4, VehicleFamily.COPTER).withMissionCurrent(0, 3, NOT_STARTED, 0xA))
+        w.heard(NO_ITEM, 3, NOT_STARTED, 0xB)
+        w.heard(0, 3, NOT_STARTED, 0xB)
+        w.heard(0, 3, NOT_STARTED, 0xB)
+
+        when:
+        w.uploaded(0xB)
+
+        then:
+        w.verdict() == PENDING
+
+        when:
+        w.heard(0, 3, NOT_STARTED, 0xB)
+
+        then:
+        w.verdict() == FEASIBLE
+    }
+
     def "the same mission again (id 0xB before and after) is not checked again: its state stands, COMPLETE included: #why"() {
         expect:
-        new FeasibilityWatch(3, 0xB, 0xB).verdict(px4(seq, 3, state, 0xB)) == verdict
+        watch([seq, 3, state, 0xB], 0xB, []).verdict() == verdict
+        watch([seq, 3, state, 0xB], 0xB, [[seq, 3, state, 0xB]]).verdict() == verdict
 
         where:
         seq | state       || verdict    | why
@@ -60,7 +149,7 @@ class FeasibilityWatchSpec extends Specification {
 
     def "without ids (the vehicle or the upload names none) a valid state for as many items is all there is: #why"() {
         expect:
-        new FeasibilityWatch(3, before, uploaded).verdict(px4(0, total, state, id)) == verdict
+        watch([0, 3, COMPLETE, before], uploaded, [[0, total, state, id]]).verdict() == verdict
 
         where:
         before | uploaded | total | state       | id  || verdict  | why
@@ -75,11 +164,28 @@ class FeasibilityWatchSpec extends Specification {
 
     def "names missions only when both the upload and MISSION_CURRENT give an id; unchanged only for the same non-zero id"() {
         expect:
-        new FeasibilityWatch(3, 0, 0xB).namesMissions(px4(0, 3, NOT_STARTED, 0xB))
-        !new FeasibilityWatch(3, 0, 0xB).namesMissions(px4(0, 3, NOT_STARTED, 0))
-        !new FeasibilityWatch(3, 0, 0).namesMissions(px4(0, 3, NOT_STARTED, 0xB))
-        new FeasibilityWatch(3, 0xB, 0xB).unchanged()
-        !new FeasibilityWatch(3, 0xA, 0xB).unchanged()
-        !new FeasibilityWatch(3, 0, 0).unchanged()
+        watch([0, 3, NOT_STARTED, 0], 0xB, [[0, 3, NOT_STARTED, 0xB]]).namesMissions()
+        !watch([0, 3, NOT_STARTED, 0], 0xB, [[0, 3, NOT_STARTED, 0]]).namesMissions()
+        !watch([0, 3, NOT_STARTED, 0], 0, [[0, 3, NOT_STARTED, 0xB]]).namesMissions()
+        watch([0, 3, NOT_STARTED, 0xB], 0xB, []).unchanged()
+        !watch([0, 3, NOT_STARTED, 0xA], 0xB, []).unchanged()
+        !watch([0, 3, NOT_STARTED, 0], 0, []).unchanged()
+    }
+
+    def "what the last report said, for a verdict that did not come"() {
+        when:
+        def w = watch([2, 3, COMPLETE, 0xA], 0xB, [[NO_ITEM, NO_ITEM, NO_MISSION, 0xB]])
+
+        then: 'PX4 counts no items as UINT16_MAX'
+        w.lastTotal() == 0
+        w.unchecked()
+        w.lastState() == NO_MISSION
+
+        when:
+        w.heard(1, 3, NOT_STARTED, 0xB)
+
+        then:
+        w.lastTotal() == 3
+        !w.unchecked()
     }
 }

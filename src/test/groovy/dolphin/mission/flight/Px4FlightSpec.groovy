@@ -168,6 +168,60 @@ class Px4FlightSpec extends MissionFlights {
         vehicle.commands*.text == ['ARM', 'DO_SET_MODE AUTO.MISSION', 'MISSION_START']
     }
 
+    def "the first report of a new mission's check may carry the earlier mission's state: a refused mission is not armed on it"() {
+        given: 'the vehicle holds 0xA, valid and never flown; the upload gives 0xB'
+        vehicle = px4()
+        vehicle.state = vehicle.state.withMissionCurrent(0, 3, MISSION_STATE.MISSION_STATE_NOT_STARTED, 0xA)
+        vehicle.missionId = 0xA
+        vehicle.uploadId = 0xB
+        launch(hop())
+        stepUntil(FlightState.ARM)
+
+        when: 'the check gives the current item; PX4 has not worked the state out again yet: the earlier NOT_STARTED'
+        vehicle.missionCurrent(1, MISSION_STATE.MISSION_STATE_NOT_STARTED)
+        def waiting = runTo(2)
+
+        then:
+        waiting.type == CompletionState.Type.IN_PROGRESS
+        vehicle.commands.empty
+
+        when: 'worked out: NO_MISSION, and why'
+        vehicle.missionCurrent(1, MISSION_STATE.MISSION_STATE_NO_MISSION)
+        vehicle.text('Geofence violation for waypoint 3\t', MAV_SEVERITY.MAV_SEVERITY_CRITICAL)
+        def outcome = runTo(3)
+
+        then:
+        outcome.type == CompletionState.Type.ERROR
+        outcome.message == "mission hop on vehicle 1: vehicle 1 found the mission infeasible: 'Geofence violation for waypoint 3'"
+        vehicle.commands.empty
+    }
+
+    def "a new mission's state the same as the earlier mission's is its verdict from the third checked report, a second later"() {
+        given:
+        vehicle = px4()
+        vehicle.state = vehicle.state.withMissionCurrent(0, 3, MISSION_STATE.MISSION_STATE_NOT_STARTED, 0xA)
+        vehicle.missionId = 0xA
+        vehicle.uploadId = 0xB
+        launch(hop())
+        stepUntil(FlightState.ARM)
+
+        when: 'the report the check triggers, then PX4\'s reports at 1 Hz'
+        vehicle.missionCurrent(1, MISSION_STATE.MISSION_STATE_NOT_STARTED)
+        runTo(1)
+        vehicle.missionCurrent(1, MISSION_STATE.MISSION_STATE_NOT_STARTED)
+        runTo(2)
+
+        then:
+        vehicle.commands.empty
+
+        when:
+        vehicle.missionCurrent(1, MISSION_STATE.MISSION_STATE_NOT_STARTED)
+        runTo(3)
+
+        then:
+        vehicle.commands*.text == ['ARM', 'DO_SET_MODE AUTO.MISSION', 'MISSION_START']
+    }
+
     def "a PX4 vehicle given the very mission it flew keeps it COMPLETE: that is its verdict, and MISSION_START from the first item flies it again"() {
         given:
         vehicle = px4()
