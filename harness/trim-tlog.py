@@ -4,7 +4,12 @@ frames, only the message kinds named in KEPT. Frames are copied byte for byte wi
 ArduPilot streams dozens of other kinds (ATTITUDE, SIMSTATE, NAMED_VALUE_FLOAT, ...) that no spec reads.
 
     .venv/bin/python harness/trim-tlog.py RECORDING.tlog      (rewrites it in place)
+
+--since SECONDS keeps only the frames from that many seconds after the first one, and --vehicle N only the
+frames of system N besides the ground station's: to cut one feature's vehicle out of a SITL spec's whole
+tlog (SITL_TLOG_DIR).
 """
+import argparse
 import sys
 
 from pymavlink.dialects.v20 import ardupilotmega as mavlink
@@ -41,14 +46,27 @@ def frames(data):
         i = end
 
 
-def main(path):
+def micros(record):
+    """The record's timestamp: microseconds since 1970, big-endian, before its frame."""
+    return int.from_bytes(record[:TIMESTAMP], "big")
+
+
+def main(path, since=0.0, vehicle=None):
     data = open(path, "rb").read()
     records = list(frames(data))
-    kept = [record for record, system, msg_id in records if system == GROUND_STATION or msg_id in KEPT_IDS]
+    start = micros(records[0][0]) + since * 1e6 if records else 0
+    kept = [record for record, system, msg_id in records
+            if micros(record) >= start
+            and (system == GROUND_STATION or msg_id in KEPT_IDS and vehicle in (None, system))]
     with open(path, "wb") as out:
         out.write(b"".join(kept))
     print(f"{path}: {len(records)} frames, {len(kept)} kept, {len(data)} bytes before, {sum(map(len, kept))} after")
 
 
 if __name__ == "__main__":
-    main(sys.argv[1])
+    parser = argparse.ArgumentParser(description="Cuts a SITL recording down to the frames its readers use.")
+    parser.add_argument("tlog")
+    parser.add_argument("--since", type=float, default=0.0, help="seconds after the first frame to keep from")
+    parser.add_argument("--vehicle", type=int, help="the one vehicle (system id) whose frames to keep")
+    args = parser.parse_args()
+    main(args.tlog, args.since, args.vehicle)

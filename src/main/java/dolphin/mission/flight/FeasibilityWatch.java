@@ -15,11 +15,19 @@ import dolphin.mavlink.VehicleState;
  * <p>
  * The first MISSION_CURRENT with a current item may still carry the earlier state: PX4 sends one as soon as
  * the check's result gives the current item, but works its state out again only after a newer vehicle_status
- * (MavlinkMissionManager::update_mission_state; commander publishes one at least every 0.5 s). A checked
- * report's state is therefore taken when it differs from the state reported before the check (it was worked
- * out from the check's result), or from the third checked report on: PX4 sends them at 1 Hz besides the one
- * the check's result triggers, so the third comes at least a second after the first, past a vehicle_status.
- * <p>
+ * (MavlinkMissionManager::update_mission_state; commander publishes one at least every 0.5 s). And PX4 may
+ * never show the current item: on SITL after a flight, a mission refused under a new fence kept seq UINT16_MAX
+ * while its state went from COMPLETE to NO_MISSION (the recording px4-copter-refused-after-flight). A report's
+ * state is therefore the check's
+ * <ul>
+ *   <li>when it names a current item and its state differs from the one reported before the first report with
+ *       one (it was worked out from the check's result);</li>
+ *   <li>from the third report in a row naming the current item with the same state: PX4 sends them at 1 Hz
+ *       besides the one the check's result triggers, so the third is at least a second after the first, past
+ *       a vehicle_status;</li>
+ *   <li>from the third report in a row with the same state, current item or not, when that state differs from
+ *       the one reported before the mission was named: a state that changed and held.</li>
+ * </ul>
  * Fed on the communications thread ({@link #heard}), read on the executor's.
  */
 final class FeasibilityWatch {
@@ -28,7 +36,7 @@ final class FeasibilityWatch {
 
     /** MISSION_CURRENT's seq and total when there is none (UINT16_MAX). */
     private static final int NONE = 65535;
-    /** Checked reports of one mission after which their state is the check's even if unchanged (see the class). */
+    /** Reports in a row with one state after which it is the check's (see the class). */
     private static final int SETTLED_REPORTS = 3;
 
     private final int items;
@@ -39,12 +47,16 @@ final class FeasibilityWatch {
     private int lastTotal;
     private int lastState;
     private long lastId;
-    /** The mission id of the reports in a row that named a current item for as many items; 0: none. */
-    private long runId;
-    private int runLength;
-    /** Whether a report of the run gave another state than the report before the run did. */
-    private boolean runChangedState;
-    private int stateBeforeRun;
+    /** The mission the reports in a row name, for as many items; 0: none. The state reported before them. */
+    private long namedId;
+    private int stateBeforeNamed;
+    /** Of those reports, the last ones with the last state: all of them, and those in a row naming a current item. */
+    private int steady;
+    private int steadyChecked;
+    /** Of those reports, whether the last ones in a row name a current item, and one of them gave another state than the report before them. */
+    private boolean checkedRun;
+    private int stateBeforeChecked;
+    private boolean checkedChanged;
 
     /**
      * @param items the mission's items without home (MISSION_CURRENT.total)
@@ -66,20 +78,28 @@ final class FeasibilityWatch {
 
     /** A MISSION_CURRENT as the vehicle sent it, on the communications thread, in the order it was sent. */
     synchronized void heard(int seq, int total, int state, long id) {
-        boolean checked = seq != NONE && total == items && id != 0;
-        if (!checked) {
-            runId = 0;
-            runLength = 0;
-        } else if (id == runId) {
-            runLength++;
-            runChangedState |= state != stateBeforeRun;
+        boolean checked = seq != NONE;
+        if (total != items || id == 0) {
+            namedId = 0;
         } else {
-            runId = id;
-            runLength = 1;
-            stateBeforeRun = lastState;
-            runChangedState = state != stateBeforeRun;
+            if (id != namedId) {
+                namedId = id;
+                stateBeforeNamed = lastState;
+                steady = 0;
+                steadyChecked = 0;
+                checkedRun = false;
+            }
+            boolean same = steady > 0 && state == lastState;
+            steady = same ? steady + 1 : 1;
+            steadyChecked = !checked ? 0 : same ? steadyChecked + 1 : 1;
+            if (checked && !checkedRun) {
+                stateBeforeChecked = lastState;
+                checkedChanged = false;
+            }
+            checkedRun = checked;
+            checkedChanged |= checked && state != stateBeforeChecked;
         }
-        lastChecked = seq != NONE;
+        lastChecked = checked;
         lastTotal = total == NONE ? 0 : total;
         lastState = state;
         lastId = id;
@@ -114,7 +134,8 @@ final class FeasibilityWatch {
 
     /** Whether the last report's state is the check's on this mission (see the class). */
     private boolean settled() {
-        return lastChecked && runId == idUploaded && (runChangedState || runLength >= SETTLED_REPORTS);
+        return namedId == idUploaded && (checkedRun && checkedChanged || steadyChecked >= SETTLED_REPORTS
+                || steady >= SETTLED_REPORTS && lastState != stateBeforeNamed);
     }
 
     /** The items the last MISSION_CURRENT counted, 0 when it counted none. */

@@ -657,19 +657,22 @@ public final class MissionExecutor extends PlatformTaskExecutor {
             }
         }
 
-        /** What MISSION_CURRENT says when the vehicle's verdict did not come. */
+        /** What MISSION_CURRENT says when the vehicle's verdict did not come, and what the vehicle said since the upload. */
         private String missionCurrentSays(long now) {
+            String said = words.quoteSince(missionUploadBegan, now);
+            return missionCurrentSays() + (said.isEmpty() ? "" : "; the vehicle said " + said);
+        }
+
+        private String missionCurrentSays() {
             if (feasibility.lastTotal() != plan.items().size() - 1) {
                 return "MISSION_CURRENT counts " + feasibility.lastTotal() + " items, not the mission's " + (plan.items().size() - 1);
             }
-            if (feasibility.unchecked()) {
-                return "MISSION_CURRENT still names no current item: the vehicle has not checked the mission";
-            }
-            String said = words.quoteSince(missionUploadBegan, now);
             int reported = feasibility.lastState();
             String state = reported == MISSION_STATE.MISSION_STATE_NO_MISSION ? "no mission"
                     : EnumNames.name(MISSION_STATE.class, "MISSION_STATE_", reported);
-            return "MISSION_CURRENT still says " + state + (said.isEmpty() ? "" : "; the vehicle said " + said);
+            return feasibility.unchecked()
+                    ? "MISSION_CURRENT still names no current item and says " + state + ": the vehicle has not shown its check"
+                    : "MISSION_CURRENT still says " + state;
         }
 
         private CommandResult answer() {

@@ -115,6 +115,28 @@ class FeasibilityWatchSpec extends Specification {
         [0, 3, NOT_STARTED, 0xA]       || 'the earlier mission'
     }
 
+    def "a vehicle that never names the current item: a state that changed from the earlier one and held for three reports is the verdict (#earlier, then #states)"() {
+        given: 'the vehicle held 0xA in #earlier; 0xB is named with no current item from then on'
+        def w = watch([0, 3, earlier, 0xA], 0xB, [])
+
+        when:
+        List verdicts = states.collect { state ->
+            w.heard(NO_ITEM, 3, state, 0xB)
+            w.verdict()
+        }
+
+        then:
+        verdicts == expected
+
+        where:
+        earlier     | states                                             || expected
+        ACTIVE      | [COMPLETE, NO_MISSION, NO_MISSION, NO_MISSION]     || [PENDING, PENDING, PENDING, INFEASIBLE]
+        COMPLETE    | [NOT_STARTED, NOT_STARTED, NOT_STARTED]            || [PENDING, PENDING, FEASIBLE]
+        COMPLETE    | [COMPLETE, COMPLETE, COMPLETE, COMPLETE]           || [PENDING, PENDING, PENDING, PENDING]
+        NOT_STARTED | [NOT_STARTED, NOT_STARTED, NOT_STARTED, NOT_STARTED] || [PENDING, PENDING, PENDING, PENDING]
+        COMPLETE    | [NOT_STARTED, NOT_STARTED, NO_MISSION, NO_MISSION] || [PENDING, PENDING, PENDING, PENDING]
+    }
+
     def "reports heard before the upload's id is known count: the ACK and PX4's check may overtake the executor"() {
         given:
         def w = new FeasibilityWatch(3, VehicleState.initial(Autopilot.PX4, VehicleFamily.COPTER).withMissionCurrent(0, 3, NOT_STARTED, 0xA))

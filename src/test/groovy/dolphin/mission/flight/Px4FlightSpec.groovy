@@ -284,6 +284,29 @@ class Px4FlightSpec extends MissionFlights {
         vehicle.commands.empty
     }
 
+    def "a vehicle that never shows its check of a new mission fails after 10 s with what MISSION_CURRENT and the vehicle said, unarmed"() {
+        given: 'the vehicle holds 0xA, NOT_STARTED; 0xB is named with no current item and that state from then on'
+        vehicle = px4()
+        vehicle.state = vehicle.state.withMissionCurrent(0, 3, MISSION_STATE.MISSION_STATE_NOT_STARTED, 0xA)
+        vehicle.missionId = 0xA
+        vehicle.uploadId = 0xB
+        launch(hop())
+        stepUntil(FlightState.ARM)
+        vehicle.text('Geofence violation for waypoint 3\t', MAV_SEVERITY.MAV_SEVERITY_CRITICAL)
+
+        when:
+        def waiting = runTo(9)
+        (1..3).each { vehicle.uncheckedCurrent() }
+        def outcome = runTo(12)
+
+        then:
+        waiting.type == CompletionState.Type.IN_PROGRESS
+        outcome.type == CompletionState.Type.ERROR
+        outcome.message.endsWith("vehicle 1 did not find the mission feasible within 10 s: MISSION_CURRENT still names no current item"
+                + " and says NOT_STARTED: the vehicle has not shown its check; the vehicle said 'Geofence violation for waypoint 3'")
+        vehicle.commands.empty
+    }
+
     def "cut short, a PX4 vehicle returns in AUTO.RTL"() {
         given:
         vehicle = px4()

@@ -162,6 +162,7 @@ class Px4RecordingSpec extends Specification {
         'px4-copter-fence-refused' || [[PENDING]]     // NO_MISSION since boot: two checked reports before the recording ends
         'px4-copter-fenced-hop'    || [[PENDING, FEASIBLE]]
         'px4-copter-same-mission'  || [[PENDING, FEASIBLE], [FEASIBLE], [PENDING, INFEASIBLE]]
+        'px4-copter-refused-after-flight' || [[PENDING, INFEASIBLE]]   // no current item ever; COMPLETE, then NO_MISSION held
     }
 
     def "the same mission again is not taken again: COMPLETE stays under its id, and MISSION_START flies it again; a new one is named at once with the earlier COMPLETE and no current item"() {
