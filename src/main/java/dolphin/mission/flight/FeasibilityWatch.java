@@ -143,7 +143,7 @@ final class FeasibilityWatch {
         return lastTotal;
     }
 
-    /** Whether the last MISSION_CURRENT named this mission with no current item: not checked yet. */
+    /** Whether the last MISSION_CURRENT, of a vehicle that names missions, named no current item: no check shown. */
     synchronized boolean unchecked() {
         return namesMissions() && !lastChecked;
     }
