@@ -30,6 +30,16 @@ class Px4FlightSpec extends MissionFlights {
         v
     }
 
+    /** A PX4 vehicle holding mission 0xA, valid and never flown (NOT_STARTED), the hop launched on it, its upload naming 0xB: at ARM. */
+    void armingNewMission() {
+        vehicle = px4()
+        vehicle.state = vehicle.state.withMissionCurrent(0, 3, MISSION_STATE.MISSION_STATE_NOT_STARTED, 0xA)
+        vehicle.missionId = 0xA
+        vehicle.uploadId = 0xB
+        launch(hop())
+        stepUntil(FlightState.ARM)
+    }
+
     def "a PX4 copter: armed in the mode it is in, then AUTO.MISSION asked as main mode 4, sub mode 4, and MISSION_START; no DO_SET_MISSION_CURRENT"() {
         given:
         vehicle = px4()
@@ -169,13 +179,8 @@ class Px4FlightSpec extends MissionFlights {
     }
 
     def "the first report of a new mission's check may carry the earlier mission's state: a refused mission is not armed on it"() {
-        given: 'the vehicle holds 0xA, valid and never flown; the upload gives 0xB'
-        vehicle = px4()
-        vehicle.state = vehicle.state.withMissionCurrent(0, 3, MISSION_STATE.MISSION_STATE_NOT_STARTED, 0xA)
-        vehicle.missionId = 0xA
-        vehicle.uploadId = 0xB
-        launch(hop())
-        stepUntil(FlightState.ARM)
+        given:
+        armingNewMission()
 
         when: 'the check gives the current item; PX4 has not worked the state out again yet: the earlier NOT_STARTED'
         vehicle.missionCurrent(1, MISSION_STATE.MISSION_STATE_NOT_STARTED)
@@ -198,12 +203,7 @@ class Px4FlightSpec extends MissionFlights {
 
     def "a new mission's state the same as the earlier mission's is its verdict from the third checked report, a second later"() {
         given:
-        vehicle = px4()
-        vehicle.state = vehicle.state.withMissionCurrent(0, 3, MISSION_STATE.MISSION_STATE_NOT_STARTED, 0xA)
-        vehicle.missionId = 0xA
-        vehicle.uploadId = 0xB
-        launch(hop())
-        stepUntil(FlightState.ARM)
+        armingNewMission()
 
         when: 'the report the check triggers, then PX4\'s reports at 1 Hz'
         vehicle.missionCurrent(1, MISSION_STATE.MISSION_STATE_NOT_STARTED)
@@ -285,13 +285,8 @@ class Px4FlightSpec extends MissionFlights {
     }
 
     def "a vehicle that never shows its check of a new mission fails after 10 s with what MISSION_CURRENT and the vehicle said, unarmed"() {
-        given: 'the vehicle holds 0xA, NOT_STARTED; 0xB is named with no current item and that state from then on'
-        vehicle = px4()
-        vehicle.state = vehicle.state.withMissionCurrent(0, 3, MISSION_STATE.MISSION_STATE_NOT_STARTED, 0xA)
-        vehicle.missionId = 0xA
-        vehicle.uploadId = 0xB
-        launch(hop())
-        stepUntil(FlightState.ARM)
+        given: '0xB is named with no current item and the earlier NOT_STARTED from then on'
+        armingNewMission()
         vehicle.text('Geofence violation for waypoint 3\t', MAV_SEVERITY.MAV_SEVERITY_CRITICAL)
 
         when:
