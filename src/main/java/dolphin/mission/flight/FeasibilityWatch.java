@@ -53,8 +53,7 @@ final class FeasibilityWatch {
     /** Of those reports, the last ones with the last state: all of them, and those in a row naming a current item. */
     private int steady;
     private int steadyChecked;
-    /** Of those reports, whether the last ones in a row name a current item, and one of them gave another state than the report before them. */
-    private boolean checkedRun;
+    /** Of the last of those reports in a row that name a current item: the state reported before them, and whether one gave another. */
     private int stateBeforeChecked;
     private boolean checkedChanged;
 
@@ -82,21 +81,18 @@ final class FeasibilityWatch {
         if (total != items || id == 0) {
             namedId = 0;
         } else {
-            if (id != namedId) {
+            boolean sameRun = id == namedId;
+            if (!sameRun) {
                 namedId = id;
                 stateBeforeNamed = lastState;
-                steady = 0;
-                steadyChecked = 0;
-                checkedRun = false;
             }
-            boolean same = steady > 0 && state == lastState;
+            boolean same = sameRun && state == lastState;
             steady = same ? steady + 1 : 1;
             steadyChecked = !checked ? 0 : same ? steadyChecked + 1 : 1;
-            if (checked && !checkedRun) {
+            if (checked && !(sameRun && lastChecked)) {
                 stateBeforeChecked = lastState;
                 checkedChanged = false;
             }
-            checkedRun = checked;
             checkedChanged |= checked && state != stateBeforeChecked;
         }
         lastChecked = checked;
@@ -134,7 +130,7 @@ final class FeasibilityWatch {
 
     /** Whether the last report's state is the check's on this mission (see the class). */
     private boolean settled() {
-        return namedId == idUploaded && (checkedRun && checkedChanged || steadyChecked >= SETTLED_REPORTS
+        return namedId == idUploaded && (lastChecked && checkedChanged || steadyChecked >= SETTLED_REPORTS
                 || steady >= SETTLED_REPORTS && lastState != stateBeforeNamed);
     }
 
